@@ -1,0 +1,251 @@
+#include "featloc/config/TrackedConfig.h"
+
+#include <mrpt/system/filesystem.h>
+#include <mrpt/system/string_utils.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "featloc/core/ConfigError.h"
+
+namespace featloc
+{
+namespace
+{
+std::string lower(const std::string& s)
+{
+	std::string r = s;
+	std::transform(r.begin(), r.end(), r.begin(), [](unsigned char c) {
+		return static_cast<char>(std::tolower(c));
+	});
+	return r;
+}
+
+size_t editDistance(const std::string& a, const std::string& b)
+{
+	std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
+	for (size_t j = 0; j <= b.size(); j++) prev[j] = j;
+	for (size_t i = 1; i <= a.size(); i++)
+	{
+		cur[0] = i;
+		for (size_t j = 1; j <= b.size(); j++)
+		{
+			const size_t subst = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+			cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, subst});
+		}
+		std::swap(prev, cur);
+	}
+	return prev[b.size()];
+}
+
+std::string closest(const std::string& word, const std::set<std::string>& pool)
+{
+	std::string best;
+	size_t bestDist = std::max<size_t>(2, word.size() / 3) + 1;
+	for (const auto& cand : pool)
+	{
+		const size_t d = editDistance(lower(word), lower(cand));
+		if (d < bestDist)
+		{
+			bestDist = d;
+			best = cand;
+		}
+	}
+	return best;
+}
+
+std::string joined(const std::set<std::string>& items)
+{
+	std::string out;
+	for (const auto& i : items) out += (out.empty() ? "" : ", ") + i;
+	return out;
+}
+}  // namespace
+
+TrackedConfig::Key TrackedConfig::makeKey(
+	const std::string& section, const std::string& key)
+{
+	return {lower(mrpt::system::trim(section)), lower(mrpt::system::trim(key))};
+}
+
+void TrackedConfig::loadFile(const std::string& path)
+{
+	if (!mrpt::system::fileExists(path))
+		throw ConfigError("config file '" + path + "' does not exist");
+	std::ifstream f(path);
+	if (!f) throw ConfigError("config file '" + path + "' cannot be read");
+	std::stringstream ss;
+	ss << f.rdbuf();
+	std::string dir = mrpt::system::extractFileDirectory(path);
+	if (dir.empty()) dir = ".";
+	loadText(ss.str(), path, dir);
+}
+
+void TrackedConfig::loadText(
+	const std::string& text, const std::string& originName,
+	const std::string& baseDir)
+{
+	m_values.setContent(text);
+	m_sourceName = originName;
+	m_origins.clear();
+
+	// Remember the line of every key, for error messages. This mirrors the
+	// MRPT ini syntax: "[section]", "key = value // comment", whole-line
+	// comments starting with '#' or ';' (a line starting with "//" and
+	// holding an '=' is a key to MRPT's parser).
+	std::istringstream in(text);
+	std::string line, section;
+	for (int lineNo = 1; std::getline(in, line); lineNo++)
+	{
+		const std::string t = mrpt::system::trim(line);
+		if (t.empty() || t[0] == '#' || t[0] == ';') continue;
+		if (t[0] == '[')
+		{
+			const auto close = t.find(']');
+			section = t.substr(1, close == std::string::npos ? std::string::npos
+															 : close - 1);
+			continue;
+		}
+		const auto eq = t.find('=');
+		if (eq == std::string::npos) continue;
+		m_origins[makeKey(section, t.substr(0, eq))] = {
+			originName + ":" + std::to_string(lineNo), baseDir};
+	}
+}
+
+void TrackedConfig::applyOverride(const std::string& spec)
+{
+	const auto colon = spec.find(':');
+	const auto eq = spec.find('=', colon == std::string::npos ? 0 : colon);
+	if (colon == std::string::npos || eq == std::string::npos || colon == 0 ||
+		eq == colon + 1)
+		throw ConfigError(
+			"--set '" + spec +
+			"': expected the form SECTION:KEY=VALUE, for example "
+			"--set ScanMatcher:class=featloc::IcpMatcher");
+	const std::string section = mrpt::system::trim(spec.substr(0, colon));
+	const std::string key =
+		mrpt::system::trim(spec.substr(colon + 1, eq - colon - 1));
+	const std::string value = mrpt::system::trim(spec.substr(eq + 1));
+	m_values.write(section, key, value);
+	m_origins[makeKey(section, key)] = {"--set " + spec, "."};
+}
+
+std::string TrackedConfig::origin(
+	const std::string& section, const std::string& key) const
+{
+	const auto it = m_origins.find(makeKey(section, key));
+	return it == m_origins.end() ? std::string() : it->second.description;
+}
+
+std::string TrackedConfig::resolvePath(
+	const std::string& section, const std::string& key,
+	const std::string& value) const
+{
+	if (value.empty() || value[0] == '/') return value;
+	const auto it = m_origins.find(makeKey(section, key));
+	const std::string base =
+		it == m_origins.end() ? std::string(".") : it->second.baseDir;
+	if (base == "." || base.empty()) return value;
+	return base + (base.back() == '/' ? "" : "/") + value;
+}
+
+std::vector<std::pair<std::string, std::string>> TrackedConfig::unreadKeys()
+	const
+{
+	std::vector<std::pair<std::string, std::string>> out;
+	std::vector<std::string> sections;
+	m_values.getAllSections(sections);
+	for (const auto& s : sections)
+	{
+		std::vector<std::string> keys;
+		m_values.getAllKeys(s, keys);
+		const auto q = m_queried.find(lower(s));
+		for (const auto& k : keys)
+			if (q == m_queried.end() || !q->second.keys.count(lower(k)))
+				out.emplace_back(s, k);
+	}
+	return out;
+}
+
+std::set<std::string> TrackedConfig::queriedKeys(
+	const std::string& section) const
+{
+	std::set<std::string> out;
+	const auto it = m_queried.find(lower(section));
+	if (it != m_queried.end())
+		for (const auto& [low, spelled] : it->second.keys) out.insert(spelled);
+	return out;
+}
+
+void TrackedConfig::requireAllKeysRead() const
+{
+	const auto unread = unreadKeys();
+	if (unread.empty()) return;
+
+	std::set<std::string> knownSections;
+	for (const auto& [low, q] : m_queried) knownSections.insert(q.name);
+
+	std::ostringstream msg;
+	msg << "configuration has " << unread.size()
+		<< " key(s) that no component reads:";
+	for (const auto& [section, key] : unread)
+	{
+		const std::string where = origin(section, key);
+		msg << "\n  " << (where.empty() ? m_sourceName : where) << ": ["
+			<< section << "] " << key;
+		const auto known = queriedKeys(section);
+		if (known.empty())
+		{
+			msg << ": unknown section [" << section << "]";
+			const std::string guess = closest(section, knownSections);
+			if (!guess.empty()) msg << " (did you mean [" << guess << "]?)";
+		}
+		else
+		{
+			msg << ": unknown key";
+			const std::string guess = closest(key, known);
+			if (!guess.empty()) msg << " (did you mean '" << guess << "'?)";
+			msg << "; keys of this section: " << joined(known);
+		}
+	}
+	throw ConfigError(msg.str());
+}
+
+void TrackedConfig::getAllSections(std::vector<std::string>& sections) const
+{
+	m_values.getAllSections(sections);
+}
+
+void TrackedConfig::getAllKeys(
+	const std::string& section, std::vector<std::string>& keys) const
+{
+	m_values.getAllKeys(section, keys);
+}
+
+void TrackedConfig::clear()
+{
+	m_values.clear();
+	m_origins.clear();
+	m_queried.clear();
+}
+
+void TrackedConfig::writeString(
+	const std::string& section, const std::string& name, const std::string& str)
+{
+	m_values.write(section, name, str);
+}
+
+std::string TrackedConfig::readString(
+	const std::string& section, const std::string& name,
+	const std::string& defaultStr, bool failIfNotFound) const
+{
+	const Key k = makeKey(section, name);
+	auto& q = m_queried[k.first];
+	if (q.name.empty()) q.name = mrpt::system::trim(section);
+	q.keys.emplace(k.second, mrpt::system::trim(name));
+	return m_values.read_string(section, name, defaultStr, failIfNotFound);
+}
+
+}  // namespace featloc
