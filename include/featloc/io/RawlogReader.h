@@ -1,0 +1,48 @@
+#pragma once
+#include <memory>
+#include <string>
+
+#include "featloc/io/RawlogEntry.h"
+
+namespace featloc
+{
+/** Streams the entries of an MRPT rawlog file (either format, gzip-compressed
+ * or plain) one at a time, without loading the file into memory.
+ *
+ * Unlike CRawlog::getActionObservationPairOrObservation(), which returns
+ * false both at the end and on a damaged file, next() tells them apart: the
+ * end of the file exactly between two entries is a clean end; running out of
+ * data inside an entry is a truncated file, and anything else that fails to
+ * deserialize is a corrupt file. Both throw InputError naming the file, the
+ * entry index and the byte offset (in the uncompressed stream). */
+class RawlogReader
+{
+   public:
+	/** Opens the file. Throws InputError if it does not exist, is a
+	 * directory, or cannot be opened. */
+	explicit RawlogReader(const std::string& path);
+	~RawlogReader();
+	RawlogReader(const RawlogReader&) = delete;
+	RawlogReader& operator=(const RawlogReader&) = delete;
+
+	/** Reads the next entry. Returns false at the clean end of the file.
+	 * Throws InputError on a truncated or corrupt file, or an object that is
+	 * not a rawlog entry (CSensoryFrame, CActionCollection, CObservation). */
+	bool next(RawlogEntry& entry);
+
+	/** Fraction of the (compressed) file read so far, in [0, 1]. */
+	double progress() const;
+
+	const std::string& path() const { return m_path; }
+
+	/** Number of entries returned so far. */
+	size_t entriesRead() const { return m_nextIndex; }
+
+   private:
+	struct Impl;
+	std::unique_ptr<Impl> m_impl;
+	std::string m_path;
+	size_t m_nextIndex = 0;
+};
+
+}  // namespace featloc

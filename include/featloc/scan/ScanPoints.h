@@ -1,0 +1,54 @@
+#pragma once
+#include <mrpt/obs/obs_frwds.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace mrpt::maps
+{
+class CPointsMap;
+}
+
+namespace featloc
+{
+/** One valid range reading, in the sensor frame. */
+struct ScanPoint
+{
+	double x = 0, y = 0;  //!< Cartesian coordinates [m]
+	double range = 0;  //!< distance to the sensor origin [m]
+	double bearing = 0;	 //!< angle from the sensor's X axis [rad], in (-pi, pi]
+	uint32_t beam = 0;	//!< index of the beam in the original scan
+};
+
+/** The valid points of a 2-D range scan, in the sensor frame, ordered by
+ * bearing (counter-clockwise), which every featloc matcher relies on:
+ * segmentation walks consecutive points, IDC's matching-range rule and
+ * correspondence search use the angular order.
+ *
+ * Invalid readings are not stored: a beam marked invalid, or with a range
+ * that is not finite, not positive, or at/above the sensor's maxRange (a
+ * "no return"), is skipped. */
+struct ScanPoints
+{
+	std::vector<ScanPoint> points;
+	/** Nominal angle between consecutive beams of the source scan [rad]; 0
+	 * when the points did not come from an evenly spaced scan. */
+	double angularStep = 0;
+	/** Maximum range of the sensor [m] (0 if unknown). */
+	double maxRange = 0;
+
+	size_t size() const { return points.size(); }
+	bool empty() const { return points.empty(); }
+	const ScanPoint& operator[](size_t i) const { return points[i]; }
+
+	/** Valid readings of a scan, in its sensor frame (sensorPose is NOT
+	 * applied). */
+	static ScanPoints fromScan(const mrpt::obs::CObservation2DRangeScan& scan);
+
+	/** Points of a map (its own frame), sorted by bearing around its origin.
+	 * Used by the MRPT alignment adapter. */
+	static ScanPoints fromPointsMap(const mrpt::maps::CPointsMap& map);
+};
+
+}  // namespace featloc

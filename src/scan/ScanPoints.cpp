@@ -1,0 +1,63 @@
+#include "featloc/scan/ScanPoints.h"
+
+#include <mrpt/maps/CPointsMap.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace featloc
+{
+ScanPoints ScanPoints::fromScan(const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	ScanPoints out;
+	const size_t n = scan.getScanSize();
+	out.maxRange = scan.maxRange;
+	out.angularStep = n > 1 ? scan.aperture / static_cast<double>(n - 1) : 0;
+	out.points.reserve(n);
+	for (size_t i = 0; i < n; i++)
+	{
+		if (!scan.getScanRangeValidity(i)) continue;
+		const double r = scan.getScanRange(i);
+		if (!std::isfinite(r) || r <= 0 || r >= scan.maxRange) continue;
+		ScanPoint p;
+		p.range = r;
+		p.bearing = scan.getScanAngle(i);
+		p.x = r * std::cos(p.bearing);
+		p.y = r * std::sin(p.bearing);
+		p.beam = static_cast<uint32_t>(i);
+		out.points.push_back(p);
+	}
+	// Scanners sweeping clockwise (rightToLeft = false) list beams by
+	// decreasing bearing: keep the counter-clockwise order everywhere.
+	if (!scan.rightToLeft) std::reverse(out.points.begin(), out.points.end());
+	return out;
+}
+
+ScanPoints ScanPoints::fromPointsMap(const mrpt::maps::CPointsMap& map)
+{
+	ScanPoints out;
+	const size_t n = map.size();
+	out.points.reserve(n);
+	for (size_t i = 0; i < n; i++)
+	{
+		float x = 0, y = 0;
+		map.getPoint(i, x, y);
+		ScanPoint p;
+		p.x = x;
+		p.y = y;
+		p.range = std::hypot(p.x, p.y);
+		if (!(p.range > 0) || !std::isfinite(p.range)) continue;
+		p.bearing = std::atan2(p.y, p.x);
+		p.beam = static_cast<uint32_t>(i);
+		out.points.push_back(p);
+	}
+	std::stable_sort(
+		out.points.begin(), out.points.end(),
+		[](const ScanPoint& a, const ScanPoint& b) {
+			return a.bearing < b.bearing;
+		});
+	return out;
+}
+
+}  // namespace featloc
