@@ -1,0 +1,30 @@
+#pragma once
+#include <mrpt/poses/CPosePDFGaussian.h>
+
+#include <cstddef>
+#include <string>
+
+namespace featloc
+{
+/** Outcome of one scan-to-scan match.
+ *
+ * `estimate` is the pose of the current scan's robot frame in the reference
+ * scan's robot frame (the motion from reference to current), with its 3x3
+ * covariance (x [m], y [m], yaw [rad]). When `success` is false the estimate
+ * is whatever the matcher ended with and must not be used; `failureReason`
+ * says why (too few points, no convergence, unconstrained direction...). */
+struct MatchResult
+{
+	bool success = false;
+	std::string failureReason;
+	mrpt::poses::CPosePDFGaussian estimate;
+	unsigned int iterations = 0;
+	double timeSeconds = 0;	 //!< wall time of the match, conversions included
+	/** Fraction of current-scan points paired with the reference at the end,
+	 * in [0, 1] (matcher-specific; 0 if not computed). */
+	double goodness = 0;
+	size_t referencePoints = 0;	 //!< valid points used from the reference
+	size_t currentPoints = 0;  //!< valid points used from the current scan
+};
+
+}  // namespace featloc

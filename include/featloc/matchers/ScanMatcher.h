@@ -1,0 +1,73 @@
+#pragma once
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/obs/obs_frwds.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+#include <mrpt/rtti/CObject.h>
+
+#include <string>
+
+#include "featloc/matchers/MatchResult.h"
+#include "featloc/scan/ScanPoints.h"
+
+namespace featloc
+{
+/** Base of every scan matcher: estimates the motion between two 2-D range
+ * scans from an initial guess with its uncertainty.
+ *
+ * Matchers are MRPT RTTI classes, created by name from the configuration
+ * (`[ScanMatcher] class = featloc::IcpMatcher`, see ScanMatcherFactory) and
+ * reading their parameters from their own section
+ * (`[ScanMatcher.IcpMatcher]`).
+ *
+ * Frames: match() takes and returns robot-frame motions. It converts the
+ * scans to their sensor frames (ScanPoints), converts the guess with the
+ * scans' sensorPose, calls matchPoints(), and converts the result (mean and
+ * covariance) back. Subclasses implement matchPoints() only, in the sensor
+ * frame, on bearing-ordered valid points. */
+class ScanMatcher : public mrpt::rtti::CObject
+{
+	DEFINE_VIRTUAL_MRPT_OBJECT(ScanMatcher)
+
+   public:
+	~ScanMatcher() override = default;
+
+	/** Reads this matcher's parameters from `section`; unspecified keys
+	 * keep their defaults. Throws ConfigError on a bad value. */
+	virtual void loadParams(
+		const mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) = 0;
+
+	/** Writes every parameter, with its unit and meaning as a comment. */
+	virtual void saveParams(
+		mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) const = 0;
+
+	/** Motion of the robot from the reference scan to the current scan.
+	 * \param initialGuess robot-frame motion guess (e.g. the odometry
+	 *        increment) with its covariance.
+	 * The result's timeSeconds covers the whole call. */
+	MatchResult match(
+		const mrpt::obs::CObservation2DRangeScan& reference,
+		const mrpt::obs::CObservation2DRangeScan& current,
+		const mrpt::poses::CPosePDFGaussian& initialGuess);
+
+	/** Same, on points already in a common frame (no sensor offsets). */
+	MatchResult match(
+		const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPosePDFGaussian& initialGuess);
+
+	/** The registered class name, e.g. "featloc::IcpMatcher". */
+	std::string className() const;
+
+   protected:
+	/** Implemented by each matcher. `initialGuess` and the result are the
+	 * pose of `current`'s frame in `reference`'s frame. Must fill estimate,
+	 * success (with failureReason), iterations, goodness. Must not throw on
+	 * degenerate input (empty scans, too few points): report failure. */
+	virtual void matchPoints(
+		const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPosePDFGaussian& initialGuess,
+		MatchResult& result) = 0;
+};
+
+}  // namespace featloc

@@ -1,0 +1,29 @@
+#include "featloc/registerClasses.h"
+
+#include <mrpt/maps/registerAllClasses.h>
+#include <mrpt/obs/registerAllClasses.h>
+#include <mrpt/opengl/registerAllClasses.h>
+#include <mrpt/poses/registerAllClasses.h>
+#include <mrpt/rtti/CObject.h>
+
+#include <mutex>
+
+#include "featloc/matchers/IcpMatcher.h"
+#include "featloc/matchers/ScanMatcher.h"
+
+namespace featloc
+{
+void registerClasses()
+{
+	static std::once_flag once;
+	std::call_once(once, [] {
+		mrpt::poses::registerAllClasses_mrpt_poses();
+		mrpt::obs::registerAllClasses_mrpt_obs();
+		mrpt::maps::registerAllClasses_mrpt_maps();
+		mrpt::opengl::registerAllClasses_mrpt_opengl();
+
+		mrpt::rtti::registerClass(CLASS_ID(ScanMatcher));
+		mrpt::rtti::registerClass(CLASS_ID(IcpMatcher));
+	});
+}
+}  // namespace featloc
