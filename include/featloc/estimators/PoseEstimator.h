@@ -1,0 +1,49 @@
+#pragma once
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+
+#include <memory>
+#include <string>
+
+#include "featloc/matchers/MatchResult.h"
+#include "featloc/pipeline/ScanStep.h"
+
+namespace featloc
+{
+/** Turns the per-scan inputs (odometry motion, scan-matcher result) into
+ * the robot's global pose with covariance. One instance per run; chosen by
+ * `[Pipeline] estimator` (see PoseEstimatorFactory). The pipeline feeds every
+ * step in order; for the first step it sets the initial pose instead. */
+class PoseEstimator
+{
+   public:
+	using Ptr = std::unique_ptr<PoseEstimator>;
+	virtual ~PoseEstimator() = default;
+
+	/** Name used in the configuration ("odometry", "matcher", ...). */
+	virtual std::string name() const = 0;
+
+	/** Whether the pipeline must run the scan matcher for this estimator. */
+	virtual bool usesScanMatcher() const = 0;
+
+	/** Reads the estimator's own section, if it has one. */
+	virtual void loadParams(const mrpt::config::CConfigFileBase&) {}
+
+	/** Pose at the first scan. */
+	virtual void initialize(const mrpt::poses::CPosePDFGaussian& initialPose) = 0;
+
+	/** Advances to the step's scan. `match` is the scan matcher's motion
+	 * from the current reference (keyframe) scan to this one, or nullptr
+	 * when no matcher ran. Returns true when the estimate used the match,
+	 * false when it fell back to odometry. */
+	virtual bool process(const ScanStep& step, const MatchResult* match) = 0;
+
+	/** The scan just processed becomes the reference of the next matches
+	 * (the pipeline calls it after initialize() and after every keyframe
+	 * step). */
+	virtual void markKeyframe() {}
+
+	/** Current global robot pose with covariance. */
+	virtual const mrpt::poses::CPosePDFGaussian& pose() const = 0;
+};
+}  // namespace featloc

@@ -1,0 +1,60 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "featloc/estimators/PoseEstimator.h"
+#include "featloc/io/InputOptions.h"
+#include "featloc/matchers/ScanMatcher.h"
+#include "featloc/odometry/OdometryOptions.h"
+#include "featloc/output/RunOutput.h"
+#include "featloc/pipeline/PipelineOptions.h"
+#include "featloc/pipeline/ProgressBar.h"
+#include "featloc/pipeline/RunStats.h"
+
+namespace featloc
+{
+/** The offline run: rawlog entries -> ScanStepAssembler (scans in time
+ * order with their odometry motion) -> scan matcher (reference scan, this
+ * scan, odometry as the initial guess) -> estimator -> outputs.
+ *
+ * The reference scan is the previous scan, or with [Pipeline]
+ * keyframe_distance / keyframe_angle the last keyframe. The matcher's guess
+ * is the estimated pose of the previous scan composed with the odometry
+ * increment, seen from the keyframe, with the covariance of the odometry
+ * accumulated since the keyframe.
+ *
+ * The same loop will serve live runs: only the source of entries differs. */
+class Pipeline
+{
+   public:
+	/** `matcher` may be null when the estimator does not use one. */
+	Pipeline(
+		InputOptions input, OdometryOptions odometry, PipelineOptions options,
+		PoseEstimator::Ptr estimator, ScanMatcher::Ptr matcher);
+
+	/** Processes the whole rawlog. Every output receives every entry and
+	 * step and then finish(), once, also when the run fails; the error is
+	 * then rethrown. Throws InputError when the log yields no scan. */
+	RunStats run(
+		const std::string& rawlogPath, const std::vector<RunOutput*>& outputs,
+		ProgressBar* progress = nullptr);
+
+   private:
+	void processStep(
+		const ScanStep& step, const std::vector<RunOutput*>& outputs,
+		RunStats& stats);
+
+	InputOptions m_input;
+	OdometryOptions m_odometry;
+	PipelineOptions m_options;
+	PoseEstimator::Ptr m_estimator;
+	ScanMatcher::Ptr m_matcher;
+	bool isNewKeyframe(const MatchResult* match) const;
+
+	// The reference (keyframe) scan of the next match, the estimated pose
+	// there, and the odometry since then (its covariance is the guess's).
+	mrpt::obs::CObservation2DRangeScan::Ptr m_keyframeScan;
+	mrpt::poses::CPose2D m_keyframePose;
+	mrpt::poses::CPosePDFGaussian m_odometrySinceKeyframe;
+};
+}  // namespace featloc

@@ -1,0 +1,35 @@
+#pragma once
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <string>
+#include <vector>
+
+namespace featloc
+{
+/** `[Pipeline]`: which estimator turns odometry and matches into poses. */
+struct PipelineOptions : public mrpt::config::CLoadableOptions
+{
+	static constexpr const char* kSection = "Pipeline";
+
+	/** "odometry" (dead reckoning) or "matcher" (chained scan matches with
+	 * odometry as prior and fallback). */
+	std::string estimator = "matcher";
+	/** Robot pose at the first scan: x [m], y [m], yaw [rad] in memory
+	 * (degrees in the file). */
+	std::vector<double> initial_pose = {0, 0, 0};
+	/** The scan matcher matches each scan against a reference (keyframe)
+	 * scan, replaced when the estimated motion since it reaches
+	 * keyframe_distance [m] or keyframe_angle [rad], or when a match fails.
+	 * Both 0: every scan is the next one's reference (scan-to-previous-scan).
+	 * Larger values stop small per-scan errors from accumulating on
+	 * high-rate, noisy logs (as icp-slam's localizationLinDistance). */
+	double keyframe_distance = 0;
+	double keyframe_angle = 0;
+
+	void loadFromConfigFile(
+		const mrpt::config::CConfigFileBase& c,
+		const std::string& s) override;
+	void saveToConfigFile(
+		mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+}  // namespace featloc

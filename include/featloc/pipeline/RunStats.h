@@ -1,0 +1,38 @@
+#pragma once
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace featloc
+{
+/** Counts and timings of one run, for the console and summary.json. */
+struct RunStats
+{
+	std::string rawlog;
+	std::string estimator;
+	std::string matcherClass;  //!< empty when no matcher ran
+	std::string laserLabel;
+
+	size_t entries = 0;	 //!< rawlog entries read
+	size_t scans = 0;  //!< scans processed (= trajectory rows)
+	std::map<std::string, size_t> scansPerLabel;  //!< every 2-D scan seen
+	size_t odometryReadings = 0;  //!< CObservationOdometry (format #2)
+	size_t odometryActions = 0;	 //!< CActionRobotMovement2D (format #1)
+	size_t stepsWithoutOdometry = 0;
+	size_t invalidatedBeams = 0;
+
+	size_t keyframes = 0;  //!< reference scans used by the matcher
+	size_t matchesAttempted = 0;
+	size_t matchFailures = 0;  //!< matcher reported failure
+	size_t fallbacks = 0;  //!< steps where the estimator used odometry
+	/** A few failure examples: "scan 123: reason". */
+	std::vector<std::string> failureExamples;
+	std::vector<double> matchTimes;	 //!< [s] per match
+	std::vector<unsigned int> matchIterations;
+
+	double wallTime = 0;  //!< [s] whole run, reading and writing included
+	bool ok = true;
+	std::string error;	//!< when !ok
+};
+}  // namespace featloc

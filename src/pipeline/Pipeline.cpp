@@ -1,0 +1,192 @@
+#include "featloc/pipeline/Pipeline.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "featloc/core/InputError.h"
+#include "featloc/io/RawlogReader.h"
+#include "featloc/pipeline/ScanStepAssembler.h"
+
+namespace featloc
+{
+namespace
+{
+constexpr size_t kMaxFailureExamples = 10;
+
+void copyAssemblerStats(const ScanStepAssembler& a, RunStats& s)
+{
+	s.laserLabel = a.selector().label();
+	s.scansPerLabel = a.selector().scansPerLabel();
+	s.invalidatedBeams = a.selector().invalidatedBeams();
+	s.odometryReadings = a.odometryReadings();
+	s.odometryActions = a.odometryActions();
+	s.stepsWithoutOdometry = a.stepsWithoutOdometry();
+}
+}  // namespace
+
+Pipeline::Pipeline(
+	InputOptions input, OdometryOptions odometry, PipelineOptions options,
+	PoseEstimator::Ptr estimator, ScanMatcher::Ptr matcher)
+	: m_input(std::move(input)),
+	  m_odometry(std::move(odometry)),
+	  m_options(std::move(options)),
+	  m_estimator(std::move(estimator)),
+	  m_matcher(std::move(matcher))
+{
+	if (!m_estimator) throw std::invalid_argument("Pipeline: no estimator");
+	if (m_estimator->usesScanMatcher() && !m_matcher)
+		throw std::invalid_argument(
+			"Pipeline: estimator '" + m_estimator->name() +
+			"' needs a scan matcher");
+}
+
+RunStats Pipeline::run(
+	const std::string& rawlogPath, const std::vector<RunOutput*>& outputs,
+	ProgressBar* progress)
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	RunStats stats;
+	stats.rawlog = rawlogPath;
+	stats.estimator = m_estimator->name();
+	if (m_estimator->usesScanMatcher()) stats.matcherClass = m_matcher->className();
+	m_keyframeScan.reset();
+
+	std::unique_ptr<ScanStepAssembler> assembler;
+	auto elapsed = [&] {
+		return std::chrono::duration<double>(
+				   std::chrono::steady_clock::now() - t0)
+			.count();
+	};
+	try
+	{
+		RawlogReader reader(rawlogPath);
+		assembler = std::make_unique<ScanStepAssembler>(
+			m_input, m_odometry, rawlogPath);
+		RawlogEntry entry;
+		std::vector<ScanStepAssembler::SelectedScan> selected;
+		std::vector<ScanStep> ready;
+		while (!assembler->full() && reader.next(entry))
+		{
+			stats.entries++;
+			selected.clear();
+			ready.clear();
+			assembler->push(entry, selected, ready);
+			for (auto* o : outputs) o->onEntry(entry, selected);
+			for (const auto& step : ready) processStep(step, outputs, stats);
+			if (progress) progress->update(reader.progress(), stats.scans);
+		}
+		ready.clear();
+		assembler->finish(ready);
+		for (const auto& step : ready) processStep(step, outputs, stats);
+		if (progress) progress->done(stats.scans);
+		copyAssemblerStats(*assembler, stats);
+
+		if (stats.scans == 0)
+		{
+			std::ostringstream msg;
+			msg << "rawlog '" << rawlogPath << "' (" << stats.entries
+				<< " entries) has no 2-D laser scan";
+			if (!m_input.laser_label.empty())
+				msg << " with sensor label '" << m_input.laser_label << "'";
+			if (!stats.scansPerLabel.empty())
+			{
+				msg << " (2-D scans seen per label:";
+				for (const auto& [label, n] : stats.scansPerLabel)
+					msg << " '" << label << "': " << n;
+				msg << ")";
+			}
+			throw InputError(msg.str());
+		}
+		stats.wallTime = elapsed();
+		for (auto* o : outputs) o->finish(stats);
+	}
+	catch (const std::exception& e)
+	{
+		if (progress) progress->done(stats.scans);
+		if (assembler) copyAssemblerStats(*assembler, stats);
+		stats.ok = false;
+		stats.error = e.what();
+		stats.wallTime = elapsed();
+		// Keep what was produced: every output completes its file.
+		for (auto* o : outputs)
+		{
+			try
+			{
+				o->finish(stats);
+			}
+			catch (...)
+			{
+			}
+		}
+		throw;
+	}
+	return stats;
+}
+
+bool Pipeline::isNewKeyframe(const MatchResult* match) const
+{
+	if (m_options.keyframe_distance <= 0 && m_options.keyframe_angle <= 0)
+		return true;
+	if (!match || !match->success) return true;
+	const auto& m = match->estimate.mean;
+	return (m_options.keyframe_distance > 0 &&
+			m.norm() >= m_options.keyframe_distance) ||
+		(m_options.keyframe_angle > 0 &&
+		 std::abs(m.phi()) >= m_options.keyframe_angle);
+}
+
+void Pipeline::processStep(
+	const ScanStep& step, const std::vector<RunOutput*>& outputs,
+	RunStats& stats)
+{
+	MatchResult match;
+	const MatchResult* matchPtr = nullptr;
+	bool usedMatch = false;
+	if (step.scanIndex == 0 || !m_keyframeScan)
+	{
+		const auto& p = m_options.initial_pose;
+		m_estimator->initialize(mrpt::poses::CPosePDFGaussian(
+			mrpt::poses::CPose2D(p[0], p[1], p[2])));
+	}
+	else
+	{
+		m_odometrySinceKeyframe += step.odometry;
+		if (m_estimator->usesScanMatcher())
+		{
+			// Guess: previous estimate (+) odometry, relative to the keyframe.
+			mrpt::poses::CPosePDFGaussian guess = m_odometrySinceKeyframe;
+			guess.mean = (m_estimator->pose().mean + step.odometry.mean) -
+				m_keyframePose;
+			match = m_matcher->match(*m_keyframeScan, *step.scan, guess);
+			matchPtr = &match;
+			stats.matchesAttempted++;
+			stats.matchTimes.push_back(match.timeSeconds);
+			stats.matchIterations.push_back(match.iterations);
+			if (!match.success)
+			{
+				stats.matchFailures++;
+				if (stats.failureExamples.size() < kMaxFailureExamples)
+					stats.failureExamples.push_back(
+						"scan " + std::to_string(step.scanIndex) + " (entry #" +
+						std::to_string(step.entryIndex) +
+						"): " + match.failureReason);
+			}
+		}
+		usedMatch = m_estimator->process(step, matchPtr);
+		if (matchPtr && !usedMatch) stats.fallbacks++;
+	}
+	if (!m_keyframeScan || isNewKeyframe(matchPtr))
+	{
+		m_keyframeScan = step.scan;
+		m_keyframePose = m_estimator->pose().mean;
+		m_odometrySinceKeyframe = mrpt::poses::CPosePDFGaussian();
+		m_estimator->markKeyframe();
+		stats.keyframes++;
+	}
+	stats.scans++;
+	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch};
+	for (auto* o : outputs) o->onStep(record);
+}
+}  // namespace featloc
