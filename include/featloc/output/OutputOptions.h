@@ -1,0 +1,30 @@
+#pragma once
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <string>
+
+namespace featloc
+{
+/** `[Output]`: where results go and which optional files are written.
+ * trajectory.tum, poses_cov.txt and summary.json are always written. */
+struct OutputOptions : public mrpt::config::CLoadableOptions
+{
+	static constexpr const char* kSection = "Output";
+
+	/** Results folder (created if missing). Relative: to the ini's folder.
+	 * --out overrides it. */
+	std::string dir = "results";
+	bool write_rawlog = true;  //!< estimated.rawlog
+	bool write_scene = true;  //!< map.3Dscene
+	/** Sensor label of the CObservationRobotPose added to the rawlog. */
+	std::string pose_label = "featloc_estimate";
+	/** map.3Dscene holds the points of every N-th scan. */
+	unsigned int scene_scan_decimation = 1;
+
+	void loadFromConfigFile(
+		const mrpt::config::CConfigFileBase& c,
+		const std::string& s) override;
+	void saveToConfigFile(
+		mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+}  // namespace featloc

@@ -1,0 +1,35 @@
+#include "featloc/output/OutputOptions.h"
+
+#include "featloc/config/ConfigValues.h"
+
+namespace featloc
+{
+void OutputOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace featloc::config;
+	read(c, s, "dir", dir);
+	read(c, s, "write_rawlog", write_rawlog);
+	read(c, s, "write_scene", write_scene);
+	read(c, s, "pose_label", pose_label);
+	read(c, s, "scene_scan_decimation", scene_scan_decimation);
+	require(!dir.empty(), c, s, "dir", "a folder name");
+	require(!pose_label.empty(), c, s, "pose_label", "a non-empty label");
+	require(scene_scan_decimation >= 1, c, s, "scene_scan_decimation", ">= 1");
+}
+
+void OutputOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	using namespace featloc::config;
+	write(c, s, "dir", dir, "results folder; relative to this ini's folder");
+	write(c, s, "write_rawlog", write_rawlog,
+		"write estimated.rawlog (input + estimated poses)");
+	write(c, s, "write_scene", write_scene,
+		"write map.3Dscene (scans at estimated poses)");
+	write(c, s, "pose_label", pose_label,
+		"sensor label of the pose observations in estimated.rawlog");
+	write(c, s, "scene_scan_decimation", scene_scan_decimation,
+		"map.3Dscene shows every N-th scan");
+}
+}  // namespace featloc

@@ -1,0 +1,86 @@
+#include "featloc/output/ScanMapSceneWriter.h"
+
+#include <mrpt/opengl/CGridPlaneXY.h>
+#include <mrpt/opengl/COpenGLScene.h>
+#include <mrpt/opengl/CPointCloud.h>
+#include <mrpt/opengl/CSetOfLines.h>
+#include <mrpt/opengl/stock_objects.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "featloc/scan/ScanPoints.h"
+
+namespace featloc
+{
+ScanMapSceneWriter::ScanMapSceneWriter(
+	std::string path, unsigned int scanDecimation)
+	: m_path(std::move(path)), m_decimation(std::max(1u, scanDecimation))
+{
+}
+
+void ScanMapSceneWriter::onStep(const StepRecord& r)
+{
+	const mrpt::poses::CPose2D robot = r.pose.mean;
+	m_path3d.push_back(mrpt::poses::CPose3D(robot).asTPose());
+	if (r.step.scanIndex % m_decimation != 0) return;
+	// Points in the sensor frame -> robot frame (sensorPose) -> world.
+	const mrpt::poses::CPose2D sensor =
+		robot + mrpt::poses::CPose2D(r.step.scan->sensorPose);
+	const double c = std::cos(sensor.phi()), s = std::sin(sensor.phi());
+	for (const auto& p : ScanPoints::fromScan(*r.step.scan).points)
+	{
+		m_x.push_back(static_cast<float>(sensor.x() + c * p.x - s * p.y));
+		m_y.push_back(static_cast<float>(sensor.y() + s * p.x + c * p.y));
+		m_z.push_back(0.0f);
+	}
+}
+
+void ScanMapSceneWriter::finish(const RunStats&)
+{
+	mrpt::opengl::COpenGLScene scene;
+
+	float minX = -5, maxX = 5, minY = -5, maxY = 5;
+	for (size_t i = 0; i < m_x.size(); i++)
+	{
+		minX = std::min(minX, m_x[i]);
+		maxX = std::max(maxX, m_x[i]);
+		minY = std::min(minY, m_y[i]);
+		maxY = std::max(maxY, m_y[i]);
+	}
+	auto grid = mrpt::opengl::CGridPlaneXY::Create(
+		std::floor(minX), std::ceil(maxX), std::floor(minY), std::ceil(maxY),
+		-0.01, 1.0);
+	grid->setColor(0.7f, 0.7f, 0.7f, 0.5f);
+	scene.insert(grid);
+
+	auto cloud = mrpt::opengl::CPointCloud::Create();
+	// Not setAllPointsFast(): in MRPT 2.5.8 it takes the points mutex and
+	// then calls clear(), which takes it again (std::system_error EDEADLK).
+	cloud->setAllPoints(m_x, m_y, m_z);
+	cloud->setColor(0.1f, 0.1f, 0.1f);
+	cloud->setPointSize(2.0f);
+	scene.insert(cloud);
+
+	auto path = mrpt::opengl::CSetOfLines::Create();
+	path->setColor(0.0f, 0.3f, 1.0f);
+	path->setLineWidth(2.0f);
+	for (size_t i = 1; i < m_path3d.size(); i++)
+		path->appendLine(
+			m_path3d[i - 1].x, m_path3d[i - 1].y, 0.02, m_path3d[i].x,
+			m_path3d[i].y, 0.02);
+	scene.insert(path);
+
+	if (!m_path3d.empty())
+	{
+		auto robot = mrpt::opengl::stock_objects::CornerXYZSimple(0.5f, 2.0f);
+		robot->setPose(mrpt::poses::CPose3D(m_path3d.back()));
+		scene.insert(robot);
+	}
+	if (!scene.saveToFile(m_path))
+		throw std::runtime_error("cannot write '" + m_path + "'");
+}
+}  // namespace featloc

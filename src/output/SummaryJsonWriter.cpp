@@ -1,0 +1,74 @@
+#include "featloc/output/SummaryJsonWriter.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "featloc/eval/ErrorStats.h"
+
+namespace featloc
+{
+namespace
+{
+nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs)
+{
+	nlohmann::json j;
+	j["status"] = s.ok ? "ok" : "error";
+	if (!s.ok) j["error"] = s.error;
+	j["rawlog"] = s.rawlog;
+	j["estimator"] = s.estimator;
+	j["matcher"] = s.matcherClass.empty() ? nlohmann::json() : nlohmann::json(s.matcherClass);
+	j["laser_label"] = s.laserLabel;
+	j["counts"] = {
+		{"entries", s.entries},
+		{"scans", s.scans},
+		{"scans_per_label", s.scansPerLabel},
+		{"odometry_readings", s.odometryReadings},
+		{"odometry_actions", s.odometryActions},
+		{"steps_without_odometry", s.stepsWithoutOdometry},
+		{"invalidated_beams", s.invalidatedBeams},
+		{"keyframes", s.keyframes},
+		{"matches", s.matchesAttempted},
+		{"match_failures", s.matchFailures},
+		{"fallbacks_to_odometry", s.fallbacks}};
+	j["failure_examples"] = s.failureExamples;
+	const ErrorStats t = ErrorStats::of(s.matchTimes);
+	j["match_time_s"] = {
+		{"count", t.count}, {"mean", t.mean}, {"median", t.median},
+		{"p95", t.p95},		{"max", t.max}};
+	std::vector<double> its(s.matchIterations.begin(), s.matchIterations.end());
+	const ErrorStats it = ErrorStats::of(its);
+	j["match_iterations"] = {
+		{"mean", it.mean}, {"median", it.median}, {"max", it.max}};
+	j["wall_time_s"] = s.wallTime;
+	j["outputs"] = outputs;
+	return j;
+}
+
+void writeJson(const std::string& path, const nlohmann::json& j)
+{
+	std::ofstream out(path);
+	if (!out) throw std::runtime_error("cannot write '" + path + "'");
+	out << j.dump(2) << "\n";
+}
+}  // namespace
+
+SummaryJsonWriter::SummaryJsonWriter(
+	std::string path, std::vector<std::string> outputs)
+	: m_path(std::move(path)), m_outputs(std::move(outputs))
+{
+}
+
+void SummaryJsonWriter::finish(const RunStats& stats)
+{
+	writeJson(m_path, toJson(stats, m_outputs));
+}
+
+void SummaryJsonWriter::writeWithEvaluation(
+	const RunStats& stats, const std::string& evaluationJson)
+{
+	auto j = toJson(stats, m_outputs);
+	j["evaluation"] = nlohmann::json::parse(evaluationJson);
+	writeJson(m_path, j);
+}
+}  // namespace featloc
