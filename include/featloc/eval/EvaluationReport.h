@@ -1,0 +1,40 @@
+#pragma once
+#include <mrpt/math/TPose2D.h>
+
+#include <cstddef>
+#include <string>
+
+#include "featloc/eval/ErrorStats.h"
+
+namespace featloc
+{
+/** Errors of an estimated trajectory against a reference. Translations in
+ * metres, rotations in radians (printed in degrees). */
+struct EvaluationReport
+{
+	std::string reference, estimate;  //!< file names
+	double maxTimeDifference = 0;  //!< [s] used for association
+
+	// Trajectory against trajectory.
+	bool hasTrajectoryMetrics = false;
+	size_t referencePoses = 0, estimatePoses = 0, associated = 0;
+	/** Rigid SE(2) transform applied to the estimate (least squares on the
+	 * associated positions, Horn's method via mrpt::tfest::se2_l2). */
+	mrpt::math::TPose2D alignment;
+	ErrorStats ate;	 //!< absolute position error after alignment [m]
+	ErrorStats ateRotation;	 //!< absolute yaw error after alignment [rad]
+	ErrorStats rpeTranslation;	//!< consecutive associated poses [m]
+	ErrorStats rpeRotation;	 //!< [rad]
+
+	// Relations (Kummerle et al. 2009).
+	bool hasRelations = false;
+	size_t relations = 0, relationsMatched = 0;
+	ErrorStats relationTranslation;	 //!< |translation error| [m]
+	ErrorStats relationRotation;  //!< |rotation error| [rad]
+
+	/** Human-readable table. */
+	std::string toText() const;
+	/** JSON object. */
+	std::string toJson() const;
+};
+}  // namespace featloc

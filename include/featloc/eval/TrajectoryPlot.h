@@ -1,0 +1,21 @@
+#pragma once
+#include <mrpt/math/TPose2D.h>
+
+#include <string>
+
+#include "featloc/eval/Trajectory.h"
+
+namespace featloc
+{
+/** A PNG picture of a reference trajectory and an estimate (after the
+ * evaluation's alignment) on a metric grid, with a legend and a title. */
+class TrajectoryPlot
+{
+   public:
+	/** Throws std::runtime_error if the file cannot be written. */
+	static void write(
+		const std::string& pngPath, const Trajectory& reference,
+		const Trajectory& estimate, const mrpt::math::TPose2D& alignment,
+		const std::string& title);
+};
+}  // namespace featloc

@@ -1,0 +1,117 @@
+#include "featloc/eval/EvaluationReport.h"
+
+#include <mrpt/core/bits_math.h>
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace featloc
+{
+namespace
+{
+std::string row(const char* name, const ErrorStats& s, double scale, const char* unit)
+{
+	char buf[256];
+	std::snprintf(
+		buf, sizeof(buf),
+		"  %-26s %10.4f %10.4f %10.4f %10.4f %10.4f  %s\n", name,
+		s.rmse * scale, s.mean * scale, s.median * scale, s.p95 * scale,
+		s.max * scale, unit);
+	return buf;
+}
+
+nlohmann::json statsJson(const ErrorStats& s)
+{
+	return {{"count", s.count},	 {"rmse", s.rmse}, {"mean", s.mean},
+			{"median", s.median}, {"p95", s.p95},	 {"std", s.stddev},
+			{"max", s.max}};
+}
+
+nlohmann::json rotationJson(const ErrorStats& s)
+{
+	auto j = statsJson(s);
+	j["unit"] = "deg";
+	for (const char* k : {"rmse", "mean", "median", "p95", "std", "max"})
+		j[k] = mrpt::RAD2DEG(j[k].get<double>());
+	return j;
+}
+}  // namespace
+
+std::string EvaluationReport::toText() const
+{
+	std::ostringstream out;
+	const std::string header =
+		"  metric                           rmse       mean     median        "
+		"p95        max\n";
+	if (hasTrajectoryMetrics)
+	{
+		char buf[512];
+		std::snprintf(
+			buf, sizeof(buf),
+			"reference %s (%zu poses), estimate %s (%zu poses): %zu "
+			"associated within %.3f s\n"
+			"alignment applied to the estimate: x %.4f m, y %.4f m, yaw %.3f "
+			"deg\n",
+			reference.c_str(), referencePoses, estimate.c_str(), estimatePoses,
+			associated, maxTimeDifference, alignment.x, alignment.y,
+			mrpt::RAD2DEG(alignment.phi));
+		out << buf << header;
+		out << row("ATE translation", ate, 1, "m");
+		out << row("ATE rotation", ateRotation, mrpt::RAD2DEG(1.0), "deg");
+		out << row("RPE translation (consec.)", rpeTranslation, 1, "m");
+		out << row("RPE rotation (consec.)", rpeRotation, mrpt::RAD2DEG(1.0), "deg");
+	}
+	if (hasRelations)
+	{
+		char buf[256];
+		std::snprintf(
+			buf, sizeof(buf),
+			"relations (Kummerle et al. 2009): %zu of %zu matched within "
+			"%.3f s\n",
+			relationsMatched, relations, maxTimeDifference);
+		out << buf << header;
+		out << row("relation translation", relationTranslation, 1, "m");
+		out << row("relation rotation", relationRotation, mrpt::RAD2DEG(1.0), "deg");
+		std::snprintf(
+			buf, sizeof(buf),
+			"  Kummerle squared errors: translation %.6f m^2 (std %.6f), "
+			"rotation %.6f deg^2\n",
+			relationTranslation.rmse * relationTranslation.rmse,
+			relationTranslation.stddev,
+			mrpt::square(mrpt::RAD2DEG(relationRotation.rmse)));
+		out << buf;
+	}
+	return out.str();
+}
+
+std::string EvaluationReport::toJson() const
+{
+	nlohmann::json j;
+	j["max_time_difference_s"] = maxTimeDifference;
+	j["estimate"] = estimate;
+	if (hasTrajectoryMetrics)
+	{
+		j["reference"] = reference;
+		j["reference_poses"] = referencePoses;
+		j["estimate_poses"] = estimatePoses;
+		j["associated"] = associated;
+		j["alignment"] = {
+			{"x", alignment.x},
+			{"y", alignment.y},
+			{"yaw_deg", mrpt::RAD2DEG(alignment.phi)}};
+		j["ate_m"] = statsJson(ate);
+		j["ate_rotation"] = rotationJson(ateRotation);
+		j["rpe_translation_m"] = statsJson(rpeTranslation);
+		j["rpe_rotation"] = rotationJson(rpeRotation);
+	}
+	if (hasRelations)
+	{
+		j["relations"] = relations;
+		j["relations_matched"] = relationsMatched;
+		j["relation_translation_m"] = statsJson(relationTranslation);
+		j["relation_rotation"] = rotationJson(relationRotation);
+	}
+	return j.dump(2);
+}
+}  // namespace featloc

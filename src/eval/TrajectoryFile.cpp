@@ -1,0 +1,202 @@
+#include "featloc/eval/TrajectoryFile.h"
+
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/system/filesystem.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include "featloc/core/InputError.h"
+
+namespace featloc
+{
+namespace
+{
+using Row = std::vector<double>;
+
+/** Calls `onRow(lineNo, values)` for every data line; throws InputError on a
+ * field that is not a finite number. */
+void forEachRow(
+	const std::string& path, const std::function<void(int, const Row&)>& onRow)
+{
+	if (!mrpt::system::fileExists(path))
+		throw InputError("file '" + path + "' does not exist");
+	std::ifstream in(path);
+	if (!in) throw InputError("file '" + path + "' cannot be read");
+	std::string line;
+	for (int lineNo = 1; std::getline(in, line); lineNo++)
+	{
+		for (auto& ch : line)
+			if (ch == ',' || ch == '\t' || ch == '\r') ch = ' ';
+		const auto first = line.find_first_not_of(' ');
+		if (first == std::string::npos || line[first] == '#') continue;
+		std::istringstream fields(line);
+		Row row;
+		std::string tok;
+		while (fields >> tok)
+		{
+			errno = 0;
+			char* end = nullptr;
+			const double v = std::strtod(tok.c_str(), &end);
+			if (errno != 0 || end != tok.c_str() + tok.size() || !std::isfinite(v))
+				throw InputError(
+					path + ":" + std::to_string(lineNo) + ": '" + tok +
+					"' is not a finite number");
+			row.push_back(v);
+		}
+		onRow(lineNo, row);
+	}
+}
+
+std::string at(const std::string& path, int lineNo)
+{
+	return path + ":" + std::to_string(lineNo);
+}
+
+void requireColumns(
+	const std::string& path, int lineNo, const Row& row, size_t n,
+	const char* what)
+{
+	if (row.size() != n)
+		throw InputError(
+			at(path, lineNo) + ": expected " + std::to_string(n) +
+			" columns (" + what + "), found " + std::to_string(row.size()));
+}
+
+bool isUnitQuaternion(const Row& r)
+{
+	const double n2 = r[4] * r[4] + r[5] * r[5] + r[6] * r[6] + r[7] * r[7];
+	return std::abs(n2 - 1.0) < 1e-3;
+}
+}  // namespace
+
+TrajectoryFile::Format TrajectoryFile::detect(const std::string& path)
+{
+	size_t columns = 0;
+	bool allUnitQuaternions = true;
+	forEachRow(path, [&](int, const Row& row) {
+		if (columns == 0) columns = row.size();
+		if (row.size() == 8 && !isUnitQuaternion(row)) allUnitQuaternions = false;
+	});
+	switch (columns)
+	{
+		case 4:
+			return Format::TimeXYYaw;
+		case 10:
+			return Format::PosesCov;
+		case 8:
+			return allUnitQuaternions ? Format::Tum : Format::Relations;
+		case 0:
+			throw InputError("file '" + path + "' has no data rows");
+		default:
+			throw InputError(
+				"file '" + path + "': rows have " + std::to_string(columns) +
+				" columns; expected 8 (TUM 't x y z qx qy qz qw' or relations "
+				"'t1 t2 x y z roll pitch yaw'), 4 ('t x y yaw') or 10 "
+				"(featloc poses_cov.txt)");
+	}
+}
+
+Trajectory TrajectoryFile::read(const std::string& path, Format format)
+{
+	if (format == Format::Auto) format = detect(path);
+	if (format == Format::Relations)
+		throw InputError(
+			"file '" + path +
+			"' holds relations (t1 t2 x y z roll pitch yaw), not a trajectory");
+	Trajectory traj;
+	traj.source = path;
+	forEachRow(path, [&](int lineNo, const Row& r) {
+		TimedPose p;
+		switch (format)
+		{
+			case Format::Tum:
+				requireColumns(path, lineNo, r, 8, "t x y z qx qy qz qw");
+				if (!isUnitQuaternion(r))
+					throw InputError(
+						at(path, lineNo) + ": quaternion is not unit length");
+				p.t = r[0];
+				// Yaw of the rotation: atan2(2(qw qz + qx qy), 1 - 2(qy^2 + qz^2)).
+				p.pose = {r[1], r[2],
+					std::atan2(
+						2 * (r[7] * r[6] + r[4] * r[5]),
+						1 - 2 * (r[5] * r[5] + r[6] * r[6]))};
+				break;
+			case Format::TimeXYYaw:
+				requireColumns(path, lineNo, r, 4, "t x y yaw");
+				p.t = r[0];
+				p.pose = {r[1], r[2], mrpt::math::wrapToPi(r[3])};
+				break;
+			default:  // PosesCov
+				requireColumns(path, lineNo, r, 10, "t x y yaw + 6 covariance terms");
+				p.t = r[0];
+				p.pose = {r[1], r[2], mrpt::math::wrapToPi(r[3])};
+				p.hasCovariance = true;
+				p.cov(0, 0) = r[4];
+				p.cov(0, 1) = p.cov(1, 0) = r[5];
+				p.cov(0, 2) = p.cov(2, 0) = r[6];
+				p.cov(1, 1) = r[7];
+				p.cov(1, 2) = p.cov(2, 1) = r[8];
+				p.cov(2, 2) = r[9];
+				break;
+		}
+		if (!traj.poses.empty() && p.t <= traj.poses.back().t)
+			throw InputError(
+				at(path, lineNo) + ": time " + std::to_string(p.t) +
+				" is not after the previous row's; rows must be in increasing "
+				"time");
+		traj.poses.push_back(p);
+	});
+	if (traj.poses.empty())
+		throw InputError("file '" + path + "' has no data rows");
+	return traj;
+}
+
+std::vector<PoseRelation> TrajectoryFile::readRelations(const std::string& path)
+{
+	std::vector<PoseRelation> out;
+	forEachRow(path, [&](int lineNo, const Row& r) {
+		requireColumns(path, lineNo, r, 8, "t1 t2 x y z roll pitch yaw");
+		PoseRelation rel;
+		rel.t1 = r[0];
+		rel.t2 = r[1];
+		rel.delta = {r[2], r[3], mrpt::math::wrapToPi(r[7])};
+		out.push_back(rel);
+	});
+	if (out.empty()) throw InputError("file '" + path + "' has no relations");
+	return out;
+}
+
+TrajectoryFile::Format TrajectoryFile::parseFormat(const std::string& name)
+{
+	if (name == "auto") return Format::Auto;
+	if (name == "tum") return Format::Tum;
+	if (name == "txyyaw") return Format::TimeXYYaw;
+	if (name == "poses_cov") return Format::PosesCov;
+	if (name == "relations") return Format::Relations;
+	throw InputError(
+		"unknown trajectory format '" + name +
+		"' (auto, tum, txyyaw, poses_cov, relations)");
+}
+
+std::string TrajectoryFile::formatName(Format f)
+{
+	switch (f)
+	{
+		case Format::Tum:
+			return "tum";
+		case Format::TimeXYYaw:
+			return "txyyaw";
+		case Format::PosesCov:
+			return "poses_cov";
+		case Format::Relations:
+			return "relations";
+		default:
+			return "auto";
+	}
+}
+}  // namespace featloc
