@@ -1,0 +1,37 @@
+#pragma once
+#include <mrpt/config/CConfigFileBase.h>
+
+#include "featloc/eval/EvaluationOptions.h"
+#include "featloc/io/InputOptions.h"
+#include "featloc/matchers/ScanMatcher.h"
+#include "featloc/odometry/OdometryOptions.h"
+#include "featloc/output/OutputOptions.h"
+#include "featloc/pipeline/PipelineOptions.h"
+
+namespace featloc
+{
+/** Everything one featloc-run reads from its ini file: one option struct
+ * per section, plus the scan matcher named in [ScanMatcher] with its
+ * parameters. */
+struct RunConfiguration
+{
+	InputOptions input;
+	OdometryOptions odometry;
+	PipelineOptions pipeline;
+	OutputOptions output;
+	EvaluationOptions evaluation;
+	ScanMatcher::Ptr matcher;  //!< always created (keys are validated)
+
+	/** Loads every section. Throws ConfigError on a bad value. (Unknown keys
+	 * are checked by the caller: TrackedConfig::requireAllKeysRead.) */
+	static RunConfiguration load(const mrpt::config::CConfigFileBase& cfg);
+
+	/** The defaults of every section, with [ScanMatcher] class = the default
+	 * matcher and a [ScanMatcher.X] section for every registered matcher. */
+	static RunConfiguration defaults();
+
+	/** Writes every section (and the parameters of every registered matcher
+	 * class, at their defaults except the selected one) with comments. */
+	void save(mrpt::config::CConfigFileBase& cfg) const;
+};
+}  // namespace featloc

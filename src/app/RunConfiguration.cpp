@@ -1,0 +1,46 @@
+#include "featloc/app/RunConfiguration.h"
+
+#include "featloc/config/ConfigValues.h"
+#include "featloc/matchers/ScanMatcherFactory.h"
+
+namespace featloc
+{
+RunConfiguration RunConfiguration::load(const mrpt::config::CConfigFileBase& cfg)
+{
+	RunConfiguration rc;
+	rc.input.loadFromConfigFile(cfg, InputOptions::kSection);
+	rc.odometry.loadFromConfigFile(cfg, OdometryOptions::kSection);
+	rc.pipeline.loadFromConfigFile(cfg, PipelineOptions::kSection);
+	rc.output.loadFromConfigFile(cfg, OutputOptions::kSection);
+	rc.evaluation.loadFromConfigFile(cfg, EvaluationOptions::kSection);
+	rc.matcher = ScanMatcherFactory::createFromConfig(cfg);
+	return rc;
+}
+
+RunConfiguration RunConfiguration::defaults()
+{
+	RunConfiguration rc;
+	rc.matcher = ScanMatcherFactory::create(ScanMatcherFactory::kDefaultClass);
+	return rc;
+}
+
+void RunConfiguration::save(mrpt::config::CConfigFileBase& cfg) const
+{
+	input.saveToConfigFile(cfg, InputOptions::kSection);
+	odometry.saveToConfigFile(cfg, OdometryOptions::kSection);
+	pipeline.saveToConfigFile(cfg, PipelineOptions::kSection);
+	config::write(
+		cfg, ScanMatcherFactory::kSection, "class", matcher->className(),
+		"scan matcher class; parameters in [ScanMatcher.<ClassName>]");
+	for (const auto& name : ScanMatcherFactory::knownClassNames())
+	{
+		const std::string section = ScanMatcherFactory::paramsSection(name);
+		if (name == matcher->className())
+			matcher->saveParams(cfg, section);
+		else
+			ScanMatcherFactory::create(name)->saveParams(cfg, section);
+	}
+	output.saveToConfigFile(cfg, OutputOptions::kSection);
+	evaluation.saveToConfigFile(cfg, EvaluationOptions::kSection);
+}
+}  // namespace featloc
