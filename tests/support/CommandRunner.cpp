@@ -1,0 +1,32 @@
+#include "CommandRunner.h"
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <stdexcept>
+
+namespace featloc::test
+{
+CommandResult runCommand(const std::string& command)
+{
+	CommandResult r;
+	FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+	if (!pipe) throw std::runtime_error("popen failed: " + command);
+	std::array<char, 4096> buf{};
+	size_t n = 0;
+	while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0)
+		r.output.append(buf.data(), n);
+	const int status = pclose(pipe);
+	r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+	return r;
+}
+
+std::string shellQuote(const std::string& arg)
+{
+	std::string q = "'";
+	for (char c : arg)
+		q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+	return q + "'";
+}
+}  // namespace featloc::test

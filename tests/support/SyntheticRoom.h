@@ -1,0 +1,38 @@
+#pragma once
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <vector>
+
+namespace featloc::test
+{
+/** A few wall segments and exact ray casting, to make noise-free scans with
+ * known geometry for unit tests (the full simulator is featloc-sim). */
+class SyntheticRoom
+{
+   public:
+	struct Segment
+	{
+		double x0, y0, x1, y1;
+	};
+
+	/** An 8 m x 6 m room with a pillar, a box and a recess: enough corners
+	 * to constrain all three degrees of freedom. */
+	static SyntheticRoom office();
+	/** Two long parallel walls (a corridor): motion along it is unobservable. */
+	static SyntheticRoom corridor();
+
+	void add(double x0, double y0, double x1, double y1);
+
+	/** Exact scan from the robot at `robot`, sensor mounted at `sensorOnRobot`,
+	 * `beams` beams over `aperture` (centred, counter-clockwise), ranges >=
+	 * maxRange marked invalid. */
+	mrpt::obs::CObservation2DRangeScan::Ptr scan(
+		const mrpt::poses::CPose2D& robot,
+		const mrpt::poses::CPose2D& sensorOnRobot = mrpt::poses::CPose2D(),
+		size_t beams = 361, double aperture = M_PI, double maxRange = 30) const;
+
+   private:
+	std::vector<Segment> m_segments;
+};
+}  // namespace featloc::test
