@@ -180,9 +180,10 @@ TEST(ConfigValues, DegreesAndChoicesAndAbsentKeys)
 	EXPECT_EQ(mode, "slow");
 }
 
-TEST(ConfigValues, FormatExactRoundTrips)
+TEST(ConfigValues, FormatNumberIsShortAndReadsBack)
 {
-	for (double v : {0.1, 1.0 / 3.0, 1e-6, 123456.789, -2.5e-12})
-		EXPECT_EQ(std::stod(cfgv::formatExact(v)), v);
-	EXPECT_EQ(cfgv::formatExact(0.1), "0.1");
+	for (double v : {0.1, 1.0 / 3.0, 1e-6, 123456.789, -2.5e-12, 0.0})
+		EXPECT_NEAR(std::stod(cfgv::formatNumber(v)), v, 1e-12 * std::abs(v));
+	EXPECT_EQ(cfgv::formatNumber(0.1), "0.1");
+	EXPECT_EQ(cfgv::formatNumber(0.2 * M_PI / 180 * 180 / M_PI), "0.2");
 }

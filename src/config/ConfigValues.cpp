@@ -209,22 +209,26 @@ void readChoice(
 	fail(c, section, key, "must be one of: " + list);
 }
 
-std::string formatExact(double v)
+std::string formatNumber(double v)
 {
-	std::ostringstream ss;
-	ss.precision(std::numeric_limits<double>::max_digits10);
-	ss << v;
-	// Prefer the short form when it round-trips (0.1 rather than
-	// 0.10000000000000001).
-	for (int digits = 6; digits < std::numeric_limits<double>::max_digits10;
+	// The shortest form that reads back within 1e-12 (relative): 0.2 rather
+	// than 0.20000000000000001 for a value converted from radians.
+	const double rounded = std::round(v);
+	if (std::abs(v - rounded) <= 1e-12 * std::abs(v) && std::abs(v) < 1e15)
+		return std::to_string(static_cast<long long>(rounded));
+	for (int digits = 1; digits < std::numeric_limits<double>::max_digits10;
 		 digits++)
 	{
-		std::ostringstream s2;
-		s2.precision(digits);
-		s2 << v;
-		if (std::strtod(s2.str().c_str(), nullptr) == v) return s2.str();
+		std::ostringstream s;
+		s.precision(digits);
+		s << v;
+		const double back = std::strtod(s.str().c_str(), nullptr);
+		if (std::abs(back - v) <= 1e-12 * std::abs(v)) return s.str();
 	}
-	return ss.str();
+	std::ostringstream s;
+	s.precision(std::numeric_limits<double>::max_digits10);
+	s << v;
+	return s.str();
 }
 
 void write(
@@ -240,7 +244,7 @@ void write(
 	mrpt::config::CConfigFileBase& c, const std::string& section,
 	const std::string& key, double value, const std::string& comment)
 {
-	write(c, section, key, formatExact(value), comment);
+	write(c, section, key, formatNumber(value), comment);
 }
 
 void write(
@@ -271,7 +275,7 @@ void write(
 {
 	std::string s = "[";
 	for (size_t i = 0; i < value.size(); i++)
-		s += (i ? " " : "") + formatExact(value[i]);
+		s += (i ? " " : "") + formatNumber(value[i]);
 	write(c, section, key, s + "]", comment);
 }
 
@@ -279,7 +283,7 @@ void writeDegrees(
 	mrpt::config::CConfigFileBase& c, const std::string& section,
 	const std::string& key, double radians, const std::string& comment)
 {
-	write(c, section, key, formatExact(mrpt::RAD2DEG(radians)), comment);
+	write(c, section, key, formatNumber(mrpt::RAD2DEG(radians)), comment);
 }
 
 }  // namespace featloc::config

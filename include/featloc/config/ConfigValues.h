@@ -129,7 +129,8 @@ void writeEnum(
 		comment);
 }
 
-/** Formats a double so that reading it back gives the same value. */
-std::string formatExact(double v);
+/** Formats a double in the shortest form that reads back within 1e-12
+ * (relative), so saved files show 0.2, not 0.20000000000000001. */
+std::string formatNumber(double v);
 
 }  // namespace featloc::config

@@ -1,5 +1,6 @@
 #pragma once
 #include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/core/bits_math.h>
 #include <mrpt/slam/CICP.h>
 
 #include "featloc/matchers/ScanMatcher.h"
@@ -25,7 +26,7 @@ class IcpMatcher : public ScanMatcher
 			mrpt::slam::icpCovFiniteDifferences;
 		unsigned int maxIterations = 80;  //!< per threshold level
 		double minAbsStep_trans = 1e-6;	 //!< [m] convergence step
-		double minAbsStep_rot = 1e-6;  //!< [rad] convergence step
+		double minAbsStep_rot = mrpt::DEG2RAD(1e-4);  //!< [rad] convergence step
 		double thresholdDist = 0.5;	 //!< [m] initial pairing distance
 		double thresholdAng = 0.0;	//!< [rad] extra distance per metre of range
 		double ALFA = 0.8;	//!< threshold shrink factor on convergence

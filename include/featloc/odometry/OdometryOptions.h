@@ -1,5 +1,6 @@
 #pragma once
 #include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/core/bits_math.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 
 #include <string>
@@ -25,11 +26,12 @@ struct OdometryOptions : public mrpt::config::CLoadableOptions
 	 * model. */
 	std::string covariance_source = "rawlog";
 
+	// Defaults: MRPT's own TMotionModelOptions::TOptions_GaussianModel.
 	double sigma_xy_min = 0.01;	 //!< [m]
 	double sigma_xy_per_m = 0.01;  //!< [m/m] (MRPT a1)
-	double sigma_xy_per_rad = 0.0573;  //!< [m/rad] (MRPT a2); file: per deg
-	double sigma_yaw_min = 0.0034907;  //!< [rad] (0.2 deg)
-	double sigma_yaw_per_m = 0.0174533;	 //!< [rad/m] (MRPT a3, 1 deg/m)
+	double sigma_xy_per_rad = 0.001 / mrpt::DEG2RAD(1.0);  //!< [m/rad] (a2)
+	double sigma_yaw_min = mrpt::DEG2RAD(0.2);	//!< [rad]
+	double sigma_yaw_per_m = mrpt::DEG2RAD(1.0);  //!< [rad/m] (MRPT a3)
 	double sigma_yaw_per_rad = 0.05;  //!< [rad/rad] (MRPT a4)
 
 	/** Format #2: odometry readings bracketing a scan are interpolated at
@@ -41,7 +43,7 @@ struct OdometryOptions : public mrpt::config::CLoadableOptions
 	/** Prior for a step without odometry: zero motion with these standard
 	 * deviations. */
 	double no_odometry_sigma_xy = 1.0;	//!< [m]
-	double no_odometry_sigma_yaw = 0.5235988;  //!< [rad] (30 deg)
+	double no_odometry_sigma_yaw = mrpt::DEG2RAD(30.0);	//!< [rad]
 
 	/** The equivalent MRPT motion model options. */
 	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionModel() const;
