@@ -10,10 +10,12 @@
 #include "featloc/core/InputError.h"
 #include "featloc/io/RawlogReader.h"
 #include "featloc/registerClasses.h"
+#include "support/ErrorMessage.h"
 #include "support/TempDir.h"
 #include "support/TestRawlog.h"
 
 using namespace featloc;
+using featloc::test::errorMessageOf;
 using featloc::test::TempDir;
 using featloc::test::TestRawlog;
 
@@ -44,18 +46,6 @@ Counts readAll(const std::string& file)
 	return c;
 }
 
-std::string inputErrorOf(const std::function<void()>& f)
-{
-	try
-	{
-		f();
-	}
-	catch (const InputError& e)
-	{
-		return e.what();
-	}
-	return "";
-}
 
 /** Copies the first `bytes` bytes of a file. */
 void truncateCopy(const std::string& from, const std::string& to, size_t bytes)
@@ -111,7 +101,7 @@ TEST(RawlogReader, TruncatedFileIsAnErrorNamingTheEntry)
 	truncateCopy(dir.file("full.rawlog"), dir.file("cut.rawlog"), size / 2);
 
 	size_t readBeforeError = 0;
-	const std::string msg = inputErrorOf([&] {
+	const std::string msg = errorMessageOf<InputError>([&] {
 		RawlogReader reader(dir.file("cut.rawlog"));
 		RawlogEntry e;
 		while (reader.next(e)) readBeforeError++;
@@ -134,7 +124,7 @@ TEST(RawlogReader, TruncatedGzipFileIsAnError)
 	log.write(dir.file("full.rawlog"));
 	const auto size = std::filesystem::file_size(dir.file("full.rawlog"));
 	truncateCopy(dir.file("full.rawlog"), dir.file("cut.rawlog"), size * 2 / 3);
-	const std::string msg = inputErrorOf([&] { readAll(dir.file("cut.rawlog")); });
+	const std::string msg = errorMessageOf<InputError>([&] { readAll(dir.file("cut.rawlog")); });
 	EXPECT_NE(msg.find("entry #"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("truncated"), std::string::npos) << msg;
 }
@@ -144,7 +134,7 @@ TEST(RawlogReader, GarbageIsCorruptNotEmpty)
 	registerClasses();
 	TempDir dir;
 	std::ofstream(dir.file("text.rawlog")) << "this is not a rawlog\n";
-	const std::string msg = inputErrorOf([&] { readAll(dir.file("text.rawlog")); });
+	const std::string msg = errorMessageOf<InputError>([&] { readAll(dir.file("text.rawlog")); });
 	EXPECT_NE(msg.find("entry #0"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("corrupt or not a rawlog"), std::string::npos) << msg;
 }
@@ -161,10 +151,10 @@ TEST(RawlogReader, MissingFileAndDirectoryAreErrors)
 {
 	registerClasses();
 	TempDir dir;
-	EXPECT_NE(inputErrorOf([&] { RawlogReader r(dir.file("nope.rawlog")); })
+	EXPECT_NE(errorMessageOf<InputError>([&] { RawlogReader r(dir.file("nope.rawlog")); })
 				  .find("does not exist"),
 		std::string::npos);
-	EXPECT_NE(inputErrorOf([&] { RawlogReader r(dir.path().string()); })
+	EXPECT_NE(errorMessageOf<InputError>([&] { RawlogReader r(dir.path().string()); })
 				  .find("is a directory"),
 		std::string::npos);
 }

@@ -8,10 +8,12 @@
 #include "featloc/io/RawlogReader.h"
 #include "featloc/pipeline/ScanStepAssembler.h"
 #include "featloc/registerClasses.h"
+#include "support/ErrorMessage.h"
 #include "support/TempDir.h"
 #include "support/TestRawlog.h"
 
 using namespace featloc;
+using featloc::test::errorMessageOf;
 using featloc::test::TempDir;
 using featloc::test::TestRawlog;
 using mrpt::poses::CPose2D;
@@ -33,18 +35,6 @@ std::vector<ScanStep> stepsOf(
 	return steps;
 }
 
-std::string inputErrorOf(const std::function<void()>& f)
-{
-	try
-	{
-		f();
-	}
-	catch (const InputError& e)
-	{
-		return e.what();
-	}
-	return "";
-}
 
 void expectIncrement(const ScanStep& s, const CPose2D& truth, double tol)
 {
@@ -129,7 +119,7 @@ TEST(ScanStepAssembler, SeveralLasersNeedALabel)
 		s.sensorLabel = (k % 2) ? "REAR" : "FRONT";
 	};
 	log.write(dir.file("two.rawlog"));
-	const std::string msg = inputErrorOf([&] { stepsOf(dir.file("two.rawlog")); });
+	const std::string msg = errorMessageOf<InputError>([&] { stepsOf(dir.file("two.rawlog")); });
 	EXPECT_NE(msg.find("'REAR'"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("'FRONT'"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("laser_label"), std::string::npos) << msg;
@@ -151,7 +141,7 @@ TEST(ScanStepAssembler, ScanWithoutTimestampIsAnError)
 		if (k == 2) s.timestamp = INVALID_TIMESTAMP;
 	};
 	log.write(dir.file("t.rawlog"));
-	const std::string msg = inputErrorOf([&] { stepsOf(dir.file("t.rawlog")); });
+	const std::string msg = errorMessageOf<InputError>([&] { stepsOf(dir.file("t.rawlog")); });
 	EXPECT_NE(msg.find("entry #4"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("no valid timestamp"), std::string::npos) << msg;
 }
@@ -166,7 +156,7 @@ TEST(ScanStepAssembler, RepeatedTimestampsAreAnErrorWithTheCarmenHint)
 		s.timestamp = mrpt::Clock::fromDouble(5.0);
 	};
 	log.write(dir.file("same.rawlog"));
-	const std::string msg = inputErrorOf([&] { stepsOf(dir.file("same.rawlog")); });
+	const std::string msg = errorMessageOf<InputError>([&] { stepsOf(dir.file("same.rawlog")); });
 	EXPECT_NE(msg.find("repeats"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("carmen2rawlog"), std::string::npos) << msg;
 }
@@ -185,7 +175,7 @@ TEST(ScanStepAssembler, BadRangesFailOrAreInvalidated)
 		for (size_t i : {10, 11, 12}) s.setScanRangeValidity(i, true);
 	};
 	log.write(dir.file("nan.rawlog"));
-	const std::string msg = inputErrorOf([&] { stepsOf(dir.file("nan.rawlog")); });
+	const std::string msg = errorMessageOf<InputError>([&] { stepsOf(dir.file("nan.rawlog")); });
 	EXPECT_NE(msg.find("entry #2"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("beam 10"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("invalid_range_policy"), std::string::npos) << msg;

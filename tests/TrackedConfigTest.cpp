@@ -5,27 +5,13 @@
 #include "featloc/config/ConfigValues.h"
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/ConfigError.h"
+#include "support/ErrorMessage.h"
 #include "support/TempDir.h"
 
 using featloc::ConfigError;
 using featloc::TrackedConfig;
 namespace cfgv = featloc::config;
-
-namespace
-{
-std::string errorOf(const std::function<void()>& f)
-{
-	try
-	{
-		f();
-	}
-	catch (const ConfigError& e)
-	{
-		return e.what();
-	}
-	return "";
-}
-}  // namespace
+using featloc::test::errorMessageOf;
 
 TEST(TrackedConfig, UnreadKeyIsReportedWithSectionKeyLineAndSuggestion)
 {
@@ -40,7 +26,7 @@ TEST(TrackedConfig, UnreadKeyIsReportedWithSectionKeyLineAndSuggestion)
 	cfgv::read(c, "ScanMatcher.IcpMatcher", "maxIterations", it);
 	EXPECT_EQ(it, 80u);	 // the misspelt key was not taken
 
-	const std::string msg = errorOf([&] { c.requireAllKeysRead(); });
+	const std::string msg = errorMessageOf<ConfigError>([&] { c.requireAllKeysRead(); });
 	EXPECT_NE(msg.find("run.ini:5"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("[ScanMatcher.IcpMatcher] maxIteratons"), std::string::npos)
 		<< msg;
@@ -53,7 +39,7 @@ TEST(TrackedConfig, UnknownSectionIsReported)
 	c.loadText("[Pipelin]\nestimator = matcher\n", "run.ini");
 	std::string est;
 	cfgv::read(c, "Pipeline", "estimator", est);
-	const std::string msg = errorOf([&] { c.requireAllKeysRead(); });
+	const std::string msg = errorMessageOf<ConfigError>([&] { c.requireAllKeysRead(); });
 	EXPECT_NE(msg.find("unknown section [Pipelin]"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("did you mean [Pipeline]"), std::string::npos) << msg;
 }
@@ -90,7 +76,7 @@ TEST(TrackedConfig, MalformedOverrideIsRejected)
 {
 	TrackedConfig c;
 	for (const char* bad : {"nocolon=1", "A:novalue", ":k=v", "A:=v"})
-		EXPECT_NE(errorOf([&] { c.applyOverride(bad); }).find("SECTION:KEY=VALUE"),
+		EXPECT_NE(errorMessageOf<ConfigError>([&] { c.applyOverride(bad); }).find("SECTION:KEY=VALUE"),
 			std::string::npos)
 			<< bad;
 }
@@ -102,7 +88,7 @@ TEST(TrackedConfig, OverrideOfUnknownKeyIsAnError)
 	c.applyOverride("A:z=3");
 	double x = 0;
 	cfgv::read(c, "A", "x", x);
-	const std::string msg = errorOf([&] { c.requireAllKeysRead(); });
+	const std::string msg = errorMessageOf<ConfigError>([&] { c.requireAllKeysRead(); });
 	EXPECT_NE(msg.find("--set A:z=3"), std::string::npos) << msg;
 }
 
@@ -123,7 +109,7 @@ TEST(TrackedConfig, PathsResolveAgainstTheIniFolderOrTheWorkingDirectory)
 TEST(TrackedConfig, MissingFileIsAConfigError)
 {
 	TrackedConfig c;
-	EXPECT_NE(errorOf([&] { c.loadFile("/nonexistent/featloc.ini"); })
+	EXPECT_NE(errorMessageOf<ConfigError>([&] { c.loadFile("/nonexistent/featloc.ini"); })
 				  .find("does not exist"),
 		std::string::npos);
 }
@@ -139,15 +125,15 @@ TEST(ConfigValues, StrictNumbersRejectWhatMrptWouldSilentlyAccept)
 	int i = 7;
 	unsigned int u = 7;
 	bool b = false;
-	EXPECT_NE(errorOf([&] { cfgv::read(c, "A", "d1", d); }).find("a.ini:2"),
+	EXPECT_NE(errorMessageOf<ConfigError>([&] { cfgv::read(c, "A", "d1", d); }).find("a.ini:2"),
 		std::string::npos);
-	EXPECT_NE(errorOf([&] { cfgv::read(c, "A", "d2", d); }).find("'1.5x'"),
+	EXPECT_NE(errorMessageOf<ConfigError>([&] { cfgv::read(c, "A", "d2", d); }).find("'1.5x'"),
 		std::string::npos);
-	EXPECT_FALSE(errorOf([&] { cfgv::read(c, "A", "i1", i); }).empty());
-	EXPECT_FALSE(errorOf([&] { cfgv::read(c, "A", "i2", i); }).empty());
-	EXPECT_FALSE(errorOf([&] { cfgv::read(c, "A", "u1", u); }).empty());
-	EXPECT_FALSE(errorOf([&] { cfgv::read(c, "A", "b1", b); }).empty());
-	EXPECT_FALSE(errorOf([&] { cfgv::read(c, "A", "d3", d); }).empty());
+	EXPECT_FALSE(errorMessageOf<ConfigError>([&] { cfgv::read(c, "A", "i1", i); }).empty());
+	EXPECT_FALSE(errorMessageOf<ConfigError>([&] { cfgv::read(c, "A", "i2", i); }).empty());
+	EXPECT_FALSE(errorMessageOf<ConfigError>([&] { cfgv::read(c, "A", "u1", u); }).empty());
+	EXPECT_FALSE(errorMessageOf<ConfigError>([&] { cfgv::read(c, "A", "b1", b); }).empty());
+	EXPECT_FALSE(errorMessageOf<ConfigError>([&] { cfgv::read(c, "A", "d3", d); }).empty());
 	EXPECT_EQ(d, 7);  // unchanged by failed reads
 	cfgv::read(c, "A", "ok", d);
 	EXPECT_DOUBLE_EQ(d, 1e-3);
@@ -175,7 +161,7 @@ TEST(ConfigValues, DegreesAndChoicesAndAbsentKeys)
 	EXPECT_EQ(untouched, 0.25);
 	std::string mode = "slow";
 	const std::string msg =
-		errorOf([&] { cfgv::readChoice(c, "A", "mode", mode, {"slow", "exact"}); });
+		errorMessageOf<ConfigError>([&] { cfgv::readChoice(c, "A", "mode", mode, {"slow", "exact"}); });
 	EXPECT_NE(msg.find("one of: slow, exact"), std::string::npos) << msg;
 	EXPECT_EQ(mode, "slow");
 }
