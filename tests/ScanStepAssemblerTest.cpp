@@ -191,6 +191,22 @@ TEST(ScanStepAssembler, BadRangesFailOrAreInvalidated)
 	EXPECT_TRUE(steps[1].scan->getScanRangeValidity(13));
 }
 
+TEST(ScanStepAssembler, ImpossibleScanGeometryIsAnError)
+{
+	registerClasses();
+	TempDir dir;
+	TestRawlog log;
+	log.scans = 3;
+	log.editScan = [](size_t k, mrpt::obs::CObservation2DRangeScan& s) {
+		if (k == 2) s.aperture = std::numeric_limits<float>::quiet_NaN();
+	};
+	log.write(dir.file("geo.rawlog"));
+	const std::string msg =
+		errorMessageOf<InputError>([&] { stepsOf(dir.file("geo.rawlog")); });
+	EXPECT_NE(msg.find("entry #4"), std::string::npos) << msg;
+	EXPECT_NE(msg.find("impossible geometry"), std::string::npos) << msg;
+}
+
 TEST(ScanStepAssembler, MaxScansStopsEarly)
 {
 	registerClasses();

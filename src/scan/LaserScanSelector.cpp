@@ -50,6 +50,19 @@ mrpt::obs::CObservation2DRangeScan::Ptr LaserScanSelector::select(
 			where + ": 2-D scan '" + scan->sensorLabel +
 			"' has no valid timestamp");
 
+	// Bearings come from aperture and beam count: a bad value would place
+	// every point wrongly without any other sign.
+	if (!(std::isfinite(scan->aperture) && scan->aperture > 0 &&
+		  scan->aperture <= 2 * M_PI + 1e-6) ||
+		!(std::isfinite(scan->maxRange) && scan->maxRange > 0))
+	{
+		std::ostringstream msg;
+		msg << where << ": 2-D scan '" << scan->sensorLabel
+			<< "' has an impossible geometry (aperture " << scan->aperture
+			<< " rad, maxRange " << scan->maxRange << " m)";
+		throw InputError(msg.str());
+	}
+
 	mrpt::obs::CObservation2DRangeScan::Ptr out = scan;
 	const size_t n = scan->getScanSize();
 	for (size_t i = 0; i < n; i++)

@@ -14,6 +14,7 @@ ScanPoints ScanPoints::fromScan(const mrpt::obs::CObservation2DRangeScan& scan)
 	const size_t n = scan.getScanSize();
 	out.maxRange = scan.maxRange;
 	out.angularStep = n > 1 ? scan.aperture / static_cast<double>(n - 1) : 0;
+	if (n < 2) return out;	// no bearing is defined for a single beam
 	out.points.reserve(n);
 	for (size_t i = 0; i < n; i++)
 	{

@@ -43,7 +43,7 @@ struct ScanPoints
 	const ScanPoint& operator[](size_t i) const { return points[i]; }
 
 	/** Valid readings of a scan, in its sensor frame (sensorPose is NOT
-	 * applied). */
+	 * applied). A scan of fewer than two beams gives no points. */
 	static ScanPoints fromScan(const mrpt::obs::CObservation2DRangeScan& scan);
 
 	/** Points of a map (its own frame), sorted by bearing around its origin.
