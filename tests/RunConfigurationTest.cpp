@@ -49,8 +49,8 @@ TEST(RunConfiguration, NonDefaultValuesRoundTrip)
 	rc.input.invalid_range_policy = "invalidate";
 	rc.input.max_scans = 17;
 	rc.odometry.covariance_source = "model";
-	rc.odometry.sigma_xy_per_rad = 0.123;
-	rc.odometry.sigma_yaw_min = 0.0123;
+	rc.odometry.model.sigma_xy_per_rad = 0.123;
+	rc.odometry.model.sigma_yaw_min = 0.0123;
 	rc.pipeline.estimator = "odometry";
 	rc.pipeline.initial_pose = {1.5, -2, 0.3};
 	rc.pipeline.keyframe_distance = 0.7;
@@ -70,8 +70,8 @@ TEST(RunConfiguration, NonDefaultValuesRoundTrip)
 	EXPECT_EQ(back.input.invalid_range_policy, "invalidate");
 	EXPECT_EQ(back.input.max_scans, 17u);
 	EXPECT_EQ(back.odometry.covariance_source, "model");
-	EXPECT_NEAR(back.odometry.sigma_xy_per_rad, 0.123, 1e-12);
-	EXPECT_NEAR(back.odometry.sigma_yaw_min, 0.0123, 1e-12);
+	EXPECT_NEAR(back.odometry.model.sigma_xy_per_rad, 0.123, 1e-12);
+	EXPECT_NEAR(back.odometry.model.sigma_yaw_min, 0.0123, 1e-12);
 	EXPECT_EQ(back.pipeline.estimator, "odometry");
 	EXPECT_NEAR(back.pipeline.initial_pose[0], 1.5, 1e-12);
 	EXPECT_NEAR(back.pipeline.initial_pose[1], -2, 1e-12);

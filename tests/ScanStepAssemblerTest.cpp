@@ -104,9 +104,9 @@ TEST(ScanStepAssembler, ModelCovarianceGrowsWithMotion)
 	const auto steps = stepsOf(dir.file("c.rawlog"), {}, odo);
 	ASSERT_EQ(steps.size(), 3u);
 	// Step 1: no motion -> sigma_xy_min; step 2: 1 m -> min + per_m.
-	EXPECT_NEAR(std::sqrt(steps[1].odometry.cov(0, 0)), odo.sigma_xy_min, 1e-9);
+	EXPECT_NEAR(std::sqrt(steps[1].odometry.cov(0, 0)), odo.model.sigma_xy_min, 1e-9);
 	EXPECT_NEAR(std::sqrt(steps[2].odometry.cov(0, 0)),
-		odo.sigma_xy_min + odo.sigma_xy_per_m * 1.0, 1e-9);
+		odo.model.sigma_xy_min + odo.model.sigma_xy_per_m * 1.0, 1e-9);
 }
 
 TEST(ScanStepAssembler, SeveralLasersNeedALabel)

@@ -173,3 +173,22 @@ TEST(ConfigValues, FormatNumberIsShortAndReadsBack)
 	EXPECT_EQ(cfgv::formatNumber(0.1), "0.1");
 	EXPECT_EQ(cfgv::formatNumber(0.2 * M_PI / 180 * 180 / M_PI), "0.2");
 }
+
+TEST(ConfigValues, RowsAreParsedStrictly)
+{
+	TrackedConfig c;
+	c.loadText(
+		"[A]\npts = [0 0; 1.5, 2; -3 4]\nbad = [0 0; 1 x]\nragged = [0 0; 1 2 3 4]\n",
+		"a.ini");
+	std::vector<std::vector<double>> rows;
+	cfgv::readRows(c, "A", "pts", rows, {2, 3});
+	ASSERT_EQ(rows.size(), 3u);
+	EXPECT_DOUBLE_EQ(rows[1][0], 1.5);
+	EXPECT_DOUBLE_EQ(rows[2][1], 4);
+	EXPECT_NE(errorMessageOf<ConfigError>([&] { cfgv::readRows(c, "A", "bad", rows, {2}); })
+				  .find("'x' in row 2"),
+		std::string::npos);
+	EXPECT_NE(errorMessageOf<ConfigError>([&] { cfgv::readRows(c, "A", "ragged", rows, {2, 3}); })
+				  .find("row 2 has 4 numbers, expected 2 or 3"),
+		std::string::npos);
+}

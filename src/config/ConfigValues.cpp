@@ -182,6 +182,47 @@ void read(
 	value = out;
 }
 
+void readRows(
+	const mrpt::config::CConfigFileBase& c, const std::string& section,
+	const std::string& key, std::vector<std::vector<double>>& rows,
+	const std::vector<size_t>& allowedColumns)
+{
+	std::string text;
+	if (!readRaw(c, section, key, text)) return;
+	std::vector<std::string> rowTexts;
+	mrpt::system::tokenize(text, "[];", rowTexts);
+	std::vector<std::vector<double>> out;
+	for (const auto& rowText : rowTexts)
+	{
+		std::vector<std::string> tokens;
+		mrpt::system::tokenize(rowText, ", \t", tokens);
+		if (tokens.empty()) continue;
+		std::vector<double> row;
+		for (const auto& tok : tokens)
+		{
+			double d = 0;
+			if (!parseDouble(tok, d))
+				fail(c, section, key,
+					"'" + tok + "' in row " + std::to_string(out.size() + 1) +
+						" is not a finite number");
+			row.push_back(d);
+		}
+		bool ok = false;
+		std::string allowed;
+		for (size_t n : allowedColumns)
+		{
+			ok = ok || row.size() == n;
+			allowed += (allowed.empty() ? "" : " or ") + std::to_string(n);
+		}
+		if (!ok)
+			fail(c, section, key,
+				"row " + std::to_string(out.size() + 1) + " has " +
+					std::to_string(row.size()) + " numbers, expected " + allowed);
+		out.push_back(row);
+	}
+	rows = out;
+}
+
 void readDegrees(
 	const mrpt::config::CConfigFileBase& c, const std::string& section,
 	const std::string& key, double& radians)
@@ -276,6 +317,21 @@ void write(
 	std::string s = "[";
 	for (size_t i = 0; i < value.size(); i++)
 		s += (i ? " " : "") + formatNumber(value[i]);
+	write(c, section, key, s + "]", comment);
+}
+
+void writeRows(
+	mrpt::config::CConfigFileBase& c, const std::string& section,
+	const std::string& key, const std::vector<std::vector<double>>& rows,
+	const std::string& comment)
+{
+	std::string s = "[";
+	for (size_t r = 0; r < rows.size(); r++)
+	{
+		if (r) s += "; ";
+		for (size_t i = 0; i < rows[r].size(); i++)
+			s += (i ? " " : "") + formatNumber(rows[r][i]);
+	}
 	write(c, section, key, s + "]", comment);
 }
 

@@ -2,6 +2,7 @@
 
 #include <mrpt/system/filesystem.h>
 #include <mrpt/system/string_utils.h>
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <fstream>
@@ -79,7 +80,85 @@ void TrackedConfig::loadFile(const std::string& path)
 	ss << f.rdbuf();
 	std::string dir = mrpt::system::extractFileDirectory(path);
 	if (dir.empty()) dir = ".";
-	loadText(ss.str(), path, dir);
+	const std::string ext = lower(mrpt::system::extractFileExtension(path));
+	if (ext == "yaml" || ext == "yml")
+		loadYaml(ss.str(), path, dir);
+	else
+		loadText(ss.str(), path, dir);
+}
+
+void TrackedConfig::loadYaml(
+	const std::string& yaml, const std::string& originName,
+	const std::string& baseDir)
+{
+	// A map of sections, each a map of keys. Values: scalars as they are;
+	// a sequence of numbers as "[a b c]", a sequence of sequences as
+	// "[x0 y0; x1 y1]" (the ini's matrix notation). yaml-cpp, not MRPT's
+	// setContentFromYAML, which rejects sections with a single key in 2.5.8.
+	auto where = [&](const YAML::Node& n) {
+		return originName + ":" + std::to_string(n.Mark().line + 1);
+	};
+	auto scalarList = [&](const YAML::Node& seq, const std::string& at) {
+		std::string out;
+		for (const auto& item : seq)
+		{
+			if (!item.IsScalar())
+				throw ConfigError(at + ": nested lists go at most two deep ([[x, y], ...])");
+			out += (out.empty() ? "" : " ") + item.as<std::string>();
+		}
+		return out;
+	};
+	YAML::Node root;
+	try
+	{
+		root = YAML::Load(yaml);
+	}
+	catch (const YAML::Exception& e)
+	{
+		throw ConfigError(originName + ": not valid YAML: " + e.what());
+	}
+	m_values.clear();
+	m_origins.clear();
+	m_sourceName = originName;
+	if (root.IsNull()) return;
+	if (!root.IsMap())
+		throw ConfigError(
+			where(root) + ": expected a map of sections (Section: {key: value})");
+	for (const auto& sec : root)
+	{
+		const std::string section = sec.first.as<std::string>();
+		if (!sec.second.IsMap())
+			throw ConfigError(
+				where(sec.second) + ": section '" + section + "' must be a map of keys");
+		for (const auto& kv : sec.second)
+		{
+			const std::string key = kv.first.as<std::string>();
+			const YAML::Node& v = kv.second;
+			const std::string at = where(v) + ": [" + section + "] " + key;
+			std::string text;
+			if (v.IsScalar())
+				text = v.as<std::string>();
+			else if (v.IsNull())
+				text = "";
+			else if (v.IsSequence())
+			{
+				bool rows = v.size() > 0 && v[0].IsSequence();
+				text = "[";
+				for (size_t i = 0; i < v.size(); i++)
+				{
+					if (rows != v[i].IsSequence())
+						throw ConfigError(at + ": mixes numbers and lists");
+					text += rows ? (i ? "; " : "") + scalarList(v[i], at)
+								 : (i ? " " : "") + v[i].as<std::string>();
+				}
+				text += "]";
+			}
+			else
+				throw ConfigError(at + ": a value must be a scalar or a list");
+			m_values.write(section, key, text);
+			m_origins[makeKey(section, key)] = {where(kv.first), baseDir};
+		}
+	}
 }
 
 void TrackedConfig::loadText(

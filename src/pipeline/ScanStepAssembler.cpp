@@ -213,11 +213,7 @@ mrpt::poses::CPosePDFGaussian ScanStepAssembler::noOdometryPrior() const
 mrpt::poses::CPosePDFGaussian ScanStepAssembler::modelIncrement(
 	const mrpt::poses::CPose2D& increment) const
 {
-	mrpt::obs::CActionRobotMovement2D a;
-	a.computeFromOdometry(increment, m_odo.motionModel());
-	mrpt::poses::CPosePDFGaussian g;
-	g.copyFrom(*a.poseChange);
-	return g;
+	return m_odo.model.incrementPdf(increment);
 }
 
 }  // namespace featloc

@@ -59,6 +59,14 @@ void read(
 	const mrpt::config::CConfigFileBase& c, const std::string& section,
 	const std::string& key, std::vector<double>& value);
 
+/** A list of rows written "[x0 y0; x1 y1; ...]" (MATLAB style; commas
+ * also separate numbers). Every row must have one of `allowedColumns`
+ * numbers. */
+void readRows(
+	const mrpt::config::CConfigFileBase& c, const std::string& section,
+	const std::string& key, std::vector<std::vector<double>>& rows,
+	const std::vector<size_t>& allowedColumns);
+
 /** Reads a value given in degrees in the file into radians. The key name
  * should end in "_DEG". */
 void readDegrees(
@@ -113,6 +121,10 @@ void write(
 void write(
 	mrpt::config::CConfigFileBase& c, const std::string& section,
 	const std::string& key, const std::vector<double>& value,
+	const std::string& comment);
+void writeRows(
+	mrpt::config::CConfigFileBase& c, const std::string& section,
+	const std::string& key, const std::vector<std::vector<double>>& rows,
 	const std::string& comment);
 /** Writes radians as degrees. */
 void writeDegrees(

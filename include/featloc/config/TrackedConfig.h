@@ -27,8 +27,16 @@ class TrackedConfig : public mrpt::config::CConfigFileBase
    public:
 	TrackedConfig() = default;
 
-	/** Loads an ini file. Throws ConfigError if it cannot be read. */
+	/** Loads an ini file, or a YAML file (.yaml, .yml) of sections of keys.
+	 * Throws ConfigError if it cannot be read. */
 	void loadFile(const std::string& path);
+
+	/** Loads YAML text: a map of sections, each a map of keys; a list of
+	 * numbers becomes "[a b c]" and a list of lists "[x0 y0; x1 y1]". Errors
+	 * name `originName` and the line. */
+	void loadYaml(
+		const std::string& yaml, const std::string& originName,
+		const std::string& baseDir = ".");
 
 	/** Loads ini text; `originName` names it in error messages. Relative paths
 	 * in it resolve against `baseDir`. */

@@ -1,0 +1,17 @@
+#pragma once
+#include <mrpt/math/TPoint2D.h>
+
+#include <string>
+
+namespace featloc
+{
+/** A circular obstacle (pillar, bin) or a moving body part (a leg, a
+ * torso), in world coordinates. */
+struct CircleShape
+{
+	mrpt::math::TPoint2D centre;  //!< [m]
+	double radius = 0;	//!< [m]
+	std::string texture = "plain";
+	std::string object;
+};
+}  // namespace featloc

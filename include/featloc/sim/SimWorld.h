@@ -1,0 +1,53 @@
+#pragma once
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/math/TPoint2D.h>
+
+#include <vector>
+
+#include "featloc/sim/CircleShape.h"
+#include "featloc/sim/WalkingAgent.h"
+#include "featloc/sim/WallSegment.h"
+
+namespace featloc
+{
+/** The simulated world: static walls and obstacles (segments and circles,
+ * each with a texture name) and people walking through it.
+ *
+ * World file sections (ini, or YAML with the same names, see
+ * doc/simulator.md):
+ *   [Wall.<name>]     polyline = [x y; x y; ...], closed = false, texture
+ *   [Obstacle.<name>] polygon = [x y; ...] or circle = [cx cy r], texture
+ *   [Agent.<name>]    shape = legs|body, waypoints = [...], speed, pause,
+ *                     mode = loop|pingpong|once, start_time, sizes */
+class SimWorld
+{
+   public:
+	static SimWorld fromConfig(const mrpt::config::CConfigFileBase& cfg);
+
+	void addSegment(const WallSegment& s) { m_segments.push_back(s); }
+	void addCircle(const CircleShape& c) { m_circles.push_back(c); }
+	void addAgent(const WalkingAgent::Params& p) { m_agents.emplace_back(p); }
+
+	const std::vector<WallSegment>& segments() const { return m_segments; }
+	const std::vector<CircleShape>& circles() const { return m_circles; }
+	const std::vector<WalkingAgent>& agents() const { return m_agents; }
+
+	/** Static circles plus every agent's circles at time t. */
+	void circlesAt(double t, std::vector<CircleShape>& out) const;
+
+	/** Distance from p to the nearest static wall or obstacle [m]. */
+	double clearance(const mrpt::math::TPoint2D& p) const;
+	/** True when the straight path a-b stays at least `clearance` away from
+	 * every static wall and obstacle. */
+	bool pathIsClear(
+		const mrpt::math::TPoint2D& a, const mrpt::math::TPoint2D& b,
+		double clearance) const;
+	/** Bounding box of the static geometry: min and max corners. */
+	std::pair<mrpt::math::TPoint2D, mrpt::math::TPoint2D> bounds() const;
+
+   private:
+	std::vector<WallSegment> m_segments;
+	std::vector<CircleShape> m_circles;
+	std::vector<WalkingAgent> m_agents;
+};
+}  // namespace featloc

@@ -1,0 +1,122 @@
+#include "featloc/app/SimApp.h"
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "featloc/app/AppMain.h"
+#include "featloc/app/UsageError.h"
+#include "featloc/config/TrackedConfig.h"
+#include "featloc/pipeline/ProgressBar.h"
+#include "featloc/registerClasses.h"
+#include "featloc/sim/SimConfiguration.h"
+#include "featloc/sim/Simulator.h"
+#include "featloc/sim/WorldPlot.h"
+#include "featloc/sim/WorldSceneWriter.h"
+
+namespace featloc
+{
+int SimApp::main(int argc, char** argv)
+{
+	registerClasses();
+	TCLAP::CmdLine cmd(
+		"featloc-sim: simulate a robot with a 2-D laser and odometry in a "
+		"world of walls, obstacles and walking people; write an MRPT rawlog "
+		"and the exact ground truth. See doc/simulator.md for the world file.",
+		' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> argWorld(
+		"world", "World file (.ini, or .yaml with the same sections)", false,
+		"", "WORLD", cmd);
+	TCLAP::ValueArg<std::string> argOut(
+		"o", "out",
+		"Output prefix: writes PREFIX.rawlog, PREFIX.gt.txt, PREFIX.3Dscene, "
+		"PREFIX.png",
+		false, "", "PREFIX", cmd);
+	TCLAP::ValueArg<unsigned int> argSeed(
+		"", "seed", "Random seed; overrides [Simulation] seed", false, 1, "N", cmd);
+	TCLAP::MultiArg<std::string> argSet(
+		"s", "set",
+		"Override one key, e.g. --set Laser:preset=hokuyo_utm30lx (repeatable)",
+		false, "SECTION:KEY=VALUE", cmd);
+	TCLAP::ValueArg<std::string> argWriteConfig(
+		"", "write-config",
+		"Write the settings sections with every key, default and unit to "
+		"FILE and exit",
+		false, "", "FILE", cmd);
+	TCLAP::SwitchArg argQuiet("q", "quiet", "No progress bar", cmd);
+	int exitCode = 0;
+	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
+
+	if (argWriteConfig.isSet())
+	{
+		mrpt::config::CConfigFileMemory mem;
+		SimConfiguration().saveSettings(mem);
+		std::ofstream f(argWriteConfig.getValue());
+		if (!f)
+			throw std::runtime_error("cannot write '" + argWriteConfig.getValue() + "'");
+		f << "# featloc-sim settings: every key with its default. Add\n"
+			 "# [Wall.<name>], [Obstacle.<name>] and [Agent.<name>] sections\n"
+			 "# (doc/simulator.md).\n"
+		  << mem.getContent();
+		std::printf("wrote %s\n", argWriteConfig.getValue().c_str());
+		return 0;
+	}
+	if (argWorld.getValue().empty()) throw UsageError("missing WORLD (the world file)");
+	if (!argOut.isSet()) throw UsageError("missing --out PREFIX");
+
+	TrackedConfig cfg;
+	cfg.loadFile(argWorld.getValue());
+	for (const auto& spec : argSet.getValue()) cfg.applyOverride(spec);
+	SimConfiguration sc = SimConfiguration::load(cfg);
+	cfg.requireAllKeysRead();
+	if (argSeed.isSet()) sc.simulation.seed = argSeed.getValue();
+
+	const std::string prefix = argOut.getValue();
+	const auto parent = std::filesystem::path(prefix).parent_path();
+	if (!parent.empty()) std::filesystem::create_directories(parent);
+	const std::string rawlog = prefix + ".rawlog", gt = prefix + ".gt.txt",
+					  scene = prefix + ".3Dscene", picture = prefix + ".png";
+
+	const auto t0 = std::chrono::steady_clock::now();
+	Simulator sim(sc.world, sc.robot, sc.laser, sc.odometry, sc.simulation);
+	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
+	size_t scans = 0;
+	const auto res = sim.run(
+		rawlog, gt, [&](const SimulatedScan&) { scans++; },
+		[&](double f) {
+			if (!argQuiet.getValue()) progress.update(f, scans);
+		});
+	if (!argQuiet.getValue()) progress.done(res.scans);
+	WorldSceneWriter::write(scene, sim.world(), sim.trajectory());
+	WorldPlot::write(
+		picture, sim.world(), sim.trajectory(),
+		std::filesystem::path(argWorld.getValue()).filename().string() +
+			": robot path " + std::to_string(static_cast<int>(res.pathLength)) +
+			" m, " + std::to_string(res.scans) + " scans");
+	const double secs =
+		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+	std::printf(
+		"featloc-sim: %s, seed %u\n"
+		"  world: %zu wall segments, %zu circles, %zu people\n"
+		"  robot: %.1f m in %.1f s; laser %s, %u beams at %.1f Hz\n"
+		"  wrote %zu scans (rawlog format #%u, %s) in %.2f s:\n"
+		"    %s\n    %s\n    %s\n    %s\n",
+		argWorld.getValue().c_str(), sc.simulation.seed,
+		sim.world().segments().size(), sim.world().circles().size(),
+		sim.world().agents().size(), res.pathLength, res.duration,
+		sc.laser.preset.c_str(), sc.laser.beams, sc.laser.rate, res.scans,
+		sc.simulation.format,
+		sc.simulation.format == 1
+			? (std::to_string(res.actions) + " odometry actions").c_str()
+			: (std::to_string(res.odometryReadings) + " odometry readings").c_str(),
+		secs, rawlog.c_str(), gt.c_str(), scene.c_str(), picture.c_str());
+	return 0;
+}
+}  // namespace featloc

@@ -1,0 +1,142 @@
+#include "featloc/sim/RobotTrajectory.h"
+
+#include <mrpt/math/wrap2pi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace featloc
+{
+namespace
+{
+/** Exact unicycle motion for `dt` with constant v, w (a circular arc). */
+mrpt::poses::CPose2D integrate(
+	const mrpt::poses::CPose2D& p, double v, double w, double dt)
+{
+	const double th = p.phi(), th2 = th + w * dt;
+	if (std::abs(w) < 1e-12)
+		return {p.x() + v * dt * std::cos(th), p.y() + v * dt * std::sin(th), th};
+	return {p.x() + v / w * (std::sin(th2) - std::sin(th)),
+		p.y() - v / w * (std::cos(th2) - std::cos(th)),
+		mrpt::math::wrapToPi(th2)};
+}
+}  // namespace
+
+RobotTrajectory RobotTrajectory::follow(
+	const std::vector<Waypoint>& wps, double initialYaw,
+	const RobotPathOptions& o)
+{
+	if (wps.size() < 2) throw std::invalid_argument("a path needs two waypoints");
+	RobotTrajectory traj;
+	traj.m_waypoints = wps;
+	traj.m_period = o.control_period;
+	double pathLength = 0;
+	for (size_t i = 1; i < wps.size(); i++)
+		pathLength += std::hypot(wps[i].x - wps[i - 1].x, wps[i].y - wps[i - 1].y);
+	const double timeLimit = 3 * pathLength / o.speed + 60;
+
+	mrpt::poses::CPose2D pose(wps[0].x, wps[0].y, initialYaw);
+	size_t target = 1;
+	double t = 0;
+	const double dt = o.control_period;
+	// Proportional steering with a time constant of a few periods.
+	const double gain = std::min(3.0, 0.5 / dt);
+	while (target < wps.size())
+	{
+		const auto& g = wps[target];
+		double dist = std::hypot(g.x - pose.x(), g.y - pose.y());
+		while (dist < o.goal_tolerance && ++target < wps.size())
+			dist = std::hypot(wps[target].x - pose.x(), wps[target].y - pose.y());
+		if (target >= wps.size()) break;
+		const auto& goal = wps[target];
+		const double err = mrpt::math::wrapToPi(
+			std::atan2(goal.y - pose.y(), goal.x - pose.x()) - pose.phi());
+		const double w = std::clamp(gain * err, -o.max_angular_speed, o.max_angular_speed);
+		// Full speed when aligned, none beyond turn_in_place (turn on the
+		// spot first), and no overshoot of the goal.
+		const double align = std::max(
+			0.0, (std::cos(err) - std::cos(o.turn_in_place)) /
+				(1 - std::cos(o.turn_in_place)));
+		const double v = std::min(goal.speed * align, dist / dt);
+		traj.m_samples.push_back({pose, v, w});
+		pose = integrate(pose, v, w, dt);
+		traj.m_length += v * dt;
+		t += dt;
+		if (t > timeLimit)
+		{
+			std::ostringstream msg;
+			msg << "the simulated robot did not reach waypoint " << target
+				<< " (" << goal.x << ", " << goal.y << ") within " << timeLimit
+				<< " s; check [Robot] waypoints, speed and goal_tolerance";
+			throw std::runtime_error(msg.str());
+		}
+	}
+	traj.m_samples.push_back({pose, 0, 0});	 // at rest at the end
+	traj.m_duration = t;
+	return traj;
+}
+
+RobotTrajectory RobotTrajectory::fromOptions(
+	const RobotPathOptions& o, const SimWorld& world,
+	mrpt::random::CRandomGenerator& rng)
+{
+	std::vector<Waypoint> wps;
+	if (o.path == "waypoints")
+	{
+		for (unsigned lap = 0; lap < o.laps; lap++)
+			for (size_t i = (lap == 0 ? 0 : 1); i < o.waypoints.size(); i++)
+			{
+				const auto& r = o.waypoints[i];
+				wps.push_back({r[0], r[1], r.size() > 2 ? r[2] : o.speed});
+			}
+	}
+	else
+	{
+		const mrpt::math::TPoint2D start(o.explore_start[0], o.explore_start[1]);
+		if (world.clearance(start) < o.explore_clearance)
+			throw std::runtime_error(
+				"[Robot] explore_start is closer than explore_clearance to a "
+				"wall or obstacle");
+		wps.push_back({start.x, start.y, o.speed});
+		const auto [lo, hi] = world.bounds();
+		mrpt::math::TPoint2D cur = start;
+		for (unsigned g = 0; g < o.explore_goals; g++)
+		{
+			bool found = false;
+			for (int attempt = 0; attempt < 2000 && !found; attempt++)
+			{
+				const mrpt::math::TPoint2D cand(
+					rng.drawUniform(lo.x, hi.x), rng.drawUniform(lo.y, hi.y));
+				if (std::hypot(cand.x - cur.x, cand.y - cur.y) < 1.0) continue;
+				if (world.clearance(cand) < o.explore_clearance) continue;
+				if (!world.pathIsClear(cur, cand, o.explore_clearance)) continue;
+				wps.push_back({cand.x, cand.y, o.speed});
+				cur = cand;
+				found = true;
+			}
+			if (!found)
+				throw std::runtime_error(
+					"exploration: no reachable free goal found from (" +
+					std::to_string(cur.x) + ", " + std::to_string(cur.y) +
+					"); lower [Robot] explore_clearance");
+		}
+	}
+	double yaw = 0;
+	if (o.initial_yaw == "auto")
+		yaw = std::atan2(wps[1].y - wps[0].y, wps[1].x - wps[0].x);
+	else
+		yaw = mrpt::DEG2RAD(std::stod(o.initial_yaw));
+	return follow(wps, yaw, o);
+}
+
+mrpt::poses::CPose2D RobotTrajectory::poseAt(double t) const
+{
+	if (t <= 0) return m_samples.front().pose;
+	const size_t i = static_cast<size_t>(t / m_period);
+	if (i >= m_samples.size() - 1) return m_samples.back().pose;
+	const Sample& s = m_samples[i];
+	return integrate(s.pose, s.v, s.w, t - static_cast<double>(i) * m_period);
+}
+}  // namespace featloc

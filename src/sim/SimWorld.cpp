@@ -1,0 +1,203 @@
+#include "featloc/sim/SimWorld.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "featloc/config/ConfigValues.h"
+#include "featloc/core/ConfigError.h"
+
+namespace featloc
+{
+namespace
+{
+using mrpt::math::TPoint2D;
+
+bool hasPrefix(const std::string& s, const std::string& prefix)
+{
+	if (s.size() <= prefix.size()) return false;
+	for (size_t i = 0; i < prefix.size(); i++)
+		if (std::tolower(static_cast<unsigned char>(s[i])) !=
+			std::tolower(static_cast<unsigned char>(prefix[i])))
+			return false;
+	return true;
+}
+
+std::vector<TPoint2D> points(const std::vector<std::vector<double>>& rows)
+{
+	std::vector<TPoint2D> out;
+	for (const auto& r : rows) out.emplace_back(r[0], r[1]);
+	return out;
+}
+
+double pointSegmentDistance(const TPoint2D& p, const TPoint2D& a, const TPoint2D& b)
+{
+	const double ex = b.x - a.x, ey = b.y - a.y;
+	const double len2 = ex * ex + ey * ey;
+	double s = len2 > 0 ? ((p.x - a.x) * ex + (p.y - a.y) * ey) / len2 : 0;
+	s = std::clamp(s, 0.0, 1.0);
+	return std::hypot(p.x - (a.x + s * ex), p.y - (a.y + s * ey));
+}
+
+bool segmentsIntersect(
+	const TPoint2D& a, const TPoint2D& b, const TPoint2D& c, const TPoint2D& d)
+{
+	auto cross = [](const TPoint2D& o, const TPoint2D& p, const TPoint2D& q) {
+		return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x);
+	};
+	const double d1 = cross(c, d, a), d2 = cross(c, d, b);
+	const double d3 = cross(a, b, c), d4 = cross(a, b, d);
+	return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+}
+
+double segmentSegmentDistance(
+	const TPoint2D& a, const TPoint2D& b, const TPoint2D& c, const TPoint2D& d)
+{
+	if (segmentsIntersect(a, b, c, d)) return 0;
+	return std::min(
+		{pointSegmentDistance(a, c, d), pointSegmentDistance(b, c, d),
+		 pointSegmentDistance(c, a, b), pointSegmentDistance(d, a, b)});
+}
+
+void loadWall(SimWorld& w, const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	std::vector<std::vector<double>> rows;
+	config::readRows(c, s, "polyline", rows, {2});
+	bool closed = false;
+	std::string texture = "plain";
+	config::read(c, s, "closed", closed);
+	config::read(c, s, "texture", texture);
+	config::require(rows.size() >= 2, c, s, "polyline", "at least two points [x y; x y]");
+	auto pts = points(rows);
+	if (closed) pts.push_back(pts.front());
+	for (size_t i = 1; i < pts.size(); i++)
+		w.addSegment({pts[i - 1], pts[i], texture, s});
+}
+
+void loadObstacle(
+	SimWorld& w, const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	std::vector<std::vector<double>> polygon, circle;
+	std::string texture = "plain";
+	config::readRows(c, s, "polygon", polygon, {2});
+	config::readRows(c, s, "circle", circle, {3});
+	config::read(c, s, "texture", texture);
+	if (polygon.empty() == circle.empty())
+		config::fail(c, s, "polygon",
+			"an obstacle needs either 'polygon = [x y; ...]' or "
+			"'circle = [cx cy r]', not both or none");
+	if (!circle.empty())
+	{
+		config::require(circle.size() == 1 && circle[0][2] > 0, c, s, "circle",
+			"one row [cx cy r] with r > 0");
+		w.addCircle({TPoint2D(circle[0][0], circle[0][1]), circle[0][2], texture, s});
+		return;
+	}
+	config::require(polygon.size() >= 3, c, s, "polygon", "at least three points");
+	auto pts = points(polygon);
+	pts.push_back(pts.front());
+	for (size_t i = 1; i < pts.size(); i++)
+		w.addSegment({pts[i - 1], pts[i], texture, s});
+}
+
+void loadAgent(SimWorld& w, const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	WalkingAgent::Params p;
+	p.name = s;
+	std::string shape = "legs", mode = "loop";
+	std::vector<std::vector<double>> rows;
+	config::readChoice(c, s, "shape", shape, {"legs", "body"});
+	config::readRows(c, s, "waypoints", rows, {2});
+	config::read(c, s, "speed", p.speed);
+	config::read(c, s, "pause", p.pause);
+	config::readChoice(c, s, "mode", mode, {"loop", "pingpong", "once"});
+	config::read(c, s, "start_time", p.startTime);
+	config::read(c, s, "body_radius", p.bodyRadius);
+	config::read(c, s, "leg_radius", p.legRadius);
+	config::read(c, s, "leg_separation", p.legSeparation);
+	config::read(c, s, "stride_length", p.strideLength);
+	config::read(c, s, "step_amplitude", p.stepAmplitude);
+	config::read(c, s, "texture", p.texture);
+	config::require(!rows.empty(), c, s, "waypoints", "at least one point [x y; ...]");
+	config::require(p.speed > 0, c, s, "speed", "> 0");
+	config::require(p.pause >= 0, c, s, "pause", ">= 0");
+	config::require(p.bodyRadius > 0, c, s, "body_radius", "> 0");
+	config::require(p.legRadius > 0, c, s, "leg_radius", "> 0");
+	config::require(p.strideLength > 0, c, s, "stride_length", "> 0");
+	p.shape = shape == "body" ? WalkingAgent::Shape::Body : WalkingAgent::Shape::Legs;
+	p.mode = mode == "once" ? WalkingAgent::Mode::Once
+		: mode == "pingpong" ? WalkingAgent::Mode::PingPong
+							 : WalkingAgent::Mode::Loop;
+	p.waypoints = points(rows);
+	w.addAgent(p);
+}
+}  // namespace
+
+SimWorld SimWorld::fromConfig(const mrpt::config::CConfigFileBase& cfg)
+{
+	SimWorld w;
+	std::vector<std::string> sections;
+	cfg.getAllSections(sections);
+	for (const auto& s : sections)
+	{
+		if (hasPrefix(s, "Wall."))
+			loadWall(w, cfg, s);
+		else if (hasPrefix(s, "Obstacle."))
+			loadObstacle(w, cfg, s);
+		else if (hasPrefix(s, "Agent."))
+			loadAgent(w, cfg, s);
+	}
+	if (w.m_segments.empty() && w.m_circles.empty())
+		throw ConfigError(
+			"the world has no walls or obstacles: add [Wall.<name>] or "
+			"[Obstacle.<name>] sections");
+	return w;
+}
+
+void SimWorld::circlesAt(double t, std::vector<CircleShape>& out) const
+{
+	out = m_circles;
+	for (const auto& a : m_agents) a.shapesAt(t, out);
+}
+
+double SimWorld::clearance(const TPoint2D& p) const
+{
+	double best = std::numeric_limits<double>::infinity();
+	for (const auto& s : m_segments)
+		best = std::min(best, pointSegmentDistance(p, s.a, s.b));
+	for (const auto& c : m_circles)
+		best = std::min(best, std::hypot(p.x - c.centre.x, p.y - c.centre.y) - c.radius);
+	return best;
+}
+
+bool SimWorld::pathIsClear(const TPoint2D& a, const TPoint2D& b, double clearance) const
+{
+	for (const auto& s : m_segments)
+		if (segmentSegmentDistance(a, b, s.a, s.b) < clearance) return false;
+	for (const auto& c : m_circles)
+		if (pointSegmentDistance(c.centre, a, b) < clearance + c.radius) return false;
+	return true;
+}
+
+std::pair<TPoint2D, TPoint2D> SimWorld::bounds() const
+{
+	TPoint2D lo(1e300, 1e300), hi(-1e300, -1e300);
+	auto grow = [&](double x, double y) {
+		lo.x = std::min(lo.x, x);
+		lo.y = std::min(lo.y, y);
+		hi.x = std::max(hi.x, x);
+		hi.y = std::max(hi.y, y);
+	};
+	for (const auto& s : m_segments)
+	{
+		grow(s.a.x, s.a.y);
+		grow(s.b.x, s.b.y);
+	}
+	for (const auto& c : m_circles)
+	{
+		grow(c.centre.x - c.radius, c.centre.y - c.radius);
+		grow(c.centre.x + c.radius, c.centre.y + c.radius);
+	}
+	return {lo, hi};
+}
+}  // namespace featloc

@@ -1,0 +1,306 @@
+#include "featloc/sim/Simulator.h"
+
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+
+#include "featloc/sim/RayCaster.h"
+
+namespace featloc
+{
+namespace
+{
+mrpt::random::CRandomGenerator& rng()
+{
+	// MRPT's global generator: Thrun's model (drawSingleSample) draws from
+	// it too, so one seeded sequence makes the whole simulation repeatable.
+	return mrpt::random::getRandomGenerator();
+}
+
+std::string tumRow(double t, const mrpt::poses::CPose2D& p)
+{
+	char row[256];
+	std::snprintf(
+		row, sizeof(row), "%.9f %.12f %.12f 0 0 0 %.15f %.15f\n", t, p.x(), p.y(),
+		std::sin(p.phi() / 2), std::cos(p.phi() / 2));
+	return row;
+}
+}  // namespace
+
+Simulator::Simulator(
+	SimWorld world, RobotPathOptions robot, LaserOptions laser,
+	SimOdometryOptions odometry, SimulationOptions simulation)
+	: m_world(std::move(world)),
+	  m_robot(std::move(robot)),
+	  m_laser(std::move(laser)),
+	  m_odometry(std::move(odometry)),
+	  m_sim(simulation)
+{
+	rng().randomize(m_sim.seed);
+	m_trajectory = std::make_unique<RobotTrajectory>(
+		RobotTrajectory::fromOptions(m_robot, m_world, rng()));
+}
+
+std::pair<double, double> Simulator::beamGeometry(const LaserOptions& laser)
+{
+	const double aperture = static_cast<float>(laser.aperture);
+	return {-aperture / 2, aperture / static_cast<double>(laser.beams - 1)};
+}
+
+std::vector<double> Simulator::exactRanges(
+	const mrpt::poses::CPose2D& sensor, double t) const
+{
+	std::vector<CircleShape> circles;
+	m_world.circlesAt(t, circles);
+	const auto [first, step] = beamGeometry(m_laser);
+	std::vector<double> ranges;
+	RayCaster::cast(
+		sensor.asTPose(), first, step, m_laser.beams, m_laser.max_range,
+		m_world.segments(), circles, ranges);
+	return ranges;
+}
+
+SimulatedScan Simulator::makeScan(size_t index, double t)
+{
+	SimulatedScan s;
+	s.index = index;
+	s.time = m_sim.t0 + t;
+	s.robot = m_trajectory->poseAt(t);
+	const mrpt::poses::CPose2D mount(
+		m_laser.sensor_pose[0], m_laser.sensor_pose[1], m_laser.sensor_pose[2]);
+	s.sensor = s.robot + mount;
+	s.exactRanges = exactRanges(s.sensor, t);
+
+	auto obs = std::make_shared<mrpt::obs::CObservation2DRangeScan>();
+	obs->sensorLabel = m_laser.label;
+	obs->timestamp = mrpt::Clock::fromDouble(s.time);
+	obs->aperture = static_cast<float>(m_laser.aperture);
+	obs->rightToLeft = true;
+	obs->maxRange = static_cast<float>(m_laser.max_range);
+	obs->stdError = static_cast<float>(m_laser.range_noise);
+	obs->sensorPose = mrpt::poses::CPose3D(mount);
+	obs->resizeScan(m_laser.beams);
+	for (size_t i = 0; i < m_laser.beams; i++)
+	{
+		double r = s.exactRanges[i];
+		bool valid = std::isfinite(r);
+		// Always draw both numbers, so the random sequence does not depend
+		// on what each beam hits.
+		const double noise = rng().drawGaussian1D_normalized();
+		const double u = rng().drawUniform(0.0, 1.0);
+		if (valid)
+		{
+			r += m_laser.range_bias + m_laser.range_noise * noise;
+			valid = u >= m_laser.dropout_probability && r >= m_laser.min_range &&
+				r < m_laser.max_range;
+		}
+		obs->setScanRange(
+			i, static_cast<float>(valid ? r : m_laser.max_range));
+		obs->setScanRangeValidity(i, valid);
+	}
+	s.observation = obs;
+	return s;
+}
+
+mrpt::poses::CPose2D Simulator::noisyIncrement(const mrpt::poses::CPose2D& truth)
+{
+	double ex = 0, ey = 0, ephi = 0;
+	if (m_odometry.mode == "perturbed_pairs")
+	{
+		const double a = m_odometry.perturbation_xy, b = m_odometry.perturbation_yaw;
+		if (m_odometry.perturbation == "uniform")
+		{
+			ex = rng().drawUniform(-a, a);
+			ey = rng().drawUniform(-a, a);
+			ephi = rng().drawUniform(-b, b);
+		}
+		else
+		{
+			ex = a * rng().drawGaussian1D_normalized();
+			ey = a * rng().drawGaussian1D_normalized();
+			ephi = b * rng().drawGaussian1D_normalized();
+		}
+	}
+	else if (m_odometry.model == "thrun")
+	{
+		// One draw of MRPT's Thrun model around the truth.
+		mrpt::obs::CActionRobotMovement2D a;
+		auto o = m_odometry.thrunModel();
+		o.thrunModel.nParticlesCount = 1;
+		a.computeFromOdometry(truth, o);
+		mrpt::poses::CPose2D sample;
+		a.drawSingleSample(sample);
+		return sample;
+	}
+	else
+	{
+		// e ~ N(0, C(truth)), C from MRPT's Gaussian model: the reading the
+		// model says the truth is N(reading, C) away from.
+		const auto pdf = m_odometry.gaussian.incrementPdf(truth);
+		Eigen::Matrix3d cov = pdf.cov.asEigen();
+		const Eigen::Matrix3d L = cov.llt().matrixL();
+		Eigen::Vector3d n;
+		for (int i = 0; i < 3; i++) n[i] = rng().drawGaussian1D_normalized();
+		const Eigen::Vector3d e = L * n;
+		ex = e[0];
+		ey = e[1];
+		ephi = e[2];
+	}
+	return {truth.x() + ex, truth.y() + ey,
+		mrpt::math::wrapToPi(truth.phi() + ephi)};
+}
+
+mrpt::serialization::CSerializable::Ptr Simulator::makeAction(
+	const mrpt::poses::CPose2D& reading, double t)
+{
+	mrpt::obs::CActionRobotMovement2D move;
+	if (m_odometry.mode == "perturbed_pairs")
+	{
+		// The noise's own covariance. Stored as a PDF (not as odometry,
+		// which MRPT would rebuild from a motion model on loading).
+		const bool uniform = m_odometry.perturbation == "uniform";
+		const double a = m_odometry.perturbation_xy, b = m_odometry.perturbation_yaw;
+		const double vxy = uniform ? a * a / 3 : a * a;
+		const double vphi = uniform ? b * b / 3 : b * b;
+		mrpt::math::CMatrixDouble33 cov;
+		cov.setZero();
+		cov(0, 0) = cov(1, 1) = vxy;
+		cov(2, 2) = vphi;
+		move.estimationMethod = mrpt::obs::CActionRobotMovement2D::emScan2DMatching;
+		move.rawOdometryIncrementReading = reading;
+		move.poseChange = std::make_shared<mrpt::poses::CPosePDFGaussian>(reading, cov);
+	}
+	else if (m_odometry.model == "thrun")
+	{
+		move.computeFromOdometry(reading, m_odometry.thrunModel());
+	}
+	else
+	{
+		move.computeFromOdometry(reading, m_odometry.gaussian.motionModel());
+	}
+	move.timestamp = mrpt::Clock::fromDouble(t);
+	auto acts = std::make_shared<mrpt::obs::CActionCollection>();
+	acts->insert(move);
+	return acts;
+}
+
+Simulator::Result Simulator::run(
+	const std::string& rawlogPath, const std::string& groundTruthPath,
+	const std::function<void(const SimulatedScan&)>& onScan,
+	const std::function<void(double)>& onProgress)
+{
+	std::unique_ptr<mrpt::io::CStream> file;
+	if (m_sim.compress)
+	{
+		auto gz = std::make_unique<mrpt::io::CFileGZOutputStream>();
+		if (!gz->open(rawlogPath))
+			throw std::runtime_error("cannot write '" + rawlogPath + "'");
+		file = std::move(gz);
+	}
+	else
+	{
+		auto plain = std::make_unique<mrpt::io::CFileOutputStream>();
+		if (!plain->open(rawlogPath))
+			throw std::runtime_error("cannot write '" + rawlogPath + "'");
+		file = std::move(plain);
+	}
+	std::ofstream gt(groundTruthPath);
+	if (!gt) throw std::runtime_error("cannot write '" + groundTruthPath + "'");
+	gt << "# featloc-sim ground truth (TUM format): t x y z qx qy qz qw of the "
+		  "robot at every scan\n";
+	auto arch = mrpt::serialization::archiveFrom(*file);
+
+	Result res;
+	const double end =
+		m_sim.duration > 0 ? m_sim.duration : m_trajectory->duration();
+	const double scanPeriod = 1.0 / m_laser.rate;
+	size_t nScans = static_cast<size_t>(std::floor(end / scanPeriod + 1e-9)) + 1;
+	if (m_sim.max_scans > 0 && nScans > m_sim.max_scans) nScans = m_sim.max_scans;
+	const bool pairs = m_odometry.mode == "perturbed_pairs";
+
+	// Format #2, mode = model: odometry readings at their own rate, running
+	// one period past the last scan so that every scan is bracketed.
+	const double odoPeriod = 1.0 / m_odometry.rate;
+	double nextOdo = 0;
+	mrpt::poses::CPose2D odoPose = m_trajectory->poseAt(0), odoTruePrev = odoPose;
+	bool odoStarted = false;
+	auto writeOdometry = [&](double t, const mrpt::poses::CPose2D& pose) {
+		mrpt::obs::CObservationOdometry o;
+		o.sensorLabel = "ODOMETRY";
+		o.timestamp = mrpt::Clock::fromDouble(m_sim.t0 + t);
+		o.odometry = pose;
+		arch << o;
+		res.odometryReadings++;
+	};
+	auto odometryUntil = [&](double tEnd) {
+		for (; nextOdo <= tEnd + 1e-12; nextOdo += odoPeriod)
+		{
+			const auto truth = m_trajectory->poseAt(nextOdo);
+			if (odoStarted) odoPose = odoPose + noisyIncrement(truth - odoTruePrev);
+			odoStarted = true;
+			odoTruePrev = truth;
+			writeOdometry(nextOdo, odoPose);
+		}
+	};
+
+	mrpt::poses::CPose2D prevTruth;
+	for (size_t k = 0; k < nScans; k++)
+	{
+		const double t = scanPeriod * static_cast<double>(k);
+		const mrpt::poses::CPose2D truth = m_trajectory->poseAt(t);
+		if (m_sim.format == 1)
+		{
+			if (k > 0)
+			{
+				arch << *makeAction(noisyIncrement(truth - prevTruth), m_sim.t0 + t);
+				res.actions++;
+			}
+		}
+		else if (pairs)
+		{
+			if (k > 0) odoPose = odoPose + noisyIncrement(truth - prevTruth);
+			writeOdometry(t, odoPose);
+		}
+		else
+		{
+			odometryUntil(t);
+		}
+		prevTruth = truth;
+
+		const SimulatedScan scan = makeScan(k, t);
+		if (m_sim.format == 1)
+		{
+			mrpt::obs::CSensoryFrame sf;
+			sf.insert(scan.observation);
+			arch << sf;
+		}
+		else
+		{
+			arch << *scan.observation;
+		}
+		gt << tumRow(scan.time, scan.robot);
+		if (onScan) onScan(scan);
+		if (onProgress) onProgress(static_cast<double>(k + 1) / static_cast<double>(nScans));
+		res.scans++;
+		res.duration = t;
+	}
+	if (m_sim.format == 2 && !pairs) odometryUntil(res.duration + odoPeriod);
+	res.pathLength = m_trajectory->length();
+	if (!gt) throw std::runtime_error("error writing '" + groundTruthPath + "'");
+	return res;
+}
+}  // namespace featloc
