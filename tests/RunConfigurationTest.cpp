@@ -1,15 +1,13 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/system/string_utils.h>
 
-#include <fstream>
-#include <sstream>
 
 #include "featloc/app/RunConfiguration.h"
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/ConfigError.h"
 #include "featloc/matchers/IcpMatcher.h"
 #include "featloc/registerClasses.h"
+#include "support/DocumentedKeys.h"
 
 using namespace featloc;
 
@@ -130,26 +128,7 @@ TEST(RunConfiguration, BadValuesNameTheirKey)
 TEST(RunConfiguration, EveryKeyIsInTheConfigReferenceDoc)
 {
 	registerClasses();
-	std::ifstream docFile(std::string(FEATLOC_SOURCE_DIR) + "/doc/config-reference.md");
-	ASSERT_TRUE(docFile);
-	std::stringstream ss;
-	ss << docFile.rdbuf();
-	const std::string doc = ss.str();
-
-	mrpt::config::CConfigFileMemory mem;
-	RunConfiguration::defaults().save(mem);
-	std::vector<std::string> sections;
-	mem.getAllSections(sections);
-	for (const auto& s : sections)
-	{
-		EXPECT_NE(doc.find("## [" + s + "]"), std::string::npos) << s;
-		std::vector<std::string> keys;
-		mem.getAllKeys(s, keys);
-		for (auto k : keys)
-		{
-			k = mrpt::system::trim(k);	// saved names are space-padded
-			EXPECT_NE(doc.find("| `" + k + "` |"), std::string::npos)
-				<< "[" << s << "] " << k << " is not in doc/config-reference.md";
-		}
-	}
+	featloc::test::expectEveryKeyDocumented(
+		std::string(FEATLOC_SOURCE_DIR) + "/doc/config-reference.md",
+		[](mrpt::config::CConfigFileBase& c) { RunConfiguration::defaults().save(c); });
 }

@@ -1,13 +1,11 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/system/string_utils.h>
 
-#include <fstream>
-#include <sstream>
 
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/ConfigError.h"
 #include "featloc/sim/SimConfiguration.h"
+#include "support/DocumentedKeys.h"
 #include "support/ErrorMessage.h"
 
 using namespace featloc;
@@ -100,25 +98,7 @@ TEST(SimConfiguration, BadInitialYawIsRejected)
 
 TEST(SimConfiguration, EveryKeyIsInTheSimulatorDoc)
 {
-	std::ifstream docFile(std::string(FEATLOC_SOURCE_DIR) + "/doc/simulator.md");
-	ASSERT_TRUE(docFile);
-	std::stringstream ss;
-	ss << docFile.rdbuf();
-	const std::string doc = ss.str();
-	mrpt::config::CConfigFileMemory mem;
-	SimConfiguration().saveSettings(mem);
-	std::vector<std::string> sections;
-	mem.getAllSections(sections);
-	for (const auto& s : sections)
-	{
-		EXPECT_NE(doc.find("## [" + s + "]"), std::string::npos) << s;
-		std::vector<std::string> keys;
-		mem.getAllKeys(s, keys);
-		for (auto k : keys)
-		{
-			k = mrpt::system::trim(k);
-			EXPECT_NE(doc.find("| `" + k + "` |"), std::string::npos)
-				<< "[" << s << "] " << k << " is not in doc/simulator.md";
-		}
-	}
+	featloc::test::expectEveryKeyDocumented(
+		std::string(FEATLOC_SOURCE_DIR) + "/doc/simulator.md",
+		[](mrpt::config::CConfigFileBase& c) { SimConfiguration().saveSettings(c); });
 }

@@ -39,7 +39,11 @@ int guardedMain(const char* appName, const std::function<int()>& body)
 }  // namespace featloc
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFileMemory.h>
 
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
 #include <string>
 
 namespace featloc
@@ -55,5 +59,21 @@ bool parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv, int& exitCode)
 		if (a == "-h" || a == "--help" || a == "--version") exitCode = 0;
 	}
 	return false;
+}
+}  // namespace featloc
+
+namespace featloc
+{
+void writeReferenceConfig(
+	const std::string& path, const std::string& header,
+	const std::function<void(mrpt::config::CConfigFileBase&)>& save)
+{
+	mrpt::config::CConfigFileMemory mem;
+	save(mem);
+	std::ofstream f(path);
+	if (!f) throw std::runtime_error("cannot write '" + path + "'");
+	f << header << mem.getContent();
+	if (!f) throw std::runtime_error("error writing '" + path + "'");
+	std::printf("wrote %s\n", path.c_str());
 }
 }  // namespace featloc

@@ -108,15 +108,9 @@ int RunApp::main(int argc, char** argv)
 
 	if (argWriteConfig.isSet())
 	{
-		mrpt::config::CConfigFileMemory mem;
-		RunConfiguration::defaults().save(mem);
-		std::ofstream f(argWriteConfig.getValue());
-		if (!f)
-			throw std::runtime_error(
-				"cannot write '" + argWriteConfig.getValue() + "'");
-		f << "# featloc reference configuration: every key with its default.\n"
-		  << mem.getContent();
-		std::printf("wrote %s\n", argWriteConfig.getValue().c_str());
+		writeReferenceConfig(argWriteConfig.getValue(),
+			"# featloc reference configuration: every key with its default.\n",
+			[](mrpt::config::CConfigFileBase& c) { RunConfiguration::defaults().save(c); });
 		return 0;
 	}
 	const auto& files = argFiles.getValue();

@@ -55,16 +55,11 @@ int SimApp::main(int argc, char** argv)
 
 	if (argWriteConfig.isSet())
 	{
-		mrpt::config::CConfigFileMemory mem;
-		SimConfiguration().saveSettings(mem);
-		std::ofstream f(argWriteConfig.getValue());
-		if (!f)
-			throw std::runtime_error("cannot write '" + argWriteConfig.getValue() + "'");
-		f << "# featloc-sim settings: every key with its default. Add\n"
-			 "# [Wall.<name>], [Obstacle.<name>] and [Agent.<name>] sections\n"
-			 "# (doc/simulator.md).\n"
-		  << mem.getContent();
-		std::printf("wrote %s\n", argWriteConfig.getValue().c_str());
+		writeReferenceConfig(argWriteConfig.getValue(),
+			"# featloc-sim settings: every key with its default. Add\n"
+			"# [Wall.<name>], [Obstacle.<name>] and [Agent.<name>] sections\n"
+			"# (doc/simulator.md).\n",
+			[](mrpt::config::CConfigFileBase& c) { SimConfiguration().saveSettings(c); });
 		return 0;
 	}
 	if (argWorld.getValue().empty()) throw UsageError("missing WORLD (the world file)");

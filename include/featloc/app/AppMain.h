@@ -1,5 +1,11 @@
 #pragma once
 #include <functional>
+#include <string>
+
+namespace mrpt::config
+{
+class CConfigFileBase;
+}
 
 namespace TCLAP
 {
@@ -17,4 +23,10 @@ int guardedMain(const char* appName, const std::function<int()>& body);
  * program must stop: `exitCode` is then 0 after --help/--version and 2
  * after a usage error (TCLAP has already printed the usage). */
 bool parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv, int& exitCode);
+
+/** The --write-config option of the apps: `save` fills a configuration
+ * that is written to `path` after the '#' comment `header`. */
+void writeReferenceConfig(
+	const std::string& path, const std::string& header,
+	const std::function<void(mrpt::config::CConfigFileBase&)>& save);
 }  // namespace featloc
