@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "featloc/matchers/IcpMatcher.h"
+#include "featloc/matchers/PcmFeatureMatcher.h"
 #include "featloc/matchers/ScanMatcher.h"
 
 namespace featloc
@@ -24,6 +25,7 @@ void registerClasses()
 
 		mrpt::rtti::registerClass(CLASS_ID(ScanMatcher));
 		mrpt::rtti::registerClass(CLASS_ID(IcpMatcher));
+		mrpt::rtti::registerClass(CLASS_ID(PcmFeatureMatcher));
 	});
 }
 }  // namespace featloc

@@ -1,0 +1,102 @@
+#pragma once
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <utility>
+#include <vector>
+
+#include "featloc/features/ScanFeature.h"
+#include "featloc/scan/ScanPoints.h"
+
+namespace featloc
+{
+/** Borges & Aldon's scan features: linear and ellipsoidal clusters.
+ *
+ * The paper extracts lines with a fuzzy-clustering split-and-merge whose
+ * details it does not give. This class implements split-and-merge with a
+ * clustering refinement:
+ *  1. segmentation: consecutive points (in bearing order) closer than
+ *     max_point_gap form a cluster;
+ *  2. split: a run is split at the point farthest from its end-to-end chord
+ *     while that distance exceeds the cluster's threshold (iterative
+ *     end-point fit). The threshold adapts to the noise:
+ *     max(split_distance_min, split_sigmas * s), where s is the cluster's
+ *     point noise estimated robustly from second differences (the distance
+ *     of each point to the chord of its two neighbours has variance
+ *     1.5 s^2; s = 1.4826 median / sqrt(1.5)). A fixed threshold either
+ *     shreds noisy walls or keeps corners seen at grazing incidence as one
+ *     "line" whose foot point then depends on the viewpoint;
+ *  3. merge: neighbouring runs whose joint TLS line has an RMS residual
+ *     below merge_sigmas times the cluster's noise estimate (and below
+ *     max_line_sigma) are merged, so a single noise spike that caused a
+ *     split does not keep a straight wall in pieces (pieces split at an
+ *     extreme point are biased beyond their covariance);
+ *  4. refinement (hard c-lines clustering along the scan): each point at a
+ *     boundary between two neighbouring runs goes to the line it is closer
+ *     to, lines are refitted, until nothing moves (refine_iterations at
+ *     most);
+ *  5. end trimming: end points farther than trim_sigmas times the
+ *     cluster's robust noise estimate from the run's line are dropped and
+ *     the line refitted (points of an adjoining wall seen at grazing
+ *     incidence would otherwise tilt it);
+ *  6. selection, as in the paper: lines with sigma <= max_line_sigma, at
+ *     least min_points points and min_length long; those up to
+ *     ellipse_max_length long become ellipsoidal clusters (centre of
+ *     gravity), longer ones linear clusters.
+ *
+ * Feature covariances: the scan's range noise s_r is estimated once,
+ * pooled over every feature's points (a point at incidence theta lies
+ * s_r |cos theta| off its line), so each point's perpendicular variance is
+ * s_r^2 cos^2(theta) (at least min_point_sigma^2; a feature that fits more
+ * than twice worse than predicted keeps its own residual variance). The
+ * unweighted TLS fit then has var(alpha) = sum s_k^2 v_k / (sum s_k^2)^2,
+ * and (rho, alpha) is propagated to the foot point. An ellipse centroid gets
+ * s_r^2 / n plus (ellipse_shape_sigma_ratio * length)^2 for the shift of
+ * the visible part of an object between viewpoints. Estimating each line's
+ * noise from its own few residuals instead would make the covariance
+ * over-confident whenever that estimate comes out low by chance. */
+class LineEllipseExtractor
+{
+   public:
+	struct Parameters : public mrpt::config::CLoadableOptions
+	{
+		double max_point_gap = 0.5;	 //!< [m] segmentation
+		double split_distance_min = 0.02;  //!< [m] split/merge threshold floor
+		double split_sigmas = 4;  //!< threshold in estimated noise sigmas
+		double trim_sigmas = 3;	 //!< end trimming, in estimated noise sigmas
+		double merge_sigmas = 1.5;	//!< merge test, in estimated noise sigmas
+		double max_line_sigma = 0.05;  //!< [m] sigma of eq. (8)
+		unsigned int min_points = 5;
+		double min_length = 0.2;  //!< [m]
+		double ellipse_max_length = 0.5;  //!< [m]
+		unsigned int refine_iterations = 5;
+		double min_point_sigma = 0.003;	 //!< [m] floor of the noise estimate
+		double ellipse_shape_sigma_ratio = 0.1;
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& c,
+			const std::string& s) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& c,
+			const std::string& s) const override;
+	};
+
+	Parameters params;
+
+	/** Replaces `out` with the features of `scan` (reusing its storage). */
+	void extract(const ScanPoints& scan, std::vector<ScanFeature>& out);
+
+   private:
+	using Run = std::pair<size_t, size_t>;	//!< [first, last] point indices
+	/** Robust point noise of a cluster (see step 2). */
+	double noiseOf(const ScanPoints& s, size_t first, size_t last);
+	void split(const ScanPoints& s, size_t first, size_t last, double noise);
+	void mergeRuns(const ScanPoints& s);
+	void setCovariances(const ScanPoints& s, std::vector<ScanFeature>& features) const;
+	void refine(const ScanPoints& s);
+
+	std::vector<Run> m_runs;  // reused buffers: no allocation per call
+	std::vector<double> m_runNoise;	 //!< per run: its cluster's noise
+	std::vector<Run> m_stack;
+	std::vector<double> m_deviations;
+};
+}  // namespace featloc

@@ -1,0 +1,386 @@
+#include "featloc/features/LineEllipseExtractor.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "featloc/config/ConfigValues.h"
+#include "featloc/features/LineFit.h"
+
+namespace featloc
+{
+namespace
+{
+double gap(const ScanPoint& a, const ScanPoint& b)
+{
+	return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+/** Distance of p to the chord a-b. */
+double chordDistance(const ScanPoint& a, const ScanPoint& b, const ScanPoint& p)
+{
+	const double ex = b.x - a.x, ey = b.y - a.y;
+	const double len = std::hypot(ex, ey);
+	if (len < 1e-12) return gap(a, p);
+	return std::abs(ex * (p.y - a.y) - ey * (p.x - a.x)) / len;
+}
+
+LineFit fitRun(const ScanPoints& s, size_t first, size_t last)
+{
+	return LineFit::fit(&s.points[first], last - first + 1);
+}
+}  // namespace
+
+void LineEllipseExtractor::Parameters::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace featloc::config;
+	read(c, s, "max_point_gap", max_point_gap);
+	read(c, s, "split_distance_min", split_distance_min);
+	read(c, s, "split_sigmas", split_sigmas);
+	read(c, s, "trim_sigmas", trim_sigmas);
+	read(c, s, "merge_sigmas", merge_sigmas);
+	read(c, s, "max_line_sigma", max_line_sigma);
+	read(c, s, "min_points", min_points);
+	read(c, s, "min_length", min_length);
+	read(c, s, "ellipse_max_length", ellipse_max_length);
+	read(c, s, "refine_iterations", refine_iterations);
+	read(c, s, "min_point_sigma", min_point_sigma);
+	read(c, s, "ellipse_shape_sigma_ratio", ellipse_shape_sigma_ratio);
+	require(max_point_gap > 0, c, s, "max_point_gap", "> 0");
+	require(split_distance_min > 0, c, s, "split_distance_min", "> 0");
+	require(split_sigmas >= 0, c, s, "split_sigmas", ">= 0");
+	require(trim_sigmas > 0, c, s, "trim_sigmas", "> 0");
+	require(merge_sigmas > 0, c, s, "merge_sigmas", "> 0");
+	require(max_line_sigma > 0, c, s, "max_line_sigma", "> 0");
+	require(min_points >= 3, c, s, "min_points", ">= 3");
+	require(min_length >= 0, c, s, "min_length", ">= 0");
+	require(ellipse_max_length >= 0, c, s, "ellipse_max_length", ">= 0");
+	require(min_point_sigma > 0, c, s, "min_point_sigma", "> 0");
+	require(ellipse_shape_sigma_ratio >= 0, c, s, "ellipse_shape_sigma_ratio", ">= 0");
+}
+
+void LineEllipseExtractor::Parameters::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	using namespace featloc::config;
+	write(c, s, "max_point_gap", max_point_gap,
+		"[m] features: consecutive points farther apart start a new cluster");
+	write(c, s, "split_distance_min", split_distance_min,
+		"[m] features: split where a point is farther than max(this, split_sigmas * noise) from the chord");
+	write(c, s, "split_sigmas", split_sigmas,
+		"features: split threshold in units of the cluster's estimated point noise");
+	write(c, s, "trim_sigmas", trim_sigmas,
+		"features: drop line end points farther than this many noise sigmas");
+	write(c, s, "merge_sigmas", merge_sigmas,
+		"features: merge neighbouring runs whose joint RMS residual is below this many noise sigmas");
+	write(c, s, "max_line_sigma", max_line_sigma,
+		"[m] features: max RMS residual of a line, eq. (8)");
+	write(c, s, "min_points", min_points, "features: min points of a line");
+	write(c, s, "min_length", min_length, "[m] features: min length of a line");
+	write(c, s, "ellipse_max_length", ellipse_max_length,
+		"[m] features: lines up to this long become ellipsoidal clusters");
+	write(c, s, "refine_iterations", refine_iterations,
+		"features: boundary re-assignment passes (clustering refinement)");
+	write(c, s, "min_point_sigma", min_point_sigma,
+		"[m] features: floor of the point noise estimated from a fit");
+	write(c, s, "ellipse_shape_sigma_ratio", ellipse_shape_sigma_ratio,
+		"features: ellipse centroid sigma added per metre of its length");
+}
+
+double LineEllipseExtractor::noiseOf(const ScanPoints& s, size_t first, size_t last)
+{
+	m_deviations.clear();
+	for (size_t k = first + 1; k < last; k++)
+		m_deviations.push_back(chordDistance(s.points[k - 1], s.points[k + 1], s.points[k]));
+	double noise = 0;
+	if (!m_deviations.empty())
+	{
+		auto mid = m_deviations.begin() + static_cast<long>(m_deviations.size() / 2);
+		std::nth_element(m_deviations.begin(), mid, m_deviations.end());
+		noise = 1.4826 * *mid / std::sqrt(1.5);
+	}
+	return noise;
+}
+
+void LineEllipseExtractor::split(
+	const ScanPoints& s, size_t first, size_t last, double noise)
+{
+	const double threshold = std::max(params.split_distance_min, params.split_sigmas * noise);
+	// Iterative end-point fit with an explicit stack (no recursion).
+	m_stack.clear();
+	m_stack.emplace_back(first, last);
+	while (!m_stack.empty())
+	{
+		const auto [a, b] = m_stack.back();
+		m_stack.pop_back();
+		double worst = 0;
+		size_t at = a;
+		for (size_t k = a + 1; k < b; k++)
+		{
+			const double d = chordDistance(s.points[a], s.points[b], s.points[k]);
+			if (d > worst)
+			{
+				worst = d;
+				at = k;
+			}
+		}
+		if (worst > threshold)
+		{
+			// Second half first on the stack so runs come out in order.
+			m_stack.emplace_back(at, b);
+			m_stack.emplace_back(a, at);
+		}
+		else
+		{
+			m_runs.emplace_back(a, b);
+			m_runNoise.push_back(noise);
+		}
+	}
+}
+
+void LineEllipseExtractor::mergeRuns(const ScanPoints& s)
+{
+	bool merged = true;
+	while (merged)
+	{
+		merged = false;
+		for (size_t r = 0; r + 1 < m_runs.size(); r++)
+		{
+			auto& A = m_runs[r];
+			const auto& B = m_runs[r + 1];
+			// Only runs of the same cluster (sharing or adjacent points).
+			if (B.first > A.second + 1) continue;
+			if (gap(s.points[A.second], s.points[B.first]) > params.max_point_gap)
+				continue;
+			// One line if the joint fit is as good as the noise allows: a
+			// single noise spike (which may have caused the split) must not
+			// keep a straight wall in pieces.
+			const LineFit f = fitRun(s, A.first, B.second);
+			const double noise = std::max(m_runNoise[r], params.min_point_sigma);
+			if (f.sigma <= params.merge_sigmas * noise && f.sigma <= params.max_line_sigma)
+			{
+				A.second = B.second;
+				m_runs.erase(m_runs.begin() + static_cast<long>(r) + 1);
+				m_runNoise.erase(m_runNoise.begin() + static_cast<long>(r) + 1);
+				merged = true;
+			}
+		}
+	}
+}
+
+void LineEllipseExtractor::refine(const ScanPoints& s)
+{
+	for (unsigned it = 0; it < params.refine_iterations; it++)
+	{
+		bool moved = false;
+		for (size_t r = 0; r + 1 < m_runs.size(); r++)
+		{
+			auto& A = m_runs[r];
+			auto& B = m_runs[r + 1];
+			if (B.first > A.second + 1) continue;  // not neighbours
+			if (A.second - A.first < 2 || B.second - B.first < 2) continue;
+			const LineFit fa = fitRun(s, A.first, A.second);
+			const LineFit fb = fitRun(s, B.first, B.second);
+			// Split runs share their boundary point: give it (and its
+			// neighbours, one at a time) to the closer line.
+			auto closerToB = [&](size_t k) {
+				return std::abs(fb.residual(s.points[k].x, s.points[k].y)) <
+					std::abs(fa.residual(s.points[k].x, s.points[k].y));
+			};
+			if (A.second >= B.first)  // shared boundary point
+			{
+				const size_t k = A.second;
+				if (closerToB(k))
+					A.second = k - 1;
+				else
+					B.first = k + 1;
+				moved = true;
+				continue;
+			}
+			if (closerToB(A.second))
+			{
+				B.first = A.second;
+				A.second--;
+				moved = true;
+			}
+			else if (!closerToB(B.first))
+			{
+				A.second = B.first;
+				B.first++;
+				moved = true;
+			}
+		}
+		if (!moved) break;
+	}
+}
+
+void LineEllipseExtractor::extract(const ScanPoints& s, std::vector<ScanFeature>& out)
+{
+	out.clear();
+	m_runs.clear();
+	m_runNoise.clear();
+	const size_t n = s.size();
+	// 1. Clusters of consecutive close points, 2. split each.
+	for (size_t start = 0; start < n;)
+	{
+		size_t end = start;
+		while (end + 1 < n && gap(s.points[end], s.points[end + 1]) <= params.max_point_gap)
+			end++;
+		if (end > start) split(s, start, end, noiseOf(s, start, end));
+		start = end + 1;
+	}
+	mergeRuns(s);  // 3.
+	refine(s);	// 4.
+
+	for (size_t r = 0; r < m_runs.size(); r++)
+	{
+		auto [a, b] = m_runs[r];
+		if (b - a + 1 < params.min_points) continue;
+		// 5. Trim ends that do not belong to the line.
+		const double trim =
+			params.trim_sigmas * std::max(m_runNoise[r], params.min_point_sigma);
+		LineFit f = fitRun(s, a, b);
+		while (b - a + 1 > params.min_points)
+		{
+			const double ra = std::abs(f.residual(s.points[a].x, s.points[a].y));
+			const double rb = std::abs(f.residual(s.points[b].x, s.points[b].y));
+			if (std::max(ra, rb) <= trim) break;
+			if (ra >= rb)
+				a++;
+			else
+				b--;
+			f = fitRun(s, a, b);
+		}
+		// 6. Selection.
+		if (f.sigma > params.max_line_sigma || f.length < params.min_length) continue;
+
+		ScanFeature feat;
+		feat.firstPoint = static_cast<uint32_t>(a);
+		feat.lastPoint = static_cast<uint32_t>(b);
+		feat.length = f.length;
+		feat.sigma = f.sigma;
+		feat.rho = f.rho;
+		feat.alpha = f.alpha;
+		if (f.length <= params.ellipse_max_length)
+		{
+			feat.kind = ScanFeature::Kind::Ellipse;
+			feat.x = f.cx;
+			feat.y = f.cy;
+			feat.a2 = feat.b2 = 1;
+			feat.c = 0;
+		}
+		else
+		{
+			feat.kind = ScanFeature::Kind::Line;
+			const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
+			feat.x = f.rho * ca;
+			feat.y = f.rho * sa;
+			feat.a2 = ca * ca;
+			feat.b2 = sa * sa;
+			feat.c = ca * sa;
+		}
+		out.push_back(feat);
+	}
+	setCovariances(s, out);
+}
+
+void LineEllipseExtractor::setCovariances(
+	const ScanPoints& s, std::vector<ScanFeature>& features) const
+{
+	// Range noise of the scan, pooled over every feature's points: a point
+	// at incidence theta to its line (theta between the beam and the
+	// line's normal) is off the line by range noise times |cos theta|.
+	// Hundreds of points make this estimate steady; a feature's own few
+	// residuals would not (an under-estimate by chance makes the
+	// covariance over-confident).
+	double sumR2 = 0, sumC2 = 0;
+	size_t points = 0;
+	for (const auto& f : features)
+	{
+		const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
+		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
+		{
+			const auto& p = s.points[k];
+			const double r = f.rho - p.x * ca - p.y * sa;
+			const double cosT = (p.x * ca + p.y * sa) / p.range;
+			sumR2 += r * r;
+			sumC2 += cosT * cosT;
+		}
+		points += f.lastPoint - f.firstPoint + 1;
+	}
+	const size_t dof = points > 2 * features.size() ? points - 2 * features.size() : 0;
+	const double pooled2 = dof > 0 && sumC2 > 0
+		? sumR2 / sumC2 * static_cast<double>(points) / static_cast<double>(dof)
+		: 0;
+	const double floor2 = params.min_point_sigma * params.min_point_sigma;
+
+	for (auto& f : features)
+	{
+		const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
+		const size_t n = f.lastPoint - f.firstPoint + 1;
+		const double dn = static_cast<double>(n);
+		// Per-point perpendicular variances v_k; a feature fitting much worse
+		// than the scan's noise predicts (a curved or cluttered surface)
+		// keeps its own, larger residual variance.
+		double sumV = 0, sumS2 = 0, sumSV = 0, sumS2V = 0, predicted = 0;
+		double cxm = 0, cym = 0;
+		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
+		{
+			cxm += s.points[k].x;
+			cym += s.points[k].y;
+		}
+		cxm /= dn;
+		cym /= dn;
+		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
+		{
+			const auto& p = s.points[k];
+			const double cosT = (p.x * ca + p.y * sa) / p.range;
+			predicted += std::max(floor2, pooled2 * cosT * cosT);
+		}
+		predicted /= dn;
+		const double own = f.sigma * f.sigma * dn / (dn - 2);
+		const double inflate = own > 2 * predicted ? own / predicted : 1.0;
+		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
+		{
+			const auto& p = s.points[k];
+			const double cosT = (p.x * ca + p.y * sa) / p.range;
+			const double v = inflate * std::max(floor2, pooled2 * cosT * cosT);
+			const double sk = -(p.x - cxm) * sa + (p.y - cym) * ca;
+			sumV += v;
+			sumS2 += sk * sk;
+			sumSV += sk * v;
+			sumS2V += sk * sk * v;
+		}
+		if (f.kind == ScanFeature::Kind::Ellipse)
+		{
+			// Centroid: the points' noise (along their beams, taken
+			// isotropic here) averaged, plus the shift of the visible part
+			// of an object between viewpoints.
+			const double shape = params.ellipse_shape_sigma_ratio * f.length;
+			const double var = inflate * std::max(floor2, pooled2) / dn + shape * shape;
+			f.cxx = f.cyy = var;
+			f.cxy = 0;
+			continue;
+		}
+		// Unweighted TLS with perpendicular errors e_k of variances v_k: a
+		// point at s_k along the line (from the centroid) is off the fitted
+		// line by e_k + (s_c + s_k) d(alpha) - d(rho), so the fit gives
+		// d(alpha) = -sum s_k e_k / sum s_k^2 and d(rho) = mean(e) + s_c d(alpha)
+		// (s_c = centroid . u, u = (-sin alpha, cos alpha)). The mean error
+		// and the tilt are correlated when v_k varies along the line.
+		const double sc = -cxm * sa + cym * ca;
+		const double vA = sumS2V / (sumS2 * sumS2);
+		const double cEA = -sumSV / (dn * sumS2);
+		const double vR = sumV / (dn * dn) + 2 * sc * cEA + sc * sc * vA;
+		const double cRA = cEA + sc * vA;
+		f.varRho = vR;
+		f.varAlpha = vA;
+		f.covRhoAlpha = cRA;
+		// Foot point f = rho n(alpha): df = n drho + rho u dalpha.
+		const double nx = ca, ny = sa, ux = -sa * f.rho, uy = ca * f.rho;
+		f.cxx = nx * nx * vR + 2 * nx * ux * cRA + ux * ux * vA;
+		f.cxy = nx * ny * vR + (nx * uy + ny * ux) * cRA + ux * uy * vA;
+		f.cyy = ny * ny * vR + 2 * ny * uy * cRA + uy * uy * vA;
+	}
+}
+}  // namespace featloc

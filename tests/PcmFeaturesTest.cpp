@@ -1,0 +1,164 @@
+// Borges & Aldon feature extraction and the quartic solver.
+#include <gtest/gtest.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <cmath>
+
+#include "featloc/features/LineEllipseExtractor.h"
+#include "featloc/features/LineFit.h"
+#include "featloc/math/PolynomialRoots.h"
+#include "support/SyntheticRoom.h"
+
+using namespace featloc;
+using featloc::test::SyntheticRoom;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+ScanPoints pointsOn(double rho, double alpha, double s0, double s1, size_t n, double noise,
+	mrpt::random::CRandomGenerator& rng)
+{
+	ScanPoints out;
+	const double ca = std::cos(alpha), sa = std::sin(alpha);
+	for (size_t k = 0; k < n; k++)
+	{
+		const double s = s0 + (s1 - s0) * static_cast<double>(k) / static_cast<double>(n - 1);
+		const double e = noise * rng.drawGaussian1D_normalized();
+		ScanPoint p;
+		p.x = (rho + e) * ca - s * sa;
+		p.y = (rho + e) * sa + s * ca;
+		p.range = std::hypot(p.x, p.y);
+		p.bearing = std::atan2(p.y, p.x);
+		out.points.push_back(p);
+	}
+	return out;
+}
+
+}  // namespace
+
+TEST(LineFit, ExactOnCollinearPointsAndSigmaIsTheResidualRms)
+{
+	mrpt::random::CRandomGenerator rng(1);
+	const auto exact = pointsOn(2.5, 0.7, -1, 1, 50, 0, rng);
+	const LineFit f = LineFit::fit(exact.points.data(), exact.size());
+	EXPECT_NEAR(f.rho, 2.5, 1e-12);
+	EXPECT_NEAR(f.alpha, 0.7, 1e-12);
+	EXPECT_NEAR(f.sigma, 0, 1e-12);
+	EXPECT_NEAR(f.length, 2.0, 1e-12);
+	// A line behind the origin still gets rho >= 0 (alpha flipped).
+	const auto behind = pointsOn(-1.5, 0.3, -1, 1, 20, 0, rng);
+	const LineFit g = LineFit::fit(behind.points.data(), behind.size());
+	EXPECT_NEAR(g.rho, 1.5, 1e-12);
+	EXPECT_NEAR(std::cos(g.alpha), -std::cos(0.3), 1e-12);
+	// Noise: sigma estimates it (eq. 8), alpha within its predicted spread.
+	const auto noisy = pointsOn(3, -1.2, -2, 2, 400, 0.01, rng);
+	const LineFit h = LineFit::fit(noisy.points.data(), noisy.size());
+	EXPECT_NEAR(h.sigma, 0.01, 0.0015);
+	EXPECT_LT(std::abs(h.alpha + 1.2), 4 * 0.01 / std::sqrt(h.sumS2));
+}
+
+TEST(LineEllipseExtractor, RoomWallsBecomeLinesAndSmallObjectsEllipses)
+{
+	SyntheticRoom room;
+	room.add(-4, -3, 4, -3);  // walls: rho = 3 at alpha = -90 deg, ...
+	room.add(4, -3, 4, 3);
+	room.add(4, 3, -4, 3);
+	room.add(-4, 3, -4, -3);
+	room.add(2.0, 1.0, 2.4, 1.0);  // a 0.4 m box side facing the sensor
+	room.add(-1.0, -1.5, -0.9, -1.5);  // a 0.1 m stub: too short for anything
+	const auto scan = room.scan(CPose2D(), CPose2D(), 721, 2 * M_PI - 0.01, 30);
+	LineEllipseExtractor ex;
+	std::vector<ScanFeature> fs;
+	ex.extract(ScanPoints::fromScan(*scan), fs);
+
+	// Every line is one of the four walls (a wall cut by an occluder or by
+	// the scan's seam gives several lines, all with its parameters); every
+	// wall is found; the 0.4 m box side is the one ellipsoidal cluster and
+	// the 0.1 m stub gives nothing.
+	const std::vector<std::pair<double, double>> walls = {
+		{3, -M_PI / 2}, {4, 0}, {3, M_PI / 2}, {4, M_PI}};
+	std::vector<int> found(walls.size(), 0);
+	size_t ellipses = 0;
+	for (const auto& f : fs)
+	{
+		if (f.kind == ScanFeature::Kind::Ellipse)
+		{
+			ellipses++;
+			// The box side seen from the origin: centroid of its samples
+			// (denser towards the near end, hence below the middle 2.2).
+			EXPECT_NEAR(f.y, 1.0, 1e-6);
+			EXPECT_NEAR(f.x, 2.2, 0.03);
+			EXPECT_EQ(f.a2, 1);
+			EXPECT_EQ(f.c, 0);
+			continue;
+		}
+		bool isWall = false;
+		for (size_t w = 0; w < walls.size(); w++)
+		{
+			const auto [rho, alpha] = walls[w];
+			if (std::abs(f.rho - rho) > 1e-5 || std::cos(f.alpha - alpha) < 1 - 1e-9) continue;
+			// Scans store ranges as floats: exact to ~1e-7 relative.
+			EXPECT_NEAR(f.a2, std::cos(alpha) * std::cos(alpha), 1e-6);
+			EXPECT_NEAR(f.x, rho * std::cos(alpha), 1e-5);
+			EXPECT_NEAR(f.y, rho * std::sin(alpha), 1e-5);
+			EXPECT_GT(f.length, 0.5);
+			found[w]++;
+			isWall = true;
+		}
+		EXPECT_TRUE(isWall) << "line rho " << f.rho << " alpha " << f.alpha;
+	}
+	for (size_t w = 0; w < walls.size(); w++) EXPECT_GE(found[w], 1) << "wall " << w;
+	EXPECT_EQ(ellipses, 1u);
+}
+
+TEST(LineEllipseExtractor, NoisyLinesAndGapsAndClutter)
+{
+	mrpt::random::CRandomGenerator rng(3);
+	ScanPoints s = pointsOn(2.0, 0.0, -1.5, 1.5, 120, 0.01, rng);  // a wall
+	// A leg-like blob: 3 points, far from the wall (a gap > 0.5 m).
+	for (double dy : {0.0, 0.03, 0.06})
+	{
+		ScanPoint p;
+		p.x = 0.8;
+		p.y = 2.0 + dy;
+		s.points.push_back(p);
+	}
+	LineEllipseExtractor ex;
+	std::vector<ScanFeature> fs;
+	ex.extract(s, fs);
+	ASSERT_EQ(fs.size(), 1u);  // the blob has fewer than min_points
+	EXPECT_EQ(fs[0].kind, ScanFeature::Kind::Line);
+	EXPECT_NEAR(fs[0].rho, 2.0, 0.005);
+	EXPECT_NEAR(fs[0].sigma, 0.01, 0.003);
+	// The covariance of the foot point: var(rho) along the normal.
+	EXPECT_NEAR(std::sqrt(fs[0].cxx), 0.01 / std::sqrt(120.0), 0.0006);
+	// Too noisy for a line: rejected (sigma > max_line_sigma).
+	ScanPoints rough = pointsOn(2.0, 0.0, -1.5, 1.5, 120, 0.12, rng);
+	ex.params.split_distance_min = 10;	// do not split, test the sigma gate
+	ex.extract(rough, fs);
+	EXPECT_TRUE(fs.empty());
+}
+
+TEST(PolynomialRoots, KnownRoots)
+{
+	// (z - 0.5)(z + 0.3)(z - 2)(z - 0.9) = z^4 - 3.1 z^3 + 2.23 z^2 + 0.075 z - 0.27
+	auto r = PolynomialRoots::real({-0.27, 0.075, 2.23, -3.1, 1});
+	ASSERT_EQ(r.size(), 4u);
+	EXPECT_NEAR(r[0], -0.3, 1e-10);
+	EXPECT_NEAR(r[1], 0.5, 1e-10);
+	EXPECT_NEAR(r[2], 0.9, 1e-10);
+	EXPECT_NEAR(r[3], 2.0, 1e-10);
+	// (z^2 + 1)(z - 0.25): one real root.
+	r = PolynomialRoots::real({-0.25, 1, -0.25, 1, 0});
+	ASSERT_EQ(r.size(), 1u);
+	EXPECT_NEAR(r[0], 0.25, 1e-12);
+	// Degree drops when leading coefficients vanish; zero polynomial: none.
+	r = PolynomialRoots::real({-2, 4, 0, 0, 0});
+	ASSERT_EQ(r.size(), 1u);
+	EXPECT_NEAR(r[0], 0.5, 1e-15);
+	EXPECT_TRUE(PolynomialRoots::real({0, 0, 0, 0, 0}).empty());
+	// A double root is reported once.
+	r = PolynomialRoots::real({0.25, -1, 1});
+	ASSERT_EQ(r.size(), 1u);
+	EXPECT_NEAR(r[0], 0.5, 1e-6);
+}
