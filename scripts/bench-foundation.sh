@@ -8,12 +8,8 @@
 #     the two trajectories are (no ground truth exists for this log).
 # Prints Markdown tables. Usage: scripts/bench-foundation.sh [OUTDIR]
 set -euo pipefail
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$ROOT/scripts/setup.sh" >/dev/null
-"$ROOT/scripts/build.sh" >/dev/null
-BIN="${FEATLOC_BUILD_DIR:-$ROOT/build}/bin"
-OUT="${1:-$(mktemp -d /tmp/featloc-bench-XXXXXX)}"
-mkdir -p "$OUT"
+source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
+bench_init bench "$@"
 DATA=/usr/share/mrpt/datasets
 SIMUL="$DATA/graphslam-engine-demos/action_observations_map/simul.rawlog"
 MALAGA="$DATA/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog"
@@ -23,9 +19,8 @@ run() { # name, rawlog, extra args...
   "$BIN/featloc-run" "$ROOT/config.ini" "$rawlog" --out "$OUT/$name" -q "$@" > "$OUT/$name.log"
 }
 field() { jq -r "$2" "$OUT/$1/summary.json"; }
-fmt() { printf "%.${2:-3}f" "$1"; }
 
-echo "machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p'), $(date -u +%Y-%m-%d)"
+machine_line
 echo
 echo "### simul.rawlog (MRPT, 1733 scans, exact ground truth)"
 echo

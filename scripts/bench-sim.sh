@@ -7,15 +7,10 @@
 #     (IcpMatcher, config.ini) modes against their exact ground truth.
 # Prints Markdown. Usage: scripts/bench-sim.sh [OUTDIR]
 set -euo pipefail
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$ROOT/scripts/setup.sh" >/dev/null
-"$ROOT/scripts/build.sh" >/dev/null
-BIN="${FEATLOC_BUILD_DIR:-$ROOT/build}/bin"
-OUT="${1:-$(mktemp -d /tmp/featloc-bench-sim-XXXXXX)}"
-mkdir -p "$OUT"
-fmt() { printf "%.${2:-3}f" "$1"; }
+source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
+bench_init bench-sim "$@"
 
-echo "machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p'), $(date -u +%Y-%m-%d)"
+machine_line
 echo
 echo "### featloc-sim speed (1081 beams, 200 segments)"
 echo

@@ -378,3 +378,34 @@ TEST(FeatlocRun, ShippedSimulatedScenesAgainstTheirGroundTruth)
 	EXPECT_GT(labOdo, 0.08);
 	EXPECT_LT(labIcp, 0.05);
 }
+
+TEST(FeatlocBench, PaperProtocolTableOnASimulatedScene)
+{
+	TempDir dir;
+	const std::string sim = std::string(FEATLOC_SOURCE_DIR) + "/rawlogs/sim/";
+	const CommandResult r = runCommand(
+		shellQuote(FEATLOC_BENCH_EXE) + " " + shellQuote(kConfig) + " " +
+		shellQuote(sim + "lab.rawlog") + " -g " + shellQuote(sim + "lab.gt.txt") +
+		" --max-pairs 40 --header -j " + shellQuote(dir.file("b.json")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("| lab.rawlog | featloc::PcmFeatureMatcher | 40 |"),
+		std::string::npos)
+		<< r.output;
+	EXPECT_NE(r.output.find("| lab.rawlog | featloc::IcpMatcher | 40 |"), std::string::npos);
+	const auto j = readJson(dir.file("b.json"));
+	ASSERT_EQ(j["results"].size(), 2u);
+	// Both matchers recover the lab's motions to a few millimetres from
+	// +-0.3 m / +-10 deg initial errors (2.5 cm range noise).
+	for (const auto& m : j["results"])
+	{
+		EXPECT_LT(m["mae_x_m"].get<double>(), 0.01) << m["matcher"];
+		EXPECT_LT(m["mae_yaw_deg"].get<double>(), 0.2) << m["matcher"];
+		EXPECT_EQ(m["failures"], 0) << m["matcher"];
+	}
+	// Without ground truth the reference matcher is required.
+	const CommandResult noGt = runCommand(
+		shellQuote(FEATLOC_BENCH_EXE) + " " + shellQuote(kConfig) + " " +
+		shellQuote(sim + "lab.rawlog"));
+	EXPECT_EQ(noGt.exitCode, 2);
+	EXPECT_NE(noGt.output.find("--reference-matcher"), std::string::npos) << noGt.output;
+}

@@ -1,0 +1,53 @@
+#pragma once
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <string>
+#include <vector>
+
+#include "featloc/matchers/ScanMatcher.h"
+
+namespace featloc
+{
+/** Two scans and the true robot motion between them. */
+struct ScanPairSample
+{
+	mrpt::obs::CObservation2DRangeScan::Ptr reference, current;
+	mrpt::poses::CPose2D truth;	 //!< current robot pose in the reference's
+};
+
+/** The evaluation protocol of Borges & Aldon (section 5): each matcher gets
+ * every pair with the initial estimate t0 = t + e_t, w0 = w + e_w, the
+ * errors uniform in [-perturbXY, perturbXY] per axis and
+ * [-perturbYaw, perturbYaw] (or Gaussian with those sigmas), the same draw
+ * for every matcher; reported: the mean absolute errors in t_x, t_y and w
+ * (the paper's metric) over the successful matches, the failure rate, and
+ * time and iterations per match. Matchers run interleaved pair by pair so
+ * that timings share the machine's state. */
+class ScanPairBenchmark
+{
+   public:
+	struct Options
+	{
+		double perturbXY = 0.3;	 //!< [m]
+		double perturbYaw = 0.17453292519943295;  //!< [rad] (10 deg)
+		std::string perturbation = "uniform";  //!< uniform | gaussian
+		unsigned int seed = 1;
+	};
+	struct Result
+	{
+		std::string matcher;
+		size_t pairs = 0, failures = 0;
+		double maeX = 0, maeY = 0, maeYaw = 0;	//!< [m], [m], [rad]
+		double medianTrans = 0, p95Trans = 0;  //!< [m] |t error|
+		double meanTime = 0, medianTime = 0;  //!< [s] per match
+		double meanIterations = 0;
+		double meanNees = 0;  //!< over successes (3 for a consistent covariance)
+		std::vector<std::string> failureExamples;
+	};
+
+	static std::vector<Result> run(
+		const std::vector<ScanPairSample>& pairs,
+		const std::vector<ScanMatcher::Ptr>& matchers, const Options& options);
+};
+}  // namespace featloc

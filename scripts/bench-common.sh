@@ -1,0 +1,17 @@
+# Sourced by the scripts/bench-*.sh scripts: sets up and builds featloc, then
+# defines ROOT, BIN and OUT (the first argument, or a fresh temporary folder
+# named after $1 of bench_init) and the helpers every benchmark prints with.
+# Usage (after set -euo pipefail): source "$(dirname "$0")/bench-common.sh"; bench_init NAME "$@"
+bench_init() { # name, script arguments...
+  local name="$1"; shift
+  ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+  "$ROOT/scripts/setup.sh" >/dev/null
+  "$ROOT/scripts/build.sh" >/dev/null
+  BIN="${FEATLOC_BUILD_DIR:-$ROOT/build}/bin"
+  OUT="${1:-$(mktemp -d "/tmp/featloc-$name-XXXXXX")}"
+  mkdir -p "$OUT"
+}
+fmt() { printf "%.${2:-3}f" "$1"; }
+machine_line() {
+  echo "machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p'), $(date -u +%Y-%m-%d)"
+}

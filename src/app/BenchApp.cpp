@@ -1,0 +1,255 @@
+#include "featloc/app/BenchApp.h"
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/core/bits_math.h>
+#include <mrpt/system/string_utils.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "featloc/app/AppMain.h"
+#include "featloc/app/RunConfiguration.h"
+#include "featloc/app/UsageError.h"
+#include "featloc/config/TrackedConfig.h"
+#include "featloc/core/InputError.h"
+#include "featloc/eval/ScanPairBenchmark.h"
+#include "featloc/eval/TrajectoryEvaluator.h"
+#include "featloc/eval/TrajectoryFile.h"
+#include "featloc/io/CarmenLogReader.h"
+#include "featloc/io/RawlogReader.h"
+#include "featloc/matchers/ScanMatcherFactory.h"
+#include "featloc/pipeline/ScanStepAssembler.h"
+#include "featloc/registerClasses.h"
+
+namespace featloc
+{
+namespace
+{
+struct Sequence
+{
+	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
+	std::vector<double> times;
+	std::vector<mrpt::poses::CPosePDFGaussian> odometry;  //!< since the previous scan
+	std::vector<mrpt::poses::CPose2D> reference;  //!< poses, when known
+};
+
+bool isCarmen(const std::string& path)
+{
+	const std::string p = mrpt::system::lowerCase(path);
+	auto ends = [&](const std::string& s) {
+		return p.size() >= s.size() && p.compare(p.size() - s.size(), s.size(), s) == 0;
+	};
+	return ends(".log") || ends(".log.gz");
+}
+
+Sequence loadCarmen(const std::string& path)
+{
+	Sequence seq;
+	mrpt::poses::CPose2D prevOdo;
+	for (const auto& s : CarmenLogReader::read(path, {}))
+	{
+		seq.scans.push_back(s.scan);
+		seq.times.push_back(s.time);
+		seq.reference.emplace_back(s.pose);
+		const mrpt::poses::CPose2D odo(s.odometry);
+		seq.odometry.emplace_back(seq.scans.size() == 1 ? mrpt::poses::CPose2D() : odo - prevOdo);
+		prevOdo = odo;
+	}
+	return seq;
+}
+
+Sequence loadRawlog(
+	const std::string& path, const RunConfiguration& rc, const std::string& gtPath)
+{
+	Sequence seq;
+	RawlogReader reader(path);
+	ScanStepAssembler assembler(rc.input, rc.odometry, path);
+	std::vector<ScanStep> steps;
+	std::vector<ScanStepAssembler::SelectedScan> selected;
+	RawlogEntry e;
+	while (!assembler.full() && reader.next(e)) assembler.push(e, selected, steps);
+	assembler.finish(steps);
+	for (const auto& s : steps)
+	{
+		seq.scans.push_back(s.scan);
+		seq.times.push_back(mrpt::Clock::toDouble(s.timestamp()));
+		seq.odometry.push_back(s.odometry);
+	}
+	if (!gtPath.empty())
+	{
+		const Trajectory gt = TrajectoryFile::read(gtPath);
+		Trajectory est;
+		for (double t : seq.times)
+		{
+			TimedPose p;
+			p.t = t;
+			est.poses.push_back(p);
+		}
+		const auto pairs = TrajectoryEvaluator(0.001).associate(gt, est);
+		if (pairs.size() != est.poses.size())
+			throw InputError(
+				"ground truth '" + gtPath + "' has poses for only " +
+				std::to_string(pairs.size()) + " of the " + std::to_string(est.poses.size()) +
+				" scans (within 1 ms)");
+		seq.reference.resize(seq.scans.size());
+		for (const auto& [g, s] : pairs) seq.reference[s] = mrpt::poses::CPose2D(gt.poses[g].pose);
+	}
+	return seq;
+}
+}  // namespace
+
+int BenchApp::main(int argc, char** argv)
+{
+	registerClasses();
+	TCLAP::CmdLine cmd(
+		"featloc-bench: scan matchers side by side on the pairs of consecutive "
+		"scans of a log, with Borges & Aldon's protocol: each matcher starts "
+		"from the true motion perturbed by uniform noise (+-perturb-xy per "
+		"axis, +-perturb-yaw-deg); reports mean absolute errors in t_x, t_y, "
+		"w, failures, time and iterations per match. Ground truth: a TUM or "
+		"'t x y yaw' file for rawlogs, the poses of a CARMEN log (.log, "
+		".log.gz), or a reference matcher's result from odometry.",
+		' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> argConfig(
+		"config", "INI configuration (matcher parameters, [Input])", true, "", "CONFIG", cmd);
+	TCLAP::UnlabeledValueArg<std::string> argData(
+		"data", "Rawlog, or CARMEN log (.log, .log.gz)", true, "", "DATA", cmd);
+	TCLAP::ValueArg<std::string> argGt("g", "ground-truth",
+		"Ground truth for a rawlog (TUM or t x y yaw)", false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> argMatchers("m", "matchers",
+		"Comma-separated matcher classes", false,
+		"featloc::PcmFeatureMatcher,featloc::IcpMatcher", "CLASSES", cmd);
+	TCLAP::ValueArg<std::string> argReference("", "reference-matcher",
+		"Without ground truth: the motion this matcher finds from odometry is "
+		"the reference",
+		false, "", "CLASS", cmd);
+	TCLAP::ValueArg<double> argXY("", "perturb-xy", "[m] initial error bound per axis",
+		false, 0.3, "M", cmd);
+	TCLAP::ValueArg<double> argYaw("", "perturb-yaw-deg", "[deg] initial error bound",
+		false, 10, "DEG", cmd);
+	TCLAP::ValueArg<std::string> argKind("", "perturbation", "uniform | gaussian", false,
+		"uniform", "KIND", cmd);
+	TCLAP::ValueArg<unsigned int> argStride("", "stride",
+		"Pair scan k with scan k - stride", false, 1, "N", cmd);
+	TCLAP::ValueArg<unsigned int> argMax("", "max-pairs", "At most this many pairs (0 = all)",
+		false, 0, "N", cmd);
+	TCLAP::ValueArg<unsigned int> argSeed("", "seed", "Random seed", false, 1, "N", cmd);
+	TCLAP::MultiArg<std::string> argSet("s", "set", "Override an ini key (repeatable)", false,
+		"SECTION:KEY=VALUE", cmd);
+	TCLAP::ValueArg<std::string> argJson("j", "json", "Also write the results as JSON",
+		false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> argName("", "name", "Data name in the table", false, "",
+		"NAME", cmd);
+	TCLAP::SwitchArg argHeader("", "header", "Print the Markdown table header", cmd);
+	int exitCode = 0;
+	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
+	if (argKind.getValue() != "uniform" && argKind.getValue() != "gaussian")
+		throw UsageError("--perturbation must be uniform or gaussian");
+	if (argStride.getValue() < 1) throw UsageError("--stride must be >= 1");
+
+	TrackedConfig cfg;
+	cfg.loadFile(argConfig.getValue());
+	for (const auto& s : argSet.getValue()) cfg.applyOverride(s);
+	const RunConfiguration rc = RunConfiguration::load(cfg);
+	std::vector<ScanMatcher::Ptr> matchers;
+	std::vector<std::string> names;
+	mrpt::system::tokenize(argMatchers.getValue(), ",", names);
+	if (names.empty()) throw UsageError("--matchers names no class");
+	for (const auto& n : names)
+	{
+		auto m = ScanMatcherFactory::create(mrpt::system::trim(n));
+		m->loadParams(cfg, ScanMatcherFactory::paramsSection(n));
+		matchers.push_back(m);
+	}
+	cfg.requireAllKeysRead();
+
+	const std::string data = argData.getValue();
+	const Sequence seq = isCarmen(data) ? loadCarmen(data) : loadRawlog(data, rc, argGt.getValue());
+	ScanMatcher::Ptr reference;
+	if (seq.reference.empty())
+	{
+		if (!argReference.isSet())
+			throw UsageError(
+				"no ground truth: give --ground-truth FILE or --reference-matcher CLASS");
+		reference = ScanMatcherFactory::create(argReference.getValue());
+		reference->loadParams(cfg, ScanMatcherFactory::paramsSection(argReference.getValue()));
+	}
+
+	std::vector<ScanPairSample> pairs;
+	size_t referenceFailures = 0;
+	const size_t stride = argStride.getValue();
+	for (size_t k = stride; k < seq.scans.size(); k++)
+	{
+		if (argMax.getValue() > 0 && pairs.size() >= argMax.getValue()) break;
+		ScanPairSample p;
+		p.reference = seq.scans[k - stride];
+		p.current = seq.scans[k];
+		if (!seq.reference.empty())
+			p.truth = seq.reference[k] - seq.reference[k - stride];
+		else
+		{
+			mrpt::poses::CPosePDFGaussian odo = seq.odometry[k - stride + 1];
+			for (size_t j = k - stride + 2; j <= k; j++) odo += seq.odometry[j];
+			const MatchResult r = reference->match(*p.reference, *p.current, odo);
+			if (!r.success)
+			{
+				referenceFailures++;
+				continue;
+			}
+			p.truth = r.estimate.mean;
+		}
+		pairs.push_back(p);
+	}
+	if (pairs.empty()) throw InputError("'" + data + "' gives no scan pair to benchmark");
+
+	ScanPairBenchmark::Options o;
+	o.perturbXY = argXY.getValue();
+	o.perturbYaw = mrpt::DEG2RAD(argYaw.getValue());
+	o.perturbation = argKind.getValue();
+	o.seed = argSeed.getValue();
+	const auto results = ScanPairBenchmark::run(pairs, matchers, o);
+
+	const std::string name = argName.isSet()
+		? argName.getValue()
+		: std::filesystem::path(data).filename().string();
+	if (argHeader.getValue())
+	{
+		std::printf(
+			"| data | matcher | pairs | failed | MAE t_x [mm] | MAE t_y [mm] | MAE w "
+			"[deg] | median \\|t err\\| [mm] | time/match mean [ms] | median [ms] | "
+			"iterations | mean NEES |\n");
+		std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+	}
+	nlohmann::json j;
+	j["data"] = data;
+	j["pairs"] = pairs.size();
+	j["reference_matcher_failures"] = referenceFailures;
+	j["perturbation"] = {{"kind", o.perturbation}, {"xy_m", o.perturbXY},
+		{"yaw_deg", mrpt::RAD2DEG(o.perturbYaw)}, {"seed", o.seed}};
+	for (const auto& r : results)
+	{
+		std::printf(
+			"| %s | %s | %zu | %.1f%% | %.2f | %.2f | %.3f | %.2f | %.3f | %.3f | %.1f | %.2f |\n",
+			name.c_str(), r.matcher.c_str(), r.pairs,
+			100.0 * static_cast<double>(r.failures) / static_cast<double>(r.pairs),
+			r.maeX * 1e3, r.maeY * 1e3, mrpt::RAD2DEG(r.maeYaw), r.medianTrans * 1e3,
+			r.meanTime * 1e3, r.medianTime * 1e3, r.meanIterations, r.meanNees);
+		j["results"].push_back({{"matcher", r.matcher}, {"pairs", r.pairs},
+			{"failures", r.failures}, {"mae_x_m", r.maeX}, {"mae_y_m", r.maeY},
+			{"mae_yaw_deg", mrpt::RAD2DEG(r.maeYaw)}, {"median_trans_err_m", r.medianTrans},
+			{"p95_trans_err_m", r.p95Trans}, {"time_mean_s", r.meanTime},
+			{"time_median_s", r.medianTime}, {"iterations_mean", r.meanIterations},
+			{"nees_mean", r.meanNees}, {"failure_examples", r.failureExamples}});
+	}
+	if (argJson.isSet())
+	{
+		std::ofstream f(argJson.getValue());
+		if (!f) throw std::runtime_error("cannot write '" + argJson.getValue() + "'");
+		f << j.dump(2) << "\n";
+	}
+	return 0;
+}
+}  // namespace featloc

@@ -1,0 +1,86 @@
+#include "featloc/eval/ScanPairBenchmark.h"
+
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+
+#include "featloc/eval/ErrorStats.h"
+
+namespace featloc
+{
+std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
+	const std::vector<ScanPairSample>& pairs,
+	const std::vector<ScanMatcher::Ptr>& matchers, const Options& o)
+{
+	mrpt::random::CRandomGenerator rng(o.seed);
+	const bool uniform = o.perturbation == "uniform";
+	// The guess's covariance: that of the perturbation.
+	mrpt::math::CMatrixDouble33 cov;
+	cov.setZero();
+	cov(0, 0) = cov(1, 1) = o.perturbXY * o.perturbXY / (uniform ? 3 : 1);
+	cov(2, 2) = o.perturbYaw * o.perturbYaw / (uniform ? 3 : 1);
+
+	struct Acc
+	{
+		std::vector<double> ex, ey, ew, et, time, nees;
+		double iterations = 0;
+	};
+	std::vector<Acc> acc(matchers.size());
+	std::vector<Result> res(matchers.size());
+	for (size_t m = 0; m < matchers.size(); m++) res[m].matcher = matchers[m]->className();
+
+	for (size_t k = 0; k < pairs.size(); k++)
+	{
+		const auto& p = pairs[k];
+		auto draw = [&](double a) {
+			return uniform ? rng.drawUniform(-a, a) : a * rng.drawGaussian1D_normalized();
+		};
+		const double dx = draw(o.perturbXY), dy = draw(o.perturbXY), dw = draw(o.perturbYaw);
+		const mrpt::poses::CPosePDFGaussian guess(
+			mrpt::poses::CPose2D(p.truth.x() + dx, p.truth.y() + dy, p.truth.phi() + dw), cov);
+		for (size_t m = 0; m < matchers.size(); m++)
+		{
+			const MatchResult r = matchers[m]->match(*p.reference, *p.current, guess);
+			auto& a = acc[m];
+			res[m].pairs++;
+			a.time.push_back(r.timeSeconds);
+			a.iterations += r.iterations;
+			if (!r.success)
+			{
+				res[m].failures++;
+				if (res[m].failureExamples.size() < 5)
+					res[m].failureExamples.push_back(
+						"pair " + std::to_string(k) + ": " + r.failureReason);
+				continue;
+			}
+			const auto& e = r.estimate.mean;
+			const Eigen::Vector3d err(e.x() - p.truth.x(), e.y() - p.truth.y(),
+				mrpt::math::wrapToPi(e.phi() - p.truth.phi()));
+			a.ex.push_back(std::abs(err[0]));
+			a.ey.push_back(std::abs(err[1]));
+			a.ew.push_back(std::abs(err[2]));
+			a.et.push_back(std::hypot(err[0], err[1]));
+			a.nees.push_back(err.dot(r.estimate.cov.asEigen().ldlt().solve(err)));
+		}
+	}
+	for (size_t m = 0; m < matchers.size(); m++)
+	{
+		const auto& a = acc[m];
+		auto& r = res[m];
+		r.maeX = ErrorStats::of(a.ex).mean;
+		r.maeY = ErrorStats::of(a.ey).mean;
+		r.maeYaw = ErrorStats::of(a.ew).mean;
+		const auto t = ErrorStats::of(a.et);
+		r.medianTrans = t.median;
+		r.p95Trans = t.p95;
+		const auto time = ErrorStats::of(a.time);
+		r.meanTime = time.mean;
+		r.medianTime = time.median;
+		r.meanIterations = r.pairs ? a.iterations / static_cast<double>(r.pairs) : 0;
+		r.meanNees = ErrorStats::of(a.nees).mean;
+	}
+	return res;
+}
+}  // namespace featloc

@@ -1,0 +1,92 @@
+#include "featloc/io/CarmenLogReader.h"
+
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/system/filesystem.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "featloc/core/InputError.h"
+
+namespace featloc
+{
+namespace
+{
+std::string readAll(const std::string& path)
+{
+	if (!mrpt::system::fileExists(path))
+		throw InputError("CARMEN log '" + path + "' does not exist");
+	mrpt::io::CFileGZInputStream in;	// reads gzip and plain files alike
+	if (!in.open(path)) throw InputError("CARMEN log '" + path + "' cannot be opened");
+	std::string data;
+	char buf[65536];
+	for (size_t n; (n = in.Read(buf, sizeof(buf))) > 0;) data.append(buf, n);
+	return data;
+}
+
+double number(const std::string& tok, const std::string& where)
+{
+	char* end = nullptr;
+	const double v = std::strtod(tok.c_str(), &end);
+	if (end != tok.c_str() + tok.size() || !std::isfinite(v))
+		throw InputError(where + ": '" + tok + "' is not a number");
+	return v;
+}
+}  // namespace
+
+std::vector<CarmenScan> CarmenLogReader::read(const std::string& path, const Options& options)
+{
+	std::istringstream lines(readAll(path));
+	std::vector<CarmenScan> out;
+	double laserOffset = 0;
+	std::string line;
+	for (size_t lineNo = 1; std::getline(lines, line); lineNo++)
+	{
+		std::istringstream in(line);
+		std::vector<std::string> tok;
+		for (std::string t; in >> t;) tok.push_back(t);
+		if (tok.empty()) continue;
+		const std::string where = path + ":" + std::to_string(lineNo);
+		if (tok[0] == "PARAM" && tok.size() >= 3 && tok[1] == "robot_frontlaser_offset")
+			laserOffset = number(tok[2], where);
+		if (tok[0] != "FLASER") continue;
+		if (tok.size() < 2) throw InputError(where + ": FLASER without a range count");
+		const double nd = number(tok[1], where);
+		if (nd < 2 || nd != std::floor(nd) || nd > 100000)
+			throw InputError(where + ": bad range count '" + tok[1] + "'");
+		const size_t n = static_cast<size_t>(nd);
+		if (tok.size() < 2 + n + 9)
+			throw InputError(
+				where + ": FLASER with " + std::to_string(n) + " ranges needs " +
+				std::to_string(2 + n + 9) + " fields, found " + std::to_string(tok.size()));
+		CarmenScan s;
+		s.line = lineNo;
+		auto scan = std::make_shared<mrpt::obs::CObservation2DRangeScan>();
+		scan->sensorLabel = options.label;
+		scan->aperture = static_cast<float>(M_PI);
+		scan->rightToLeft = true;
+		scan->maxRange = static_cast<float>(options.maxRange);
+		scan->sensorPose = mrpt::poses::CPose3D(laserOffset, 0, 0, 0, 0, 0);
+		scan->resizeScan(n);
+		for (size_t i = 0; i < n; i++)
+		{
+			const double r = number(tok[2 + i], where);
+			const bool valid = r > 0 && r < options.maxRange;
+			scan->setScanRange(i, static_cast<float>(valid ? r : options.maxRange));
+			scan->setScanRangeValidity(i, valid);
+		}
+		const size_t p = 2 + n;
+		s.pose = {number(tok[p], where), number(tok[p + 1], where), number(tok[p + 2], where)};
+		s.odometry = {number(tok[p + 3], where), number(tok[p + 4], where),
+			number(tok[p + 5], where)};
+		s.time = number(tok[p + 8], where);
+		scan->timestamp = mrpt::Clock::fromDouble(s.time);
+		s.scan = scan;
+		out.push_back(std::move(s));
+	}
+	if (out.empty()) throw InputError("CARMEN log '" + path + "' has no FLASER message");
+	return out;
+}
+}  // namespace featloc
