@@ -3,6 +3,7 @@
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPose3DPDFGaussian.h>
 
+#include "featloc/math/DiagonalPoseGaussian.h"
 #include "featloc/matchers/IcpMatcher.h"
 #include "featloc/matchers/ScanMatcherAlignment.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
@@ -12,19 +13,9 @@
 using namespace featloc;
 using featloc::test::SyntheticRoom;
 using mrpt::poses::CPose2D;
-using mrpt::poses::CPosePDFGaussian;
 
 namespace
 {
-CPosePDFGaussian guess(const CPose2D& mean, double sxy, double sphi)
-{
-	mrpt::math::CMatrixDouble33 cov;
-	cov.setZero();
-	cov(0, 0) = cov(1, 1) = sxy * sxy;
-	cov(2, 2) = sphi * sphi;
-	return CPosePDFGaussian(mean, cov);
-}
-
 void expectPose(const CPose2D& got, const CPose2D& truth, double tolXY, double tolPhi)
 {
 	EXPECT_NEAR(got.x(), truth.x(), tolXY);
@@ -45,7 +36,7 @@ TEST(IcpMatcher, RecoversAKnownMotionFromAPerturbedGuess)
 	auto m = ScanMatcherFactory::create("featloc::IcpMatcher");
 	const CPose2D start(motion.x() + 0.08, motion.y() - 0.06,
 		motion.phi() + mrpt::DEG2RAD(2.0));
-	const MatchResult r = m->match(*ref, *cur, guess(start, 0.1, 0.05));
+	const MatchResult r = m->match(*ref, *cur, diagonalPoseGaussian(start, 0.1, 0.05));
 	ASSERT_TRUE(r.success) << r.failureReason;
 	// Point-to-point ICP on sampled scans: sub-centimetre, not exact.
 	expectPose(r.estimate.mean, motion, 0.01, mrpt::DEG2RAD(0.3));
@@ -66,7 +57,7 @@ TEST(IcpMatcher, HandlesSensorOffsetsOnTheRobot)
 	const auto ref = room.scan(p0, sensor, 721);
 	const auto cur = room.scan(p0 + motion, sensor, 721);
 	auto m = ScanMatcherFactory::create("featloc::IcpMatcher");
-	const MatchResult r = m->match(*ref, *cur, guess(motion, 0.1, 0.05));
+	const MatchResult r = m->match(*ref, *cur, diagonalPoseGaussian(motion, 0.1, 0.05));
 	ASSERT_TRUE(r.success) << r.failureReason;
 	// The robot motion, not the sensor's (which differs by the mounting).
 	expectPose(r.estimate.mean, motion, 0.01, mrpt::DEG2RAD(0.3));
@@ -83,7 +74,7 @@ TEST(IcpMatcher, EmptyScanIsAReportedFailure)
 	for (size_t i = 0; i < empty->getScanSize(); i++)
 		empty->setScanRangeValidity(i, false);
 	auto m = ScanMatcherFactory::create("featloc::IcpMatcher");
-	const MatchResult r = m->match(*ref, *empty, guess(CPose2D(0.1, 0, 0), 0.1, 0.1));
+	const MatchResult r = m->match(*ref, *empty, diagonalPoseGaussian(CPose2D(0.1, 0, 0), 0.1, 0.1));
 	EXPECT_FALSE(r.success);
 	EXPECT_NE(r.failureReason.find("too few valid points"), std::string::npos);
 	EXPECT_EQ(r.estimate.mean, CPose2D(0.1, 0, 0));	// the guess, untouched
@@ -102,7 +93,7 @@ TEST(IcpMatcher, LowOverlapIsAReportedFailure)
 	hall.add(-15, 15, -15, -15);
 	const auto cur = hall.scan(CPose2D());
 	auto m = ScanMatcherFactory::create("featloc::IcpMatcher");
-	const MatchResult r = m->match(*ref, *cur, guess(CPose2D(0.5, 0, 0), 0.1, 0.1));
+	const MatchResult r = m->match(*ref, *cur, diagonalPoseGaussian(CPose2D(0.5, 0, 0), 0.1, 0.1));
 	EXPECT_FALSE(r.success);
 	EXPECT_NE(r.failureReason.find("minGoodness"), std::string::npos)
 		<< r.failureReason;
@@ -126,7 +117,7 @@ TEST(ScanMatcherAlignment, ServesMrptAlignmentInterfaceWithTheSameResult)
 	ScanMatcherAlignment align(matcher);
 	mrpt::slam::CMetricMapsAlignmentAlgorithm& mrptApi = align;
 	ScanMatcherAlignment::TReturnInfo info;
-	const auto pdf = mrptApi.AlignPDF(&m1, &m2, guess(CPose2D(), 0.2, 0.1), info);
+	const auto pdf = mrptApi.AlignPDF(&m1, &m2, diagonalPoseGaussian(CPose2D(), 0.2, 0.1), info);
 	ASSERT_TRUE(pdf);
 	CPose2D mean;
 	pdf->getMean(mean);
@@ -135,7 +126,7 @@ TEST(ScanMatcherAlignment, ServesMrptAlignmentInterfaceWithTheSameResult)
 	EXPECT_GT(info.executionTime, 0);
 
 	// Same matcher on the scans: equal up to the float storage of the maps.
-	const MatchResult direct = matcher->match(*ref, *cur, guess(CPose2D(), 0.2, 0.1));
+	const MatchResult direct = matcher->match(*ref, *cur, diagonalPoseGaussian(CPose2D(), 0.2, 0.1));
 	expectPose(direct.estimate.mean, mean, 1e-5, 1e-6);
 
 	EXPECT_THROW(

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "featloc/math/DiagonalPoseGaussian.h"
 #include "featloc/matchers/PcmFeatureMatcher.h"
 #include "featloc/matchers/PcmMotionUpdate.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
@@ -17,7 +18,6 @@ using namespace featloc;
 using featloc::test::SyntheticRoom;
 using mrpt::math::TPose2D;
 using mrpt::poses::CPose2D;
-using mrpt::poses::CPosePDFGaussian;
 
 namespace
 {
@@ -90,15 +90,6 @@ TPose2D numericalMinimum(
 		}
 	}
 	return TPose2D(best[0], best[1], mrpt::math::wrapToPi(best[2]));
-}
-
-CPosePDFGaussian guess(const CPose2D& mean, double sxy, double sphi)
-{
-	mrpt::math::CMatrixDouble33 cov;
-	cov.setZero();
-	cov(0, 0) = cov(1, 1) = sxy * sxy;
-	cov(2, 2) = sphi * sphi;
-	return CPosePDFGaussian(mean, cov);
 }
 
 /** A room made only of long walls and boxes (every side > 0.6 m): all
@@ -219,7 +210,7 @@ TEST(PcmFeatureMatcher, NoiseFreePairRecoveredFromLargeInitialErrors)
 		const double sx = trial % 2 ? 1 : -1, sy = trial % 4 < 2 ? 1 : -1;
 		const CPose2D start(motion.x() + 0.3 * sx, motion.y() + 0.3 * sy,
 			motion.phi() + sx * sy * mrpt::DEG2RAD(10.0));
-		const MatchResult r = m->match(*ref, *cur, guess(start, 0.17, 0.1));
+		const MatchResult r = m->match(*ref, *cur, diagonalPoseGaussian(start, 0.17, 0.1));
 		ASSERT_TRUE(r.success) << "trial " << trial << ": " << r.failureReason;
 		EXPECT_LT(std::abs(r.estimate.mean.x() - motion.x()), 0.001) << "trial " << trial;
 		EXPECT_LT(std::abs(r.estimate.mean.y() - motion.y()), 0.001) << "trial " << trial;
@@ -257,7 +248,7 @@ TEST(PcmFeatureMatcher, CovarianceIsConsistentOverNoisyTrials)
 			mrpt::DEG2RAD(rng.drawUniform(-10.0, 10.0)));
 		const auto ref = noisy(room.scan(p0, CPose2D(), 361, M_PI * 1.5));
 		const auto cur = noisy(room.scan(p0 + motion, CPose2D(), 361, M_PI * 1.5));
-		const MatchResult r = m->match(*ref, *cur, guess(motion, 0.05, 0.03));
+		const MatchResult r = m->match(*ref, *cur, diagonalPoseGaussian(motion, 0.05, 0.03));
 		ASSERT_TRUE(r.success) << r.failureReason;
 		Eigen::Vector3d e(r.estimate.mean.x() - motion.x(), r.estimate.mean.y() - motion.y(),
 			mrpt::math::wrapToPi(r.estimate.mean.phi() - motion.phi()));
@@ -278,7 +269,7 @@ TEST(PcmFeatureMatcher, CorridorIsFlaggedWithItsUnconstrainedDirection)
 	auto m = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
 	const auto ref = corridor.scan(CPose2D(0, 0, 0));
 	const auto cur = corridor.scan(CPose2D(0.3, 0.05, 0.02));
-	const MatchResult r = m->match(*ref, *cur, guess(CPose2D(0.25, 0, 0), 0.1, 0.05));
+	const MatchResult r = m->match(*ref, *cur, diagonalPoseGaussian(CPose2D(0.25, 0, 0), 0.1, 0.05));
 	EXPECT_FALSE(r.success);
 	EXPECT_NE(r.failureReason.find("translation along direction (1.00, 0.00)"),
 		std::string::npos)
@@ -295,7 +286,7 @@ TEST(PcmFeatureMatcher, TooFewFeaturesIsAReportedFailure)
 	pole.add(1, -0.05, 1, 0.05);  // a 10 cm stub: no feature
 	auto m = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
 	const auto s = pole.scan(CPose2D());
-	const MatchResult r = m->match(*s, *s, guess(CPose2D(), 0.1, 0.1));
+	const MatchResult r = m->match(*s, *s, diagonalPoseGaussian(CPose2D(), 0.1, 0.1));
 	EXPECT_FALSE(r.success);
 	EXPECT_NE(r.failureReason.find("no features"), std::string::npos) << r.failureReason;
 }

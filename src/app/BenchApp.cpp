@@ -1,6 +1,5 @@
 #include "featloc/app/BenchApp.h"
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/system/string_utils.h>
 
@@ -8,9 +7,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include "featloc/app/AppMain.h"
+#include "featloc/app/ConfigCommandLine.h"
 #include "featloc/app/RunConfiguration.h"
 #include "featloc/app/UsageError.h"
 #include "featloc/config/TrackedConfig.h"
@@ -21,6 +23,7 @@
 #include "featloc/io/CarmenLogReader.h"
 #include "featloc/io/RawlogReader.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
+#include "featloc/pipeline/ProgressBar.h"
 #include "featloc/pipeline/ScanStepAssembler.h"
 #include "featloc/registerClasses.h"
 
@@ -137,13 +140,12 @@ int BenchApp::main(int argc, char** argv)
 	TCLAP::ValueArg<unsigned int> argMax("", "max-pairs", "At most this many pairs (0 = all)",
 		false, 0, "N", cmd);
 	TCLAP::ValueArg<unsigned int> argSeed("", "seed", "Random seed", false, 1, "N", cmd);
-	TCLAP::MultiArg<std::string> argSet("s", "set", "Override an ini key (repeatable)", false,
-		"SECTION:KEY=VALUE", cmd);
 	TCLAP::ValueArg<std::string> argJson("j", "json", "Also write the results as JSON",
 		false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> argName("", "name", "Data name in the table", false, "",
 		"NAME", cmd);
 	TCLAP::SwitchArg argHeader("", "header", "Print the Markdown table header", cmd);
+	ConfigCommandLine config(cmd, "ScanMatcher.PcmFeatureMatcher:refinement=none", "");
 	int exitCode = 0;
 	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
 	if (argKind.getValue() != "uniform" && argKind.getValue() != "gaussian")
@@ -151,8 +153,7 @@ int BenchApp::main(int argc, char** argv)
 	if (argStride.getValue() < 1) throw UsageError("--stride must be >= 1");
 
 	TrackedConfig cfg;
-	cfg.loadFile(argConfig.getValue());
-	for (const auto& s : argSet.getValue()) cfg.applyOverride(s);
+	config.load(cfg, argConfig.getValue());
 	const RunConfiguration rc = RunConfiguration::load(cfg);
 	std::vector<ScanMatcher::Ptr> matchers;
 	std::vector<std::string> names;
@@ -210,7 +211,12 @@ int BenchApp::main(int argc, char** argv)
 	o.perturbYaw = mrpt::DEG2RAD(argYaw.getValue());
 	o.perturbation = argKind.getValue();
 	o.seed = argSeed.getValue();
-	const auto results = ScanPairBenchmark::run(pairs, matchers, o);
+	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
+	const auto results = ScanPairBenchmark::run(pairs, matchers, o, [&](size_t done) {
+		if (!config.quiet())
+			progress.update(static_cast<double>(done) / static_cast<double>(pairs.size()), done);
+	});
+	if (!config.quiet()) progress.done(pairs.size());
 
 	const std::string name = argName.isSet()
 		? argName.getValue()

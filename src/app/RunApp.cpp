@@ -1,6 +1,5 @@
 #include "featloc/app/RunApp.h"
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/system/filesystem.h>
 #include <unistd.h>
@@ -12,6 +11,7 @@
 #include <memory>
 
 #include "featloc/app/AppMain.h"
+#include "featloc/app/ConfigCommandLine.h"
 #include "featloc/app/RunConfiguration.h"
 #include "featloc/app/UsageError.h"
 #include "featloc/config/TrackedConfig.h"
@@ -92,27 +92,17 @@ int RunApp::main(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argOut(
 		"o", "out", "Results folder; overrides [Output] dir", false, "", "DIR",
 		cmd);
-	TCLAP::MultiArg<std::string> argSet(
-		"s", "set",
-		"Override one ini key, e.g. --set ScanMatcher:class=featloc::IcpMatcher "
-		"or --set ScanMatcher.IcpMatcher:maxIterations=50 (repeatable)",
-		false, "SECTION:KEY=VALUE", cmd);
-	TCLAP::ValueArg<std::string> argWriteConfig(
-		"", "write-config",
-		"Write the full reference configuration (every section and key, "
-		"defaults, units) to FILE and exit",
-		false, "", "FILE", cmd);
-	TCLAP::SwitchArg argQuiet("q", "quiet", "No progress bar", cmd);
+	ConfigCommandLine config(cmd,
+		"ScanMatcher:class=featloc::IcpMatcher or --set "
+		"ScanMatcher.IcpMatcher:maxIterations=50",
+		"the full reference configuration (every section and key, defaults, units)");
 	int exitCode = 0;
 	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
 
-	if (argWriteConfig.isSet())
-	{
-		writeReferenceConfig(argWriteConfig.getValue(),
+	if (config.writeConfigIfAsked(
 			"# featloc reference configuration: every key with its default.\n",
-			[](mrpt::config::CConfigFileBase& c) { RunConfiguration::defaults().save(c); });
+			[](mrpt::config::CConfigFileBase& c) { RunConfiguration::defaults().save(c); }))
 		return 0;
-	}
 	const auto& files = argFiles.getValue();
 	if (files.empty()) throw UsageError("missing CONFIG (the ini file)");
 	if (files.size() > 2)
@@ -122,8 +112,7 @@ int RunApp::main(int argc, char** argv)
 	const bool rawlogGiven = files.size() == 2;
 
 	TrackedConfig cfg;
-	cfg.loadFile(files[0]);
-	for (const auto& spec : argSet.getValue()) cfg.applyOverride(spec);
+	config.load(cfg, files[0]);
 	RunConfiguration rc = RunConfiguration::load(cfg);
 	cfg.requireAllKeysRead();
 
@@ -186,7 +175,7 @@ int RunApp::main(int argc, char** argv)
 	for (auto& o : outputs) outs.push_back(o.get());
 	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
 	const RunStats stats =
-		pipeline.run(rawlog, outs, argQuiet.getValue() ? nullptr : &progress);
+		pipeline.run(rawlog, outs, config.quiet() ? nullptr : &progress);
 	printSummary(stats);
 
 	// The ini's ground truth belongs to the ini's rawlog: with another

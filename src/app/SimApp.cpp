@@ -1,6 +1,5 @@
 #include "featloc/app/SimApp.h"
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <unistd.h>
 
@@ -11,6 +10,7 @@
 #include <iostream>
 
 #include "featloc/app/AppMain.h"
+#include "featloc/app/ConfigCommandLine.h"
 #include "featloc/app/UsageError.h"
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/pipeline/ProgressBar.h"
@@ -40,34 +40,22 @@ int SimApp::main(int argc, char** argv)
 		false, "", "PREFIX", cmd);
 	TCLAP::ValueArg<unsigned int> argSeed(
 		"", "seed", "Random seed; overrides [Simulation] seed", false, 1, "N", cmd);
-	TCLAP::MultiArg<std::string> argSet(
-		"s", "set",
-		"Override one key, e.g. --set Laser:preset=hokuyo_utm30lx (repeatable)",
-		false, "SECTION:KEY=VALUE", cmd);
-	TCLAP::ValueArg<std::string> argWriteConfig(
-		"", "write-config",
-		"Write the settings sections with every key, default and unit to "
-		"FILE and exit",
-		false, "", "FILE", cmd);
-	TCLAP::SwitchArg argQuiet("q", "quiet", "No progress bar", cmd);
+	ConfigCommandLine config(cmd, "Laser:preset=hokuyo_utm30lx",
+		"the settings sections with every key, default and unit");
 	int exitCode = 0;
 	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
 
-	if (argWriteConfig.isSet())
-	{
-		writeReferenceConfig(argWriteConfig.getValue(),
+	if (config.writeConfigIfAsked(
 			"# featloc-sim settings: every key with its default. Add\n"
 			"# [Wall.<name>], [Obstacle.<name>] and [Agent.<name>] sections\n"
 			"# (doc/simulator.md).\n",
-			[](mrpt::config::CConfigFileBase& c) { SimConfiguration().saveSettings(c); });
+			[](mrpt::config::CConfigFileBase& c) { SimConfiguration().saveSettings(c); }))
 		return 0;
-	}
 	if (argWorld.getValue().empty()) throw UsageError("missing WORLD (the world file)");
 	if (!argOut.isSet()) throw UsageError("missing --out PREFIX");
 
 	TrackedConfig cfg;
-	cfg.loadFile(argWorld.getValue());
-	for (const auto& spec : argSet.getValue()) cfg.applyOverride(spec);
+	config.load(cfg, argWorld.getValue());
 	SimConfiguration sc = SimConfiguration::load(cfg);
 	cfg.requireAllKeysRead();
 	if (argSeed.isSet()) sc.simulation.seed = argSeed.getValue();
@@ -85,9 +73,9 @@ int SimApp::main(int argc, char** argv)
 	const auto res = sim.run(
 		rawlog, gt, [&](const SimulatedScan&) { scans++; },
 		[&](double f) {
-			if (!argQuiet.getValue()) progress.update(f, scans);
+			if (!config.quiet()) progress.update(f, scans);
 		});
-	if (!argQuiet.getValue()) progress.done(res.scans);
+	if (!config.quiet()) progress.done(res.scans);
 	WorldSceneWriter::write(scene, sim.world(), sim.trajectory());
 	WorldPlot::write(
 		picture, sim.world(), sim.trajectory(),

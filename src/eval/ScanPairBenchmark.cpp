@@ -7,20 +7,20 @@
 #include <cmath>
 
 #include "featloc/eval/ErrorStats.h"
+#include "featloc/math/DiagonalPoseGaussian.h"
 
 namespace featloc
 {
 std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 	const std::vector<ScanPairSample>& pairs,
-	const std::vector<ScanMatcher::Ptr>& matchers, const Options& o)
+	const std::vector<ScanMatcher::Ptr>& matchers, const Options& o, const Progress& progress)
 {
 	mrpt::random::CRandomGenerator rng(o.seed);
 	const bool uniform = o.perturbation == "uniform";
-	// The guess's covariance: that of the perturbation.
-	mrpt::math::CMatrixDouble33 cov;
-	cov.setZero();
-	cov(0, 0) = cov(1, 1) = o.perturbXY * o.perturbXY / (uniform ? 3 : 1);
-	cov(2, 2) = o.perturbYaw * o.perturbYaw / (uniform ? 3 : 1);
+	// The guess's standard deviations: those of the perturbation (a uniform
+	// draw in [-a, a] has sigma a / sqrt(3)).
+	const double sigmaScale = uniform ? 1.0 / std::sqrt(3.0) : 1.0;
+	const double sigmaXY = o.perturbXY * sigmaScale, sigmaYaw = o.perturbYaw * sigmaScale;
 
 	struct Acc
 	{
@@ -38,8 +38,9 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			return uniform ? rng.drawUniform(-a, a) : a * rng.drawGaussian1D_normalized();
 		};
 		const double dx = draw(o.perturbXY), dy = draw(o.perturbXY), dw = draw(o.perturbYaw);
-		const mrpt::poses::CPosePDFGaussian guess(
-			mrpt::poses::CPose2D(p.truth.x() + dx, p.truth.y() + dy, p.truth.phi() + dw), cov);
+		const mrpt::poses::CPosePDFGaussian guess = diagonalPoseGaussian(
+			mrpt::poses::CPose2D(p.truth.x() + dx, p.truth.y() + dy, p.truth.phi() + dw),
+			sigmaXY, sigmaYaw);
 		for (size_t m = 0; m < matchers.size(); m++)
 		{
 			const MatchResult r = matchers[m]->match(*p.reference, *p.current, guess);
@@ -64,6 +65,7 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			a.et.push_back(std::hypot(err[0], err[1]));
 			a.nees.push_back(err.dot(r.estimate.cov.asEigen().ldlt().solve(err)));
 		}
+		if (progress) progress(k + 1);
 	}
 	for (size_t m = 0; m < matchers.size(); m++)
 	{

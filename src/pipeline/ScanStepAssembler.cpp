@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "featloc/core/InputError.h"
+#include "featloc/math/DiagonalPoseGaussian.h"
 
 namespace featloc
 {
@@ -203,11 +204,8 @@ void ScanStepAssembler::completeFromTimeline(ScanStep& step)
 
 mrpt::poses::CPosePDFGaussian ScanStepAssembler::noOdometryPrior() const
 {
-	mrpt::math::CMatrixDouble33 cov;
-	cov.setZero();
-	cov(0, 0) = cov(1, 1) = m_odo.no_odometry_sigma_xy * m_odo.no_odometry_sigma_xy;
-	cov(2, 2) = m_odo.no_odometry_sigma_yaw * m_odo.no_odometry_sigma_yaw;
-	return mrpt::poses::CPosePDFGaussian(mrpt::poses::CPose2D(), cov);
+	return diagonalPoseGaussian(
+		mrpt::poses::CPose2D(), m_odo.no_odometry_sigma_xy, m_odo.no_odometry_sigma_yaw);
 }
 
 mrpt::poses::CPosePDFGaussian ScanStepAssembler::modelIncrement(

@@ -18,6 +18,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "featloc/math/DiagonalPoseGaussian.h"
 #include "featloc/sim/RayCaster.h"
 
 namespace featloc
@@ -173,16 +174,13 @@ mrpt::serialization::CSerializable::Ptr Simulator::makeAction(
 		// The noise's own covariance. Stored as a PDF (not as odometry,
 		// which MRPT would rebuild from a motion model on loading).
 		const bool uniform = m_odometry.perturbation == "uniform";
-		const double a = m_odometry.perturbation_xy, b = m_odometry.perturbation_yaw;
-		const double vxy = uniform ? a * a / 3 : a * a;
-		const double vphi = uniform ? b * b / 3 : b * b;
-		mrpt::math::CMatrixDouble33 cov;
-		cov.setZero();
-		cov(0, 0) = cov(1, 1) = vxy;
-		cov(2, 2) = vphi;
+		// (A uniform draw in [-a, a] has sigma a / sqrt(3).)
+		const double sigmaScale = uniform ? 1.0 / std::sqrt(3.0) : 1.0;
 		move.estimationMethod = mrpt::obs::CActionRobotMovement2D::emScan2DMatching;
 		move.rawOdometryIncrementReading = reading;
-		move.poseChange = std::make_shared<mrpt::poses::CPosePDFGaussian>(reading, cov);
+		move.poseChange = std::make_shared<mrpt::poses::CPosePDFGaussian>(diagonalPoseGaussian(
+			reading, m_odometry.perturbation_xy * sigmaScale,
+			m_odometry.perturbation_yaw * sigmaScale));
 	}
 	else if (m_odometry.model == "thrun")
 	{

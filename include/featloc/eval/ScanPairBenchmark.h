@@ -2,6 +2,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,8 +47,12 @@ class ScanPairBenchmark
 		std::vector<std::string> failureExamples;
 	};
 
+	/** Called after each pair with the number of pairs done so far. */
+	using Progress = std::function<void(size_t done)>;
+
 	static std::vector<Result> run(
 		const std::vector<ScanPairSample>& pairs,
-		const std::vector<ScanMatcher::Ptr>& matchers, const Options& options);
+		const std::vector<ScanMatcher::Ptr>& matchers, const Options& options,
+		const Progress& progress = {});
 };
 }  // namespace featloc
