@@ -8,7 +8,9 @@
 
 #include <mutex>
 
+#include "featloc/matchers/CfIdcMatcher.h"
 #include "featloc/matchers/IcpMatcher.h"
+#include "featloc/matchers/IdcMatcher.h"
 #include "featloc/matchers/PcmFeatureMatcher.h"
 #include "featloc/matchers/ScanMatcher.h"
 
@@ -26,6 +28,8 @@ void registerClasses()
 		mrpt::rtti::registerClass(CLASS_ID(ScanMatcher));
 		mrpt::rtti::registerClass(CLASS_ID(IcpMatcher));
 		mrpt::rtti::registerClass(CLASS_ID(PcmFeatureMatcher));
+		mrpt::rtti::registerClass(CLASS_ID(IdcMatcher));
+		mrpt::rtti::registerClass(CLASS_ID(CfIdcMatcher));
 	});
 }
 }  // namespace featloc

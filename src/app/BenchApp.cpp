@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -109,12 +110,14 @@ int BenchApp::main(int argc, char** argv)
 	registerClasses();
 	TCLAP::CmdLine cmd(
 		"featloc-bench: scan matchers side by side on the pairs of consecutive "
-		"scans of a log, with Borges & Aldon's protocol: each matcher starts "
-		"from the true motion perturbed by uniform noise (+-perturb-xy per "
-		"axis, +-perturb-yaw-deg); reports mean absolute errors in t_x, t_y, "
-		"w, failures, time and iterations per match. Ground truth: a TUM or "
-		"'t x y yaw' file for rawlogs, the poses of a CARMEN log (.log, "
-		".log.gz), or a reference matcher's result from odometry.",
+		"scans of a log, with Borges & Aldon's protocol (each matcher starts "
+		"from the true motion perturbed by uniform noise: +-perturb-xy per "
+		"axis, +-perturb-yaw-deg) or Nunez et al.'s (--apply-motion: the "
+		"current scan is moved by a random motion, each matcher starts from "
+		"its mean); reports mean absolute errors in t_x, t_y, w, failures, "
+		"time and iterations per match. Ground truth: a TUM or 't x y yaw' "
+		"file for rawlogs, the poses of a CARMEN log (.log, .log.gz), or a "
+		"reference matcher's result from odometry.",
 		' ', "0.1");
 	TCLAP::UnlabeledValueArg<std::string> argConfig(
 		"config", "INI configuration (matcher parameters, [Input])", true, "", "CONFIG", cmd);
@@ -135,6 +138,10 @@ int BenchApp::main(int argc, char** argv)
 		false, 10, "DEG", cmd);
 	TCLAP::ValueArg<std::string> argKind("", "perturbation", "uniform | gaussian", false,
 		"uniform", "KIND", cmd);
+	TCLAP::ValueArg<std::string> argApply("", "apply-motion",
+		"Nunez et al.'s protocol: move each current scan by X,Y,YAW_DEG plus the "
+		"perturbation's draw (use --perturbation gaussian), start from X,Y,YAW_DEG",
+		false, "", "X,Y,YAW_DEG", cmd);
 	TCLAP::ValueArg<unsigned int> argStride("", "stride",
 		"Pair scan k with scan k - stride", false, 1, "N", cmd);
 	TCLAP::ValueArg<unsigned int> argMax("", "max-pairs", "At most this many pairs (0 = all)",
@@ -210,6 +217,22 @@ int BenchApp::main(int argc, char** argv)
 	o.perturbXY = argXY.getValue();
 	o.perturbYaw = mrpt::DEG2RAD(argYaw.getValue());
 	o.perturbation = argKind.getValue();
+	if (argApply.isSet())
+	{
+		std::vector<std::string> parts;
+		mrpt::system::tokenize(argApply.getValue(), ",", parts);
+		std::vector<double> v;
+		for (const auto& p : parts)
+		{
+			char* end = nullptr;
+			v.push_back(std::strtod(p.c_str(), &end));
+			if (end == p.c_str() || *end != '\0' || !std::isfinite(v.back()))
+				throw UsageError("--apply-motion: '" + p + "' is not a number");
+		}
+		if (v.size() != 3) throw UsageError("--apply-motion needs X,Y,YAW_DEG (three numbers)");
+		o.applyMotion = true;
+		o.appliedMotion = mrpt::poses::CPose2D(v[0], v[1], mrpt::DEG2RAD(v[2]));
+	}
 	o.seed = argSeed.getValue();
 	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
 	const auto results = ScanPairBenchmark::run(pairs, matchers, o, [&](size_t done) {
@@ -235,6 +258,9 @@ int BenchApp::main(int argc, char** argv)
 	j["reference_matcher_failures"] = referenceFailures;
 	j["perturbation"] = {{"kind", o.perturbation}, {"xy_m", o.perturbXY},
 		{"yaw_deg", mrpt::RAD2DEG(o.perturbYaw)}, {"seed", o.seed}};
+	if (o.applyMotion)
+		j["applied_motion"] = {{"x_m", o.appliedMotion.x()}, {"y_m", o.appliedMotion.y()},
+			{"yaw_deg", mrpt::RAD2DEG(o.appliedMotion.phi())}};
 	for (const auto& r : results)
 	{
 		std::printf(

@@ -1,6 +1,8 @@
 #include "featloc/eval/ScanPairBenchmark.h"
 
 #include <mrpt/math/wrap2pi.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose3D.h>
 #include <mrpt/random/RandomGenerators.h>
 
 #include <Eigen/Dense>
@@ -38,12 +40,31 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			return uniform ? rng.drawUniform(-a, a) : a * rng.drawGaussian1D_normalized();
 		};
 		const double dx = draw(o.perturbXY), dy = draw(o.perturbXY), dw = draw(o.perturbYaw);
-		const mrpt::poses::CPosePDFGaussian guess = diagonalPoseGaussian(
-			mrpt::poses::CPose2D(p.truth.x() + dx, p.truth.y() + dy, p.truth.phi() + dw),
-			sigmaXY, sigmaYaw);
+		mrpt::poses::CPosePDFGaussian guess;
+		mrpt::poses::CPose2D truth = p.truth;
+		const mrpt::obs::CObservation2DRangeScan* current = p.current.get();
+		mrpt::obs::CObservation2DRangeScan moved;
+		if (o.applyMotion)
+		{
+			// Nunez et al.'s protocol: the current scan is moved by a random
+			// motion M (mean appliedMotion, the draw as its spread): its
+			// points, in its new robot frame, are M^-1 (+) the old ones, so
+			// the true motion becomes truth (+) M; the guess is the mean.
+			const mrpt::poses::CPose2D M(o.appliedMotion.x() + dx, o.appliedMotion.y() + dy,
+				o.appliedMotion.phi() + dw);
+			moved = *p.current;
+			moved.sensorPose = mrpt::poses::CPose3D(-M) + p.current->sensorPose;
+			current = &moved;
+			truth = p.truth + M;
+			guess = diagonalPoseGaussian(p.truth + o.appliedMotion, sigmaXY, sigmaYaw);
+		}
+		else
+			guess = diagonalPoseGaussian(
+				mrpt::poses::CPose2D(p.truth.x() + dx, p.truth.y() + dy, p.truth.phi() + dw),
+				sigmaXY, sigmaYaw);
 		for (size_t m = 0; m < matchers.size(); m++)
 		{
-			const MatchResult r = matchers[m]->match(*p.reference, *p.current, guess);
+			const MatchResult r = matchers[m]->match(*p.reference, *current, guess);
 			auto& a = acc[m];
 			res[m].pairs++;
 			a.time.push_back(r.timeSeconds);
@@ -57,8 +78,8 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 				continue;
 			}
 			const auto& e = r.estimate.mean;
-			const Eigen::Vector3d err(e.x() - p.truth.x(), e.y() - p.truth.y(),
-				mrpt::math::wrapToPi(e.phi() - p.truth.phi()));
+			const Eigen::Vector3d err(e.x() - truth.x(), e.y() - truth.y(),
+				mrpt::math::wrapToPi(e.phi() - truth.phi()));
 			a.ex.push_back(std::abs(err[0]));
 			a.ey.push_back(std::abs(err[1]));
 			a.ew.push_back(std::abs(err[2]));

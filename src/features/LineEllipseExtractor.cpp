@@ -15,13 +15,9 @@ double gap(const ScanPoint& a, const ScanPoint& b)
 	return std::hypot(a.x - b.x, a.y - b.y);
 }
 
-/** Distance of p to the chord a-b. */
 double chordDistance(const ScanPoint& a, const ScanPoint& b, const ScanPoint& p)
 {
-	const double ex = b.x - a.x, ey = b.y - a.y;
-	const double len = std::hypot(ex, ey);
-	if (len < 1e-12) return gap(a, p);
-	return std::abs(ex * (p.y - a.y) - ey * (p.x - a.x)) / len;
+	return PointNoiseEstimator::chordDistance(a, b, p);
 }
 
 LineFit fitRun(const ScanPoints& s, size_t first, size_t last)
@@ -85,21 +81,6 @@ void LineEllipseExtractor::Parameters::saveToConfigFile(
 		"[m] features: floor of the point noise estimated from a fit");
 	write(c, s, "ellipse_shape_sigma_ratio", ellipse_shape_sigma_ratio,
 		"features: ellipse centroid sigma added per metre of its length");
-}
-
-double LineEllipseExtractor::noiseOf(const ScanPoints& s, size_t first, size_t last)
-{
-	m_deviations.clear();
-	for (size_t k = first + 1; k < last; k++)
-		m_deviations.push_back(chordDistance(s.points[k - 1], s.points[k + 1], s.points[k]));
-	double noise = 0;
-	if (!m_deviations.empty())
-	{
-		auto mid = m_deviations.begin() + static_cast<long>(m_deviations.size() / 2);
-		std::nth_element(m_deviations.begin(), mid, m_deviations.end());
-		noise = 1.4826 * *mid / std::sqrt(1.5);
-	}
-	return noise;
 }
 
 void LineEllipseExtractor::split(
@@ -226,7 +207,7 @@ void LineEllipseExtractor::extract(const ScanPoints& s, std::vector<ScanFeature>
 		size_t end = start;
 		while (end + 1 < n && gap(s.points[end], s.points[end + 1]) <= params.max_point_gap)
 			end++;
-		if (end > start) split(s, start, end, noiseOf(s, start, end));
+		if (end > start) split(s, start, end, m_noise.estimate(s.points, start, end));
 		start = end + 1;
 	}
 	mergeRuns(s);  // 3.

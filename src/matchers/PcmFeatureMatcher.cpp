@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "featloc/config/ConfigValues.h"
+#include "featloc/matchers/MotionConstraintCheck.h"
 
 namespace featloc
 {
@@ -27,29 +28,6 @@ std::vector<double> boundsToFile(const std::vector<double>& b)
 /** The estimate may move at most this many initial bounds Delta_0 from
  * the initial guess (rotation candidates outside are not considered). */
 constexpr double kWindowBounds = 2.0;
-
-/** B eigenvalue ratio below which the problem is numerically singular. */
-constexpr double kSingularRatio = 1e-12;
-
-/** "the translation along direction (x, y) ... is unconstrained" for a
- * (t_x, t_y, w) direction, or the rotation when it is mostly w. */
-std::string unconstrainedReason(Eigen::Vector3d v)
-{
-	// Canonical sign: the direction is reported with x >= 0.
-	if (v[0] < 0 || (v[0] == 0 && v[1] < 0)) v = -v;
-	if (std::abs(v[2]) > 0.7 * v.norm())
-		return "the matched features leave the rotation unconstrained";
-	// Rounded to the printed precision, without "-0.00".
-	auto show = [](double c) { return std::abs(c) < 0.005 ? 0.0 : c; };
-	const double len = std::hypot(v[0], v[1]);
-	char buf[256];
-	std::snprintf(buf, sizeof(buf),
-		"the matched features leave the translation along direction (%.2f, %.2f) "
-		"of the reference scan unconstrained (all matched lines parallel to it, "
-		"as in a corridor)",
-		show(v[0] / len), show(v[1] / len));
-	return buf;
-}
 
 Eigen::Matrix2d rotation(double w)
 {
@@ -277,13 +255,10 @@ bool PcmFeatureMatcher::covariance(
 		m_perReference[p.i] += p.mu * HtW * k.G;
 	}
 	// Numerically singular: a direction with (almost) no information.
-	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(B);
-	if (!(eig.eigenvalues()[2] > 0) ||
-		eig.eigenvalues()[0] < kSingularRatio * eig.eigenvalues()[2])
-	{
-		reason = unconstrainedReason(eig.eigenvectors().col(0));
-		return false;
-	}
+	const MotionConstraintCheck check(params.max_translation_sigma, params.max_rotation_sigma,
+		"the matched features", "all matched lines parallel to it, as in a corridor");
+	reason = check.singular(B);
+	if (!reason.empty()) return false;
 	Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
 	for (size_t j = 0; j < m_current.size(); j++)
 	{
@@ -301,29 +276,9 @@ bool PcmFeatureMatcher::covariance(
 		for (int c = 0; c < 3; c++) cov(r, c) = 0.5 * (C(r, c) + C(c, r));
 
 	// Weakly constrained: the estimate is too uncertain along some
-	// direction to be of use (the weak directions of B are those of C).
-	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> tr(C.topLeftCorner<2, 2>());
-	if (std::sqrt(std::max(0.0, tr.eigenvalues()[1])) > params.max_translation_sigma)
-	{
-		const Eigen::Vector2d d = tr.eigenvectors().col(1);
-		reason = unconstrainedReason(Eigen::Vector3d(d[0], d[1], 0));
-		char buf[96];
-		std::snprintf(buf, sizeof(buf), " (sigma %.2f m > max_translation_sigma)",
-			std::sqrt(tr.eigenvalues()[1]));
-		reason += buf;
-		return false;
-	}
-	if (std::sqrt(std::max(0.0, C(2, 2))) > params.max_rotation_sigma)
-	{
-		char buf[128];
-		std::snprintf(buf, sizeof(buf),
-			"the matched features leave the rotation unconstrained (sigma %.1f deg > "
-			"max_rotation_sigma_DEG)",
-			mrpt::RAD2DEG(std::sqrt(C(2, 2))));
-		reason = buf;
-		return false;
-	}
-	return true;
+	// direction to be of use.
+	reason = check.tooUncertain(C);
+	return reason.empty();
 }
 
 size_t PcmFeatureMatcher::gate(

@@ -3,7 +3,12 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <mrpt/math/wrap2pi.h>
+
+#include <Eigen/Dense>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 
 namespace featloc
 {
@@ -41,12 +46,14 @@ MatchResult ScanMatcher::match(
 	sensorGuess.changeCoordinatesReference(mrpt::poses::CPose2D() - s1);
 	sensorGuess += s2;
 
-	MatchResult r = match(
-		ScanPoints::fromScan(reference), ScanPoints::fromScan(current),
-		sensorGuess);
+	MatchResult r = matchInSensorFrames(
+		ScanPoints::fromScan(reference), ScanPoints::fromScan(current), sensorGuess);
 
 	r.estimate.changeCoordinatesReference(s1);
 	r.estimate += mrpt::poses::CPose2D() - s2;
+	// In the robot frame, where the guess's uncertainty is what its
+	// source (odometry) says; in the sensor frames a lever arm couples it.
+	checkAgainstGuess(initialGuess, r);
 	r.timeSeconds =
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
 			.count();
@@ -58,6 +65,38 @@ MatchResult ScanMatcher::match(
 	const mrpt::poses::CPosePDFGaussian& initialGuess)
 {
 	const auto t0 = std::chrono::steady_clock::now();
+	MatchResult r = matchInSensorFrames(reference, current, initialGuess);
+	checkAgainstGuess(initialGuess, r);
+	r.timeSeconds =
+		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+			.count();
+	return r;
+}
+
+void ScanMatcher::checkAgainstGuess(
+	const mrpt::poses::CPosePDFGaussian& guess, MatchResult& r) const
+{
+	const double gate = guessGateChi2();
+	if (!r.success || gate <= 0) return;
+	const auto& e = r.estimate.mean;
+	const Eigen::Vector3d d(e.x() - guess.mean.x(), e.y() - guess.mean.y(),
+		mrpt::math::wrapToPi(e.phi() - guess.mean.phi()));
+	const Eigen::Matrix3d P = guess.cov.asEigen() + r.estimate.cov.asEigen();
+	const double m2 = d.dot(P.ldlt().solve(d));
+	if (m2 <= gate) return;
+	char buf[220];
+	std::snprintf(buf, sizeof(buf),
+		"the estimate is implausibly far from the initial guess (Mahalanobis^2 %.1f > "
+		"guess_gate_chi2 %.1f: moved %.3f m, %.2f deg)",
+		m2, gate, std::hypot(d[0], d[1]), mrpt::RAD2DEG(d[2]));
+	r.success = false;
+	r.failureReason = buf;
+}
+
+MatchResult ScanMatcher::matchInSensorFrames(
+	const ScanPoints& reference, const ScanPoints& current,
+	const mrpt::poses::CPosePDFGaussian& initialGuess)
+{
 	MatchResult r;
 	r.estimate = initialGuess;
 	r.referencePoints = reference.size();
@@ -75,9 +114,6 @@ MatchResult ScanMatcher::match(
 	{
 		matchPoints(reference, current, initialGuess, r);
 	}
-	r.timeSeconds =
-		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
-			.count();
 	return r;
 }
 

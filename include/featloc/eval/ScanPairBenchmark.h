@@ -17,14 +17,23 @@ struct ScanPairSample
 	mrpt::poses::CPose2D truth;	 //!< current robot pose in the reference's
 };
 
-/** The evaluation protocol of Borges & Aldon (section 5): each matcher gets
- * every pair with the initial estimate t0 = t + e_t, w0 = w + e_w, the
- * errors uniform in [-perturbXY, perturbXY] per axis and
- * [-perturbYaw, perturbYaw] (or Gaussian with those sigmas), the same draw
- * for every matcher; reported: the mean absolute errors in t_x, t_y and w
- * (the paper's metric) over the successful matches, the failure rate, and
- * time and iterations per match. Matchers run interleaved pair by pair so
- * that timings share the machine's state. */
+/** The scan-pair protocols of the papers.
+ *
+ * Borges & Aldon (section 5): each matcher gets every pair with the
+ * initial estimate t0 = t + e_t, w0 = w + e_w, the errors uniform in
+ * [-perturbXY, perturbXY] per axis and [-perturbYaw, perturbYaw] (or
+ * Gaussian with those sigmas).
+ *
+ * Nunez et al. (CF-IDC, section IV.B), with applyMotion: the current scan
+ * is moved by a random motion (mean 1 m and 15 deg, sd 50 mm and 5 deg in
+ * the paper: appliedMotion plus the Gaussian draw) and every matcher starts
+ * from the mean motion.
+ *
+ * The same draw for every matcher; reported: the mean absolute errors in
+ * t_x, t_y and w (both papers' metric) over the successful matches, the
+ * failure rate, time and iterations per match, and the mean NEES of the
+ * returned covariances. Matchers run interleaved pair by pair so that
+ * timings share the machine's state. */
 class ScanPairBenchmark
 {
    public:
@@ -34,6 +43,11 @@ class ScanPairBenchmark
 		double perturbYaw = 0.17453292519943295;  //!< [rad] (10 deg)
 		std::string perturbation = "uniform";  //!< uniform | gaussian
 		unsigned int seed = 1;
+		/** Nunez et al.'s protocol instead: the current scan is moved by a
+		 * random motion, appliedMotion plus the draw above, and every
+		 * matcher starts from appliedMotion (the mean). */
+		bool applyMotion = false;
+		mrpt::poses::CPose2D appliedMotion;
 	};
 	struct Result
 	{

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "featloc/features/ScanFeature.h"
+#include "featloc/scan/PointNoiseEstimator.h"
 #include "featloc/scan/ScanPoints.h"
 
 namespace featloc
@@ -87,8 +88,6 @@ class LineEllipseExtractor
 
    private:
 	using Run = std::pair<size_t, size_t>;	//!< [first, last] point indices
-	/** Robust point noise of a cluster (see step 2). */
-	double noiseOf(const ScanPoints& s, size_t first, size_t last);
 	void split(const ScanPoints& s, size_t first, size_t last, double noise);
 	void mergeRuns(const ScanPoints& s);
 	void setCovariances(const ScanPoints& s, std::vector<ScanFeature>& features) const;
@@ -97,6 +96,6 @@ class LineEllipseExtractor
 	std::vector<Run> m_runs;  // reused buffers: no allocation per call
 	std::vector<double> m_runNoise;	 //!< per run: its cluster's noise
 	std::vector<Run> m_stack;
-	std::vector<double> m_deviations;
+	PointNoiseEstimator m_noise;  //!< robust point noise of a cluster (step 2)
 };
 }  // namespace featloc

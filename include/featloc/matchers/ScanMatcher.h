@@ -60,6 +60,12 @@ class ScanMatcher : public mrpt::rtti::CObject
 	std::string className() const;
 
    protected:
+	/** Matchers that reject estimates implausibly far from the initial
+	 * guess return the Mahalanobis^2 threshold (0: no check). match()
+	 * applies it in the robot frame, with the guess's and the estimate's
+	 * covariances summed, and reports the distance. */
+	virtual double guessGateChi2() const { return 0; }
+
 	/** Implemented by each matcher. `initialGuess` and the result are the
 	 * pose of `current`'s frame in `reference`'s frame. Must fill estimate,
 	 * success (with failureReason), iterations, goodness. Must not throw on
@@ -68,6 +74,13 @@ class ScanMatcher : public mrpt::rtti::CObject
 		const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPosePDFGaussian& initialGuess,
 		MatchResult& result) = 0;
+
+   private:
+	/** Point checks and matchPoints(), no timing, no guess check. */
+	MatchResult matchInSensorFrames(
+		const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPosePDFGaussian& initialGuess);
+	void checkAgainstGuess(const mrpt::poses::CPosePDFGaussian& guess, MatchResult& r) const;
 };
 
 }  // namespace featloc

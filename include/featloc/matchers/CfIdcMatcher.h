@@ -1,0 +1,145 @@
+#pragma once
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <string>
+#include <vector>
+
+#include "featloc/features/CurvatureFunction.h"
+#include "featloc/features/CurvatureFunctionMatcher.h"
+#include "featloc/matchers/IterativeDualCorrespondence.h"
+#include "featloc/matchers/ReferencePolyline.h"
+#include "featloc/matchers/ScanMatcher.h"
+#include "featloc/scan/AdaptiveBreakpointSegmenter.h"
+
+namespace featloc
+{
+/** Nunez, Vazquez-Martin, Bandera & Sandoval, "CF-IDC: a robust robot's
+ * self-localization in dynamic environments using curvature information":
+ * IDC on only those points of the two scans that belong to segments whose
+ * shapes match, so that people and objects that moved between the scans
+ * do not pull the estimate.
+ *
+ *  CF-SMA1: both scans are cut into segments by the adaptive breakpoint
+ *           detector (eq. 3, AdaptiveBreakpointSegmenter); segments of
+ *           fewer than min_segment_points are dropped ("isolated groups");
+ *           each remaining segment gets its adaptive curvature function
+ *           (eqs. 4-6, CurvatureFunction).
+ *  CF-SMA2: curvature functions are paired by the FFT correlation of
+ *           eq. (7), greedily above U_c (CurvatureFunctionMatcher); the
+ *           points of unpaired segments, in both scans, are dropped.
+ *  CF-SMA3: IDC (IterativeDualCorrespondence) on the kept points.
+ *
+ * featloc's additions, each switchable (pairing_gate = false,
+ * segment_gate = 0 and the IDC's final_phase = idc give the paper):
+ * - pairing_gate: only segments that can be the same object under the
+ *   initial guess are compared (their bounding boxes, the current one
+ *   moved by the guess, no farther apart than window_sigmas times the
+ *   guess's uncertainty at the segment's farthest point). Curvature ignores
+ *   position: without the gate a straight piece of one wall pairs as
+ *   readily with any other straight wall;
+ * - segment_gate: a person who walked half a metre still has the shape of
+ *   a person, and a wall seen from a little further along has a different
+ *   normalised curvature function. So when IDC's dual rules have brought
+ *   the estimate near the solution (at the switch to the point-to-line
+ *   phase), the segments are chosen again by geometry: every segment of
+ *   the current scan large enough is kept if, at the estimate, the median
+ *   distance of its points to the reference (all its segments large
+ *   enough) is at most segment_gate, and dropped otherwise ("moved");
+ *   the point-to-line phase runs on those.
+ * If the curvature pairing keeps less than a third of the points of the
+ * segments large enough (or fewer than 3 min_pairs), IDC starts from all of
+ * them (reported as the reason); if the segment gate would leave fewer than
+ * 3 min_pairs points, the estimate is too poor to judge by and the
+ * pairing's choice stands.
+ *
+ * What was dropped, and why, is reported per segment (lastCurrentSegments,
+ * lastReferenceSegments) for the tests and for pictures. */
+class CfIdcMatcher : public ScanMatcher
+{
+	DEFINE_MRPT_OBJECT(CfIdcMatcher, featloc)
+
+   public:
+	struct Parameters : public mrpt::config::CLoadableOptions
+	{
+		AdaptiveBreakpointSegmenter::Parameters segmentation;
+		unsigned int min_segment_points = 5;
+		CurvatureFunction::Parameters curvature;
+		CurvatureFunctionMatcher::Parameters correlation;
+		bool pairing_gate = true;
+		double segment_gate = 0.05;	 //!< [m] 0 disables
+		IterativeDualCorrespondence::Parameters idc;
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& c,
+			const std::string& s) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& c,
+			const std::string& s) const override;
+	};
+
+	/** One segment of a scan and what became of it. */
+	struct SegmentReport
+	{
+		ScanSegment segment;  //!< indices into the scan's valid points
+		bool kept = false;
+		int pairedWith = -1;  //!< curvature partner in the other scan, or -1
+		double similarity = 0;	//!< rho of the pair (best rho if unpaired)
+		std::string reason;	 //!< why it was dropped, or how it was kept
+	};
+
+	Parameters params;
+
+	void loadParams(
+		const mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) override;
+	void saveParams(
+		mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) const override;
+
+	const std::vector<SegmentReport>& lastCurrentSegments() const { return m_currentReport; }
+	const std::vector<SegmentReport>& lastReferenceSegments() const { return m_referenceReport; }
+
+   protected:
+	double guessGateChi2() const override { return params.idc.guess_gate_chi2; }
+	void matchPoints(
+		const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPosePDFGaussian& initialGuess,
+		MatchResult& result) override;
+
+   private:
+	/** CF-SMA1 for one scan: its segments (reports) and the curvature
+	 * functions of those large enough; segmentOf[f] is the report index of
+	 * function f. */
+	void describe(
+		const ScanPoints& scan, std::vector<SegmentReport>& report,
+		std::vector<std::vector<double>>& functions, std::vector<int>& segmentOf);
+	/** pairing_gate: which (current, reference) function pairs may be the
+	 * same object under the guess. */
+	void plausiblePairs(
+		const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPosePDFGaussian& guess);
+	/** CF-SMA2's verdicts in the reports. */
+	void pairSegments();
+	/** segment_gate, at the estimate x: the reference becomes all its
+	 * segments large enough, the current scan those lying on it. */
+	void reselect(const ScanPoints& reference, const ScanPoints& current, const mrpt::math::TPose2D& x);
+	/** The reference polyline of the reference segments marked kept. */
+	void buildReference(const ScanPoints& reference);
+	/** The current points of the segments marked kept. */
+	void collectKeptCurrent(const ScanPoints& current);
+
+	AdaptiveBreakpointSegmenter m_segmenter;
+	CurvatureFunction m_curvature;
+	CurvatureFunctionMatcher m_correlator;
+	IterativeDualCorrespondence m_idc;
+	ReferencePolyline m_polyline;
+	std::vector<SegmentReport> m_currentReport, m_referenceReport;
+	std::vector<std::vector<double>> m_currentFunctions, m_referenceFunctions;
+	std::vector<int> m_currentSegmentOf, m_referenceSegmentOf;
+	std::vector<char> m_allowed;
+	std::vector<ScanSegment> m_segments;
+	std::vector<CurvatureFunctionMatcher::Match> m_matches;
+	std::vector<ScanPoint> m_kept;
+	double m_curvatureStep = 0;	 //!< metric sampling step of this match [m]
+};
+}  // namespace featloc

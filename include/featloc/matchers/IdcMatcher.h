@@ -1,0 +1,58 @@
+#pragma once
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <vector>
+
+#include "featloc/matchers/IterativeDualCorrespondence.h"
+#include "featloc/matchers/ReferencePolyline.h"
+#include "featloc/matchers/ScanMatcher.h"
+#include "featloc/scan/AdaptiveBreakpointSegmenter.h"
+
+namespace featloc
+{
+/** Lu & Milios' Iterative Dual Correspondence on whole scans: the
+ * classic IDC that Nunez et al. compare CF-IDC with. The reference scan
+ * becomes a polyline whose edges join consecutive points of one segment of
+ * the adaptive breakpoint detector (so IDC does not interpolate across
+ * depth jumps); every valid current point takes part. The iteration, the
+ * covariance and the failures are IterativeDualCorrespondence's. */
+class IdcMatcher : public ScanMatcher
+{
+	DEFINE_MRPT_OBJECT(IdcMatcher, featloc)
+
+   public:
+	struct Parameters : public mrpt::config::CLoadableOptions
+	{
+		AdaptiveBreakpointSegmenter::Parameters segmentation;
+		IterativeDualCorrespondence::Parameters idc;
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& c,
+			const std::string& s) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& c,
+			const std::string& s) const override;
+	};
+
+	Parameters params;
+
+	void loadParams(
+		const mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) override;
+	void saveParams(
+		mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) const override;
+
+   protected:
+	double guessGateChi2() const override { return params.idc.guess_gate_chi2; }
+	void matchPoints(
+		const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPosePDFGaussian& initialGuess,
+		MatchResult& result) override;
+
+   private:
+	std::vector<ScanSegment> m_segments;  // reused buffers
+	ReferencePolyline m_polyline;
+	IterativeDualCorrespondence m_idc;
+};
+}  // namespace featloc

@@ -1,0 +1,68 @@
+#pragma once
+#include <mrpt/math/TPose2D.h>
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "featloc/matchers/ReferencePolyline.h"
+#include "featloc/scan/ScanPoints.h"
+
+namespace featloc
+{
+/** A current point paired with the local line of the reference edge
+ * (a, a + 1) (ReferencePolyline::LocalLine). */
+struct PointToLinePair
+{
+	uint32_t current = 0;  //!< index into the current points
+	uint32_t a = 0;	 //!< edge start in the ReferencePolyline
+};
+
+/** The point-to-line error of a motion and its closed-form covariance
+ * (A. Censi, "An accurate closed-form estimate of ICP's covariance",
+ * ICRA 2007).
+ *
+ * With x = (t_x, t_y, w) the motion and z the ranges of every point
+ * involved (current points, and the reference points each local line is
+ * fitted to), the error is J(x, z) = sum_i e_i^2,
+ * e_i = n_i . (R(w) p_i + t - c_i), n_i and c_i the normal and centroid
+ * of the pair's local line. The estimate solves dJ/dx = 0, so to first
+ * order
+ *
+ *   cov(x) = H^-1 (sum_k g_k g_k^T s^2) H^-1,
+ *   H = d2J/dx2,  g_k = d2J/(dx dz_k)
+ *
+ * with independent range errors of standard deviation s. The sum runs over
+ * the ranges, not the pairs: a reference point in several local lines
+ * contributes once, with the sum of its effects. All derivatives are
+ * analytic: a line's centroid moves by 1/m of a point's displacement, its
+ * direction (total least squares) by
+ * d alpha/d p_j = (cos 2a (d_y, d_x) - sin 2a (d_x, -d_y)) / gap,
+ * d = p_j - c, gap the scatter matrix's eigenvalue difference. s is
+ * estimated from the residuals (E[J] = s^2 sum_i |de_i/dz|^2), floored at
+ * minSigma, so modelling error on real surfaces widens the covariance. */
+class PointToLineCovariance
+{
+   public:
+	/** e and de/d(t_x, t_y, w) for current point p and local line L;
+	 * cosPhi, sinPhi: of x.phi (computed once per motion by the caller). */
+	static double residual(
+		const mrpt::math::TPose2D& x, double cosPhi, double sinPhi, const ScanPoint& p,
+		const ReferencePolyline::LocalLine& L, Eigen::Vector3d* gradient = nullptr);
+
+	/** de/dz for the current point's range (first) and for each point
+	 * lo..hi of L (following), analytic; for tests and compute(). Also
+	 * d(de/dx)/dz in `mixed` (3 x (1 + points)) when given. */
+	static void rangeDerivatives(
+		const mrpt::math::TPose2D& x, const ScanPoint& p,
+		const ReferencePolyline::LocalLine& L, const ReferencePolyline& reference,
+		std::vector<double>& dedz, Eigen::Matrix<double, 3, Eigen::Dynamic>* mixed = nullptr);
+
+	/** False when H is singular (the pairs do not constrain the motion);
+	 * `information` receives H either way. */
+	static bool compute(
+		const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
+		const std::vector<PointToLinePair>& pairs, const mrpt::math::TPose2D& x,
+		double minSigma, Eigen::Matrix3d& cov, double& sigma, Eigen::Matrix3d& information);
+};
+}  // namespace featloc

@@ -1,0 +1,123 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "featloc/scan/PointNoiseEstimator.h"
+#include "featloc/scan/ScanPoints.h"
+#include "featloc/scan/ScanSegment.h"
+
+namespace featloc
+{
+/** The reference scan as IDC sees it (Lu & Milios): its points in bearing
+ * order, consecutive points of one segment joined by straight edges, and
+ * the two correspondence rules of IDC as searches that use the angular
+ * order instead of scanning every point:
+ *
+ * - closest point (the ICP rule): the nearest point of the polyline (on an
+ *   edge, interpolated, not only the nearest sample) within maxDistance of
+ *   q. Everything within maxDistance of q lies within asin(maxDistance/|q|)
+ *   of q's bearing, so only the edges overlapping that bearing window are
+ *   tested: O(log n + window) per query, exact;
+ * - matching range point (the IMRP rule): within +-window of q's bearing,
+ *   the point of the polyline (range interpolated linearly in bearing
+ *   along each edge, as Lu & Milios do) whose range is closest to |q|; ties
+ *   (several edges reach |q| exactly) go to the smallest bearing change,
+ *   so the outward walk stops once an exact match is nearer in bearing.
+ *
+ * Bearing windows may cross +-pi (360-degree scanners). */
+class ReferencePolyline
+{
+   public:
+	struct Hit
+	{
+		double x = 0, y = 0;  //!< the corresponding point
+		/** The edge (a, b) it lies inside, or a == b when it is a point of
+		 * the scan (a lone point, or an edge's end: a corner). */
+		uint32_t a = 0, b = 0;
+		double distance = 0;  //!< from the query point
+	};
+
+	/** The surface an edge lies on, for the point-to-line error: the total
+	 * least squares line through the edge's two points and as many of
+	 * their neighbours (up to lineHalfWindow on each side, within the
+	 * segment) as stay within 3 sigma of it, sigma the scan's robust point
+	 * noise (PointNoiseEstimator, at least 1 mm). Two-point edges of raw
+	 * points are as noisy in direction as the points are close (1 cm noise,
+	 * 2.6 cm apart at 3 m: +-20 degrees): their normals would invent
+	 * constraints along walls and bias the estimate; a few more points
+	 * along the same surface fix that without rounding corners. */
+	struct LocalLine
+	{
+		double cx = 0, cy = 0;	//!< centroid [m]
+		/** Unit normal (-sin alpha, cos alpha), alpha the line's direction
+		 * in (-pi/2, pi/2]. */
+		double nx = 0, ny = 1;
+		/** Difference of the scatter matrix eigenvalues (major - minor):
+		 * how well the direction is determined [m^2]. */
+		double gap = 0;
+		uint32_t lo = 0, hi = 0;  //!< the points fitted
+	};
+
+	/** Keeps the points of `segments` (in order), edges inside each, and
+	 * fits each edge's LocalLine. */
+	void build(
+		const ScanPoints& points, const std::vector<ScanSegment>& segments,
+		unsigned int lineHalfWindow = 3);
+
+	size_t size() const { return m_points.size(); }
+	const ScanPoint& point(uint32_t i) const { return m_points[i]; }
+	/** True when point i is joined to point i + 1. */
+	bool joined(uint32_t i) const { return m_joined[i] != 0; }
+	/** The line of edge (i, i + 1); only for joined(i). */
+	const LocalLine& localLine(uint32_t i) const { return m_lines[i]; }
+	/** The robust point noise estimated when building [m]. */
+	double pointNoise() const { return m_pointNoise; }
+
+	/** A query point with its polar coordinates (computed once, used by
+	 * both rules). */
+	struct Query
+	{
+		double x = 0, y = 0, range = 0, bearing = 0;
+		Query() = default;
+		Query(double qx, double qy);
+	};
+
+	/** `hint`: a point index whose edges are tried first (the last answer
+	 * for this query point, as the estimate moves little between
+	 * iterations); it only tightens the search's bounds, the answer is the
+	 * same. kNoHint for none. */
+	bool closestPoint(const Query& q, double maxDistance, Hit& hit, uint32_t hint = kNoHint) const;
+	bool matchingRangePoint(const Query& q, double window, Hit& hit, uint32_t hint = kNoHint) const;
+	static constexpr uint32_t kNoHint = 0xffffffffu;
+
+   private:
+	/** Visits the points and edges outwards from `bearing` on both sides:
+	 * visit(a, b, minDelta) for a point (a == b) or the edge (a, b), with
+	 * the smallest bearing distance of that item from `bearing`; a side
+	 * ends when visit returns false. */
+	template <typename Visit>
+	void walkOutwards(double bearing, Visit&& visit) const;
+	/** Index of the first point whose bearing is >= `bearing` (size() if
+	 * none), from a table of bearing buckets. */
+	size_t firstAtOrAfter(double bearing) const;
+	static constexpr size_t kBuckets = 1024;
+
+	std::vector<ScanPoint> m_points;
+	std::vector<double> m_bearings;	 // sorted, for the searches
+	std::vector<uint32_t> m_bucketStart;
+	std::vector<char> m_joined;
+	/** Point i and its edge (i, i + 1), precomputed for the searches. */
+	struct Edge
+	{
+		double ex = 0, ey = 0, invLength2 = 0;	//!< p_{i+1} - p_i, 1 / |.|^2
+		double bearingSpan = 0;	 //!< bearing(i + 1) - bearing(i)
+		double rangeSlope = 0;	//!< range change per radian of bearing
+		bool joinedEither = false;	//!< joined to a neighbour (not lone)
+	};
+	std::vector<Edge> m_edges;
+	std::vector<LocalLine> m_lines;
+	std::vector<ScanSegment> m_segments;  // of m_points
+	PointNoiseEstimator m_noise;
+	double m_pointNoise = 0;
+};
+}  // namespace featloc

@@ -1,0 +1,56 @@
+#pragma once
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/core/bits_math.h>
+
+#include <vector>
+
+#include "featloc/scan/ScanPoints.h"
+#include "featloc/scan/ScanSegment.h"
+
+namespace featloc
+{
+/** Borges & Aldon's adaptive breakpoint detector, the segmentation of
+ * Nunez et al.'s CF-IDC (CF-SMA1, eq. 3): consecutive points p_{i-1}, p_i
+ * (bearing order) belong to different segments when
+ *
+ *   ||p_i - p_{i-1}|| > r_{i-1} sin(dphi) / sin(lambda - dphi) + 3 sigma_r
+ *
+ * dphi being the bearing difference of the two points (the angular
+ * resolution, or more where invalid beams lie between them). The first
+ * term is how far apart two consecutive points can be on a surface seen at
+ * an incidence as grazing as lambda; the second covers the range noise.
+ * Where dphi >= lambda the bound is infinite in the paper's geometry; such
+ * a gap (a sector of missing returns) is always a breakpoint here.
+ *
+ * Every point ends in exactly one segment (isolated points are one-point
+ * segments): the IDC reference polyline joins consecutive points of a
+ * segment only; CF-IDC drops segments that are too small itself. */
+class AdaptiveBreakpointSegmenter
+{
+   public:
+	struct Parameters : public mrpt::config::CLoadableOptions
+	{
+		double lambda = mrpt::DEG2RAD(10.0);  //!< [rad] lambda of eq. (3)
+		double sigma_r = 0.005;	 //!< [m] sigma_r of eq. (3)
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& c,
+			const std::string& s) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& c,
+			const std::string& s) const override;
+	};
+
+	AdaptiveBreakpointSegmenter() = default;
+	explicit AdaptiveBreakpointSegmenter(const Parameters& p) : params(p) {}
+
+	/** Segments `points` (all of them, in order) into `out`. */
+	void segment(const ScanPoints& points, std::vector<ScanSegment>& out) const;
+
+	/** True when eq. (3) puts a breakpoint between points a and b (b after
+	 * a). */
+	bool isBreakpoint(const ScanPoint& a, const ScanPoint& b) const;
+
+	Parameters params;
+};
+}  // namespace featloc

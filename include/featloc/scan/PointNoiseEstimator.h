@@ -1,0 +1,28 @@
+#pragma once
+#include <vector>
+
+#include "featloc/scan/ScanPoints.h"
+#include "featloc/scan/ScanSegment.h"
+
+namespace featloc
+{
+/** Robust estimate of how far scan points scatter about the surface they
+ * lie on: on a straight surface the distance of each point to the chord of
+ * its two neighbours has variance 1.5 s^2, so s = 1.4826 median / sqrt(1.5);
+ * corners and depth jumps are outliers to the median. */
+class PointNoiseEstimator
+{
+   public:
+	/** Distance of p to the chord a-b (to a when a and b coincide). */
+	static double chordDistance(const ScanPoint& a, const ScanPoint& b, const ScanPoint& p);
+
+	/** s over points[first..last] (0 with fewer than three). */
+	double estimate(const std::vector<ScanPoint>& points, size_t first, size_t last);
+	/** s pooled over the segments of `points`. */
+	double estimate(const std::vector<ScanPoint>& points, const std::vector<ScanSegment>& segments);
+
+   private:
+	double fromDeviations();
+	std::vector<double> m_deviations;  // reused buffer
+};
+}  // namespace featloc

@@ -1,0 +1,335 @@
+#include "featloc/matchers/CfIdcMatcher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "featloc/config/ConfigValues.h"
+
+namespace featloc
+{
+IMPLEMENTS_MRPT_OBJECT(CfIdcMatcher, ScanMatcher, featloc)
+
+namespace
+{
+/** IDC starts from every segment large enough when the curvature pairing
+ * keeps less than 1/kMinPairedShare of their points. */
+constexpr size_t kMinPairedShare = 3;
+/** Metric curvature sampling: at most this many samples per function (the
+ * step grows for very long segments), so the FFTs stay short. */
+constexpr double kMaxCurvatureSamples = 128;
+}  // namespace
+
+void CfIdcMatcher::Parameters::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace featloc::config;
+	segmentation.loadFromConfigFile(c, s);
+	read(c, s, "min_segment_points", min_segment_points);
+	curvature.loadFromConfigFile(c, s);
+	correlation.loadFromConfigFile(c, s);
+	read(c, s, "pairing_gate", pairing_gate);
+	read(c, s, "segment_gate", segment_gate);
+	idc.loadFromConfigFile(c, s);
+	require(min_segment_points >= 2, c, s, "min_segment_points", "must be >= 2");
+	require(segment_gate >= 0, c, s, "segment_gate", "must be >= 0 (0 disables it)");
+}
+
+void CfIdcMatcher::Parameters::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	using namespace featloc::config;
+	segmentation.saveToConfigFile(c, s);
+	write(c, s, "min_segment_points", min_segment_points,
+		"segments with fewer points are dropped (isolated groups)");
+	curvature.saveToConfigFile(c, s);
+	correlation.saveToConfigFile(c, s);
+	write(c, s, "pairing_gate", pairing_gate,
+		"compare only segments that can be the same object under the initial guess (false: the paper)");
+	write(c, s, "segment_gate", segment_gate,
+		"[m] when IDC switches to point-to-line, keep the current segments within this (median) of the reference (0: the paper's pairing decides)");
+	idc.saveToConfigFile(c, s);
+}
+
+void CfIdcMatcher::loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+	params.loadFromConfigFile(cfg, section);
+}
+
+void CfIdcMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const
+{
+	params.saveToConfigFile(cfg, section);
+}
+
+void CfIdcMatcher::describe(
+	const ScanPoints& scan, std::vector<SegmentReport>& report,
+	std::vector<std::vector<double>>& functions, std::vector<int>& segmentOf)
+{
+	m_segmenter.segment(scan, m_segments);
+	report.assign(m_segments.size(), SegmentReport());
+	functions.resize(m_segments.size());
+	segmentOf.clear();
+	size_t used = 0;
+	for (size_t k = 0; k < m_segments.size(); k++)
+	{
+		report[k].segment = m_segments[k];
+		if (m_segments[k].size() < params.min_segment_points)
+		{
+			report[k].reason = "too small (" + std::to_string(m_segments[k].size()) +
+				" points < min_segment_points)";
+			continue;
+		}
+		m_curvature.compute(scan, m_segments[k], functions[used++], m_curvatureStep);
+		segmentOf.push_back(static_cast<int>(k));
+	}
+	functions.resize(used);
+}
+
+namespace
+{
+/** Axis-aligned bounding box of a segment's points, moved by (c, s, tx, ty). */
+struct Box
+{
+	double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+
+	void add(double x, double y)
+	{
+		x0 = std::min(x0, x);
+		y0 = std::min(y0, y);
+		x1 = std::max(x1, x);
+		y1 = std::max(y1, y);
+	}
+	/** Distance between two boxes (0 if they overlap). */
+	double distance(const Box& o) const
+	{
+		const double dx = std::max({0.0, o.x0 - x1, x0 - o.x1});
+		const double dy = std::max({0.0, o.y0 - y1, y0 - o.y1});
+		return std::hypot(dx, dy);
+	}
+};
+
+Box boxOf(const ScanPoints& scan, const ScanSegment& seg, double c = 1, double s = 0,
+	double tx = 0, double ty = 0)
+{
+	Box b;
+	for (uint32_t i = seg.first; i <= seg.last; i++)
+	{
+		const ScanPoint& p = scan.points[i];
+		b.add(c * p.x - s * p.y + tx, s * p.x + c * p.y + ty);
+	}
+	return b;
+}
+}  // namespace
+
+void CfIdcMatcher::plausiblePairs(
+	const ScanPoints& reference, const ScanPoints& current,
+	const mrpt::poses::CPosePDFGaussian& guess)
+{
+	const size_t nc = m_currentSegmentOf.size(), nr = m_referenceSegmentOf.size();
+	m_allowed.assign(nc * nr, 1);
+	if (!params.pairing_gate) return;
+	const auto& G = guess.cov;
+	const double sxy = std::sqrt(std::max({G(0, 0), G(1, 1), 0.0}));
+	const double sw = std::sqrt(std::max(G(2, 2), 0.0));
+	const double c = std::cos(guess.mean.phi()), s = std::sin(guess.mean.phi());
+	std::vector<Box> ref(nr);
+	for (size_t j = 0; j < nr; j++)
+		ref[j] = boxOf(reference, m_referenceReport[static_cast<size_t>(m_referenceSegmentOf[j])].segment);
+	for (size_t i = 0; i < nc; i++)
+	{
+		// The segment in the reference frame under the guess, and how far the
+		// guess's uncertainty can move its farthest point.
+		const ScanSegment& seg = m_currentReport[static_cast<size_t>(m_currentSegmentOf[i])].segment;
+		const Box box = boxOf(current, seg, c, s, guess.mean.x(), guess.mean.y());
+		double farthest = 0;
+		for (uint32_t k = seg.first; k <= seg.last; k++)
+			farthest = std::max(farthest, current.points[k].range);
+		const double window = params.idc.window_sigmas * (sxy + sw * farthest);
+		for (size_t j = 0; j < nr; j++) m_allowed[i * nr + j] = box.distance(ref[j]) <= window;
+	}
+}
+
+void CfIdcMatcher::pairSegments()
+{
+	for (const auto& m : m_matches)
+	{
+		SegmentReport& c = m_currentReport[static_cast<size_t>(m_currentSegmentOf[m.current])];
+		SegmentReport& r = m_referenceReport[static_cast<size_t>(m_referenceSegmentOf[m.reference])];
+		c.kept = r.kept = true;
+		c.pairedWith = m_referenceSegmentOf[m.reference];
+		r.pairedWith = m_currentSegmentOf[m.current];
+		c.similarity = r.similarity = m.similarity;
+	}
+	const auto& rho = m_correlator.lastSimilarity();
+	const size_t nc = m_currentFunctions.size(), nr = m_referenceFunctions.size();
+	auto unpaired = [&](std::vector<SegmentReport>& report, const std::vector<int>& segmentOf,
+						bool isCurrent) {
+		for (size_t f = 0; f < segmentOf.size(); f++)
+		{
+			SegmentReport& s = report[static_cast<size_t>(segmentOf[f])];
+			if (s.kept) continue;
+			double best = 0;
+			bool any = false;
+			for (size_t o = 0; o < (isCurrent ? nr : nc); o++)
+			{
+				const size_t at = isCurrent ? f * nr + o : o * nr + f;
+				if (!m_allowed[at]) continue;
+				any = true;
+				best = std::max(best, rho[at]);
+			}
+			s.similarity = best;
+			char buf[160];
+			if (!any)
+				std::snprintf(buf, sizeof(buf), "no curvature match (nothing near it under the guess)");
+			else
+				std::snprintf(buf, sizeof(buf), "no curvature match (best similarity %.2f%s)", best,
+					best >= params.correlation.U_c ? ", its partner was taken" : " < U_c");
+			s.reason = buf;
+		}
+	};
+	unpaired(m_currentReport, m_currentSegmentOf, true);
+	unpaired(m_referenceReport, m_referenceSegmentOf, false);
+}
+
+void CfIdcMatcher::buildReference(const ScanPoints& reference)
+{
+	m_segments.clear();
+	for (const auto& s : m_referenceReport)
+		if (s.kept) m_segments.push_back(s.segment);
+	m_polyline.build(reference, m_segments);
+}
+
+void CfIdcMatcher::collectKeptCurrent(const ScanPoints& current)
+{
+	m_kept.clear();
+	for (const auto& s : m_currentReport)
+		if (s.kept)
+			m_kept.insert(m_kept.end(), current.points.begin() + s.segment.first,
+				current.points.begin() + s.segment.last + 1);
+}
+
+void CfIdcMatcher::reselect(
+	const ScanPoints& reference, const ScanPoints& current, const mrpt::math::TPose2D& x)
+{
+	// Kept as they are if the estimate is too poor for the test to leave
+	// enough points (IDC then fails or succeeds on the pairing's choice).
+	const auto currentBefore = m_currentReport, referenceBefore = m_referenceReport;
+	for (auto& s : m_referenceReport)
+		if (s.segment.size() >= params.min_segment_points)
+		{
+			s.kept = true;
+			s.reason.clear();
+		}
+	buildReference(reference);
+	const double gate = params.segment_gate;
+	for (auto& s : m_currentReport)
+	{
+		if (s.segment.size() < params.min_segment_points) continue;
+		const double d = IterativeDualCorrespondence::medianDistance(
+			m_polyline, &current.points[s.segment.first], s.segment.size(), x, 4 * gate);
+		char buf[200];
+		if (d <= gate)
+		{
+			if (!s.kept)
+			{
+				std::snprintf(buf, sizeof(buf),
+					"kept: lies on the reference at the estimate (median distance %.3f m), "
+					"though its curvature was not paired",
+					d);
+				s.reason = buf;
+			}
+			s.kept = true;
+			continue;
+		}
+		std::snprintf(buf, sizeof(buf),
+			"moved: median distance %s%.3f m to the reference at the estimate > segment_gate",
+			d >= 4 * gate ? ">= " : "", d);
+		s.kept = false;
+		s.reason = buf;
+	}
+	collectKeptCurrent(current);
+	if (m_kept.size() < 3 * params.idc.min_pairs)
+	{
+		m_currentReport = currentBefore;
+		m_referenceReport = referenceBefore;
+		buildReference(reference);
+		collectKeptCurrent(current);
+	}
+}
+
+void CfIdcMatcher::matchPoints(
+	const ScanPoints& reference, const ScanPoints& current,
+	const mrpt::poses::CPosePDFGaussian& initialGuess, MatchResult& result)
+{
+	m_segmenter.params = params.segmentation;
+	m_curvature.params = params.curvature;
+	m_correlator.params = params.correlation;
+	m_idc.params = params.idc;
+	result.success = false;
+	result.iterations = 0;
+	result.estimate = initialGuess;
+
+	// CF-SMA1. Metric sampling: one step for both scans, coarser than
+	// curvature_step if needed to bound the FFT length.
+	m_curvatureStep = params.curvature.step;
+	for (const auto* scan : {&reference, &current})
+	{
+		m_segmenter.segment(*scan, m_segments);
+		for (const auto& seg : m_segments)
+			m_curvatureStep = std::max(m_curvatureStep,
+				CurvatureFunction::arcLength(*scan, seg) / kMaxCurvatureSamples);
+	}
+	describe(reference, m_referenceReport, m_referenceFunctions, m_referenceSegmentOf);
+	describe(current, m_currentReport, m_currentFunctions, m_currentSegmentOf);
+
+	// CF-SMA2: pair the curvature functions; unpaired segments are dropped.
+	plausiblePairs(reference, current, initialGuess);
+	m_correlator.match(m_currentFunctions, m_referenceFunctions, m_allowed,
+		params.curvature.sampling == "normalized", m_matches);
+	pairSegments();
+	buildReference(reference);
+	collectKeptCurrent(current);
+	size_t sizeable = 0;
+	for (const auto& s : m_currentReport)
+		if (s.segment.size() >= params.min_segment_points) sizeable += s.segment.size();
+	if (m_kept.size() < std::max<size_t>(3 * params.idc.min_pairs, sizeable / kMinPairedShare) ||
+		m_polyline.size() < 3 * params.idc.min_pairs)
+	{
+		// Too little paired to start from: every segment large enough.
+		for (auto* report : {&m_currentReport, &m_referenceReport})
+			for (auto& s : *report)
+				if (s.segment.size() >= params.min_segment_points && !s.kept)
+				{
+					s.kept = true;
+					s.reason = "kept: the curvature pairing left too few points to start IDC from";
+				}
+		buildReference(reference);
+		collectKeptCurrent(current);
+	}
+	if (m_kept.empty() || m_polyline.size() == 0)
+	{
+		result.failureReason = "no segment of " + std::to_string(params.min_segment_points) +
+			" points or more in the " + (m_kept.empty() ? "current" : "reference") + " scan";
+		return;
+	}
+
+	// CF-SMA3: IDC on the kept points; featloc's segment gate at the switch
+	// to the point-to-line phase.
+	IterativeDualCorrespondence::PhaseSwitch reselectAt;
+	if (params.segment_gate > 0)
+		reselectAt = [&](const mrpt::math::TPose2D& x) { reselect(reference, current, x); };
+	IterativeDualCorrespondence::Result r;
+	m_idc.run(m_polyline, m_kept, initialGuess, r, reselectAt);
+
+	result.currentPoints = m_kept.size();
+	result.referencePoints = m_polyline.size();
+	result.success = r.success;
+	result.failureReason = r.failureReason;
+	result.iterations = r.iterations;
+	result.estimate.mean = mrpt::poses::CPose2D(r.estimate);
+	result.estimate.cov = r.cov;
+	result.goodness = current.empty()
+		? 0.0
+		: static_cast<double>(r.pairs) / static_cast<double>(current.size());
+}
+}  // namespace featloc

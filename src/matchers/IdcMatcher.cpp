@@ -1,0 +1,49 @@
+#include "featloc/matchers/IdcMatcher.h"
+
+namespace featloc
+{
+IMPLEMENTS_MRPT_OBJECT(IdcMatcher, ScanMatcher, featloc)
+
+void IdcMatcher::Parameters::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	segmentation.loadFromConfigFile(c, s);
+	idc.loadFromConfigFile(c, s);
+}
+
+void IdcMatcher::Parameters::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	segmentation.saveToConfigFile(c, s);
+	idc.saveToConfigFile(c, s);
+}
+
+void IdcMatcher::loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+	params.loadFromConfigFile(cfg, section);
+}
+
+void IdcMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const
+{
+	params.saveToConfigFile(cfg, section);
+}
+
+void IdcMatcher::matchPoints(
+	const ScanPoints& reference, const ScanPoints& current,
+	const mrpt::poses::CPosePDFGaussian& initialGuess, MatchResult& result)
+{
+	AdaptiveBreakpointSegmenter(params.segmentation).segment(reference, m_segments);
+	m_polyline.build(reference, m_segments);
+	m_idc.params = params.idc;
+	IterativeDualCorrespondence::Result r;
+	m_idc.run(m_polyline, current.points, initialGuess, r);
+	result.success = r.success;
+	result.failureReason = r.failureReason;
+	result.iterations = r.iterations;
+	result.estimate.mean = mrpt::poses::CPose2D(r.estimate);
+	result.estimate.cov = r.cov;
+	result.goodness = current.empty()
+		? 0.0
+		: static_cast<double>(r.pairs) / static_cast<double>(current.size());
+}
+}  // namespace featloc

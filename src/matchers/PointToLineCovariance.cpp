@@ -1,0 +1,104 @@
+#include "featloc/matchers/PointToLineCovariance.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+namespace featloc
+{
+double PointToLineCovariance::residual(
+	const mrpt::math::TPose2D& x, double c, double s, const ScanPoint& p,
+	const ReferencePolyline::LocalLine& L, Eigen::Vector3d* gradient)
+{
+	const double nx = L.nx, ny = L.ny;
+	const double qx = c * p.x - s * p.y + x.x, qy = s * p.x + c * p.y + x.y;
+	if (gradient)
+	{
+		// d(R p)/dw = (-s px - c py, c px - s py)
+		(*gradient)[0] = nx;
+		(*gradient)[1] = ny;
+		(*gradient)[2] = nx * (-s * p.x - c * p.y) + ny * (c * p.x - s * p.y);
+	}
+	return nx * (qx - L.cx) + ny * (qy - L.cy);
+}
+
+void PointToLineCovariance::rangeDerivatives(
+	const mrpt::math::TPose2D& x, const ScanPoint& p, const ReferencePolyline::LocalLine& L,
+	const ReferencePolyline& reference, std::vector<double>& dedz,
+	Eigen::Matrix<double, 3, Eigen::Dynamic>* mixed)
+{
+	const double ca = L.ny, sa = -L.nx;	 // the direction t = (ca, sa)
+	const double nx = L.nx, ny = L.ny;
+	const double c = std::cos(x.phi), s = std::sin(x.phi);
+	const double qx = c * p.x - s * p.y + x.x, qy = s * p.x + c * p.y + x.y;
+	// R' p (d(R p)/dw) and R u_p, R' u_p for the current point's beam.
+	const double ux = p.x / p.range, uy = p.y / p.range;  // the beam
+	const double rpx = -s * p.x - c * p.y, rpy = c * p.x - s * p.y;
+	const size_t m = L.hi - L.lo + 1;
+	dedz.assign(1 + m, 0.0);
+	if (mixed) mixed->setZero(3, static_cast<Eigen::Index>(1 + m));
+	// Current point: it moves along its beam.
+	dedz[0] = nx * (c * ux - s * uy) + ny * (s * ux + c * uy);
+	if (mixed) (*mixed)(2, 0) = nx * (-s * ux - c * uy) + ny * (c * ux - s * uy);
+	// Reference points: through the centroid and the direction.
+	const double dedAlpha = -(ca * (qx - L.cx) + sa * (qy - L.cy));
+	const double c2 = ca * ca - sa * sa, s2 = 2 * sa * ca;	// of 2 alpha
+	const Eigen::Vector3d dGradDAlpha(-ca, -sa, -(ca * rpx + sa * rpy));
+	for (size_t k = 0; k < m; k++)
+	{
+		const ScanPoint& pj = reference.point(static_cast<uint32_t>(L.lo + k));
+		const double dx = pj.x - L.cx, dy = pj.y - L.cy;
+		const double daX = (c2 * dy - s2 * dx) / L.gap, daY = (c2 * dx + s2 * dy) / L.gap;
+		const double ujx = pj.x / pj.range, ujy = pj.y / pj.range;
+		const double dAlpha = daX * ujx + daY * ujy;
+		dedz[1 + k] = -(nx * ujx + ny * ujy) / static_cast<double>(m) + dedAlpha * dAlpha;
+		if (mixed) mixed->col(static_cast<Eigen::Index>(1 + k)) = dGradDAlpha * dAlpha;
+	}
+}
+
+bool PointToLineCovariance::compute(
+	const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
+	const std::vector<PointToLinePair>& pairs, const mrpt::math::TPose2D& x,
+	double minSigma, Eigen::Matrix3d& cov, double& sigma, Eigen::Matrix3d& information)
+{
+	const size_t nc = current.size();
+	// g_k for every range z_k: current points first, then reference points.
+	std::vector<Eigen::Vector3d> g(nc + reference.size(), Eigen::Vector3d::Zero());
+	Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+	double J = 0, sensitivity = 0;
+	std::vector<double> dedz;
+	Eigen::Matrix<double, 3, Eigen::Dynamic> mixed;
+	const double c = std::cos(x.phi), s = std::sin(x.phi);
+	for (const auto& pr : pairs)
+	{
+		const ScanPoint& p = current[pr.current];
+		const ReferencePolyline::LocalLine& L = reference.localLine(pr.a);
+		Eigen::Vector3d de;
+		const double e = residual(x, c, s, p, L, &de);
+		J += e * e;
+		// d2J/dx2 = 2 sum (de de^T + e d2e/dx2); only d2e/dw2 = -n.(R p)
+		// is non-zero.
+		H += 2 * de * de.transpose();
+		H(2, 2) += 2 * e * -(L.nx * (c * p.x - s * p.y) + L.ny * (s * p.x + c * p.y));
+		// d2J/(dx dz) = 2 (de/dx de/dz + e d2e/(dx dz)).
+		rangeDerivatives(x, p, L, reference, dedz, &mixed);
+		g[pr.current] += 2 * (de * dedz[0] + e * mixed.col(0));
+		for (size_t k = 1; k < dedz.size(); k++)
+			g[nc + L.lo + k - 1] += 2 * (de * dedz[k] + e * mixed.col(static_cast<Eigen::Index>(k)));
+		for (double d : dedz) sensitivity += d * d;
+	}
+	information = H;
+	if (pairs.size() < 3) return false;
+	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(H);
+	if (eig.eigenvalues()[0] <= 1e-12 * std::max(1.0, eig.eigenvalues()[2])) return false;
+	const double dof = std::max(1.0, sensitivity - 3);
+	sigma = std::max(minSigma, std::sqrt(J / dof));
+	Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
+	for (const auto& gk : g) S += gk * gk.transpose();
+	const Eigen::Matrix3d Hinv = eig.eigenvectors() *
+		eig.eigenvalues().cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
+	cov = Hinv * S * Hinv * (sigma * sigma);
+	cov = 0.5 * (cov + cov.transpose()).eval();
+	return true;
+}
+}  // namespace featloc

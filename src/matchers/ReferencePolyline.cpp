@@ -1,0 +1,302 @@
+#include "featloc/matchers/ReferencePolyline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace featloc
+{
+namespace
+{
+/** a in (-pi, pi] for a in (-3 pi, 3 pi) (bearing differences): cheaper than
+ * std::remainder, which dominated the searches. */
+inline double wrapAngle(double a)
+{
+	if (a > M_PI) return a - 2 * M_PI;
+	if (a <= -M_PI) return a + 2 * M_PI;
+	return a;
+}
+}  // namespace
+
+ReferencePolyline::Query::Query(double qx, double qy)
+	: x(qx), y(qy), range(std::sqrt(qx * qx + qy * qy)), bearing(std::atan2(qy, qx))
+{
+}
+
+void ReferencePolyline::build(
+	const ScanPoints& s, const std::vector<ScanSegment>& segments, unsigned int lineHalfWindow)
+{
+	m_points.clear();
+	m_joined.clear();
+	m_segments.clear();
+	for (const auto& seg : segments)
+	{
+		const auto first = static_cast<uint32_t>(m_points.size());
+		for (uint32_t i = seg.first; i <= seg.last; i++)
+		{
+			m_points.push_back(s.points[i]);
+			m_joined.push_back(i < seg.last ? 1 : 0);
+		}
+		m_segments.push_back({first, static_cast<uint32_t>(m_points.size() - 1)});
+	}
+	m_bearings.resize(m_points.size());
+	for (size_t i = 0; i < m_points.size(); i++) m_bearings[i] = m_points[i].bearing;
+	// First point at or after each bearing bucket: O(1) lower bound.
+	m_bucketStart.assign(kBuckets + 1, 0);
+	for (size_t k = 0, i = 0; k <= kBuckets; k++)
+	{
+		const double from = -M_PI + 2 * M_PI * static_cast<double>(k) / kBuckets;
+		while (i < m_bearings.size() && m_bearings[i] < from) i++;
+		m_bucketStart[k] = static_cast<uint32_t>(i);
+	}
+	// Per edge, what both searches need.
+	m_edges.assign(m_points.size(), Edge());
+	for (size_t i = 0; i < m_points.size(); i++)
+	{
+		Edge& e = m_edges[i];
+		e.joinedEither = m_joined[i] || (i > 0 && m_joined[i - 1]);
+		if (!m_joined[i]) continue;
+		const ScanPoint &p = m_points[i], &p2 = m_points[i + 1];
+		e.ex = p2.x - p.x;
+		e.ey = p2.y - p.y;
+		const double len2 = e.ex * e.ex + e.ey * e.ey;
+		e.invLength2 = len2 > 0 ? 1 / len2 : 0;
+		e.bearingSpan = wrapAngle(p2.bearing - p.bearing);
+		e.rangeSlope = e.bearingSpan > 0 ? (p2.range - p.range) / e.bearingSpan : 0;
+	}
+
+	// Each edge's local line, grown from the edge while the next point on
+	// either side stays within 3 sigma of the line so far.
+	m_pointNoise = m_noise.estimate(m_points, m_segments);
+	const double tolerance = 3 * std::max(1e-3, m_pointNoise);
+	m_lines.assign(m_points.size(), LocalLine());
+	for (const auto& seg : m_segments)
+		for (uint32_t a = seg.first; a < seg.last; a++)
+		{
+			double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0, m = 0;
+			auto add = [&](uint32_t i) {
+				const ScanPoint& p = m_points[i];
+				sx += p.x;
+				sy += p.y;
+				sxx += p.x * p.x;
+				sxy += p.x * p.y;
+				syy += p.y * p.y;
+				m++;
+			};
+			LocalLine& L = m_lines[a];
+			auto fit = [&] {
+				L.cx = sx / m;
+				L.cy = sy / m;
+				// The major axis of the scatter matrix at angle alpha, with
+				// (cos 2 alpha, sin 2 alpha) = (u, v) / gap; half-angle
+				// formulas give the normal without trigonometry.
+				const double u = (sxx - sx * sx / m) - (syy - sy * sy / m);
+				const double v = 2 * (sxy - sx * sy / m);
+				L.gap = std::sqrt(u * u + v * v);
+				const double c2 = L.gap > 0 ? u / L.gap : 1.0;
+				const double ca = std::sqrt(std::max(0.0, 0.5 * (1 + c2)));
+				const double sa = std::copysign(std::sqrt(std::max(0.0, 0.5 * (1 - c2))), v);
+				L.nx = -sa;
+				L.ny = ca;
+			};
+			auto fits = [&](uint32_t i) {
+				const ScanPoint& p = m_points[i];
+				return std::abs(L.nx * (p.x - L.cx) + L.ny * (p.y - L.cy)) <= tolerance;
+			};
+			add(a);
+			add(a + 1);
+			L.lo = a;
+			L.hi = a + 1;
+			fit();
+			bool left = true, right = true;
+			for (unsigned int w = 0; w < lineHalfWindow && (left || right); w++)
+			{
+				left = left && L.lo > seg.first && fits(L.lo - 1);
+				if (left)
+				{
+					add(--L.lo);
+					fit();
+				}
+				right = right && L.hi < seg.last && fits(L.hi + 1);
+				if (right)
+				{
+					add(++L.hi);
+					fit();
+				}
+			}
+		}
+}
+
+size_t ReferencePolyline::firstAtOrAfter(double bearing) const
+{
+	const double f = (bearing + M_PI) / (2 * M_PI) * kBuckets;
+	size_t i = m_bucketStart[static_cast<size_t>(std::clamp(f, 0.0, double(kBuckets)))];
+	while (i < m_bearings.size() && m_bearings[i] < bearing) i++;
+	return i;
+}
+
+template <typename Visit>
+void ReferencePolyline::walkOutwards(double bearing, Visit&& visit) const
+{
+	// Points in bearing order, walked from `bearing` outwards on both sides
+	// (wrapping around +-pi). On the way out each point is visited after
+	// the edge that joins it to its neighbour nearer to `bearing`; the
+	// bearing distance passed is the smallest of that item (an edge's
+	// nearer end), never decreasing along a side, so `visit` can stop a
+	// side once nothing farther can win. The edge that straddles `bearing`
+	// is visited once, first.
+	const size_t n = m_points.size();
+	if (n == 0) return;
+	const size_t c = firstAtOrAfter(bearing);
+	auto delta = [&](size_t i) { return std::abs(wrapAngle(m_bearings[i] - bearing)); };
+	const size_t left0 = (c + n - 1) % n, right0 = c % n;
+	if (m_joined[left0] && left0 + 1 == right0) visit(left0, right0, 0.0);
+	bool goRight = true, goLeft = true;
+	size_t seen = 0;
+	for (size_t step = 0; step < n && (goRight || goLeft); step++)
+	{
+		if (goRight)
+		{
+			// The edge from the neighbour nearer to `bearing` first: it is
+			// nearer in bearing than the point.
+			const size_t i = (right0 + step) % n;
+			const size_t prev = (i + n - 1) % n;
+			if (step > 0 && m_joined[prev] && prev + 1 == i && !visit(prev, i, delta(prev)))
+				goRight = false;
+			else if (!visit(i, i, delta(i)))
+				goRight = false;
+			seen++;
+		}
+		if (goLeft && seen < n)
+		{
+			const size_t i = (left0 + n - step) % n;
+			const size_t next = (i + 1) % n;
+			if (step > 0 && m_joined[i] && i + 1 == next && !visit(i, next, delta(next)))
+				goLeft = false;
+			else if (!visit(i, i, delta(i)))
+				goLeft = false;
+			seen++;
+		}
+		if (seen >= n) break;
+	}
+}
+
+bool ReferencePolyline::closestPoint(
+	const Query& q, double maxDistance, Hit& hit, uint32_t hint) const
+{
+	const double qx = q.x, qy = q.y, range = q.range;
+	double best2 = maxDistance * maxDistance, best = maxDistance;
+	// Nothing at a bearing distance D from q is nearer than range sin D (or
+	// range, beyond 90 degrees): past `limit` nothing can beat `best`.
+	auto limitFor = [&](double d) { return d >= range ? M_PI : std::asin(d / range); };
+	double limit = limitFor(best);
+	bool found = false;
+	auto test = [&](size_t a, size_t b) {
+		const ScanPoint& p = m_points[a];
+		double cx = p.x, cy = p.y, t = 0;
+		if (a != b)
+		{
+			const Edge& e = m_edges[a];
+			t = std::clamp(((qx - p.x) * e.ex + (qy - p.y) * e.ey) * e.invLength2, 0.0, 1.0);
+			cx = p.x + t * e.ex;
+			cy = p.y + t * e.ey;
+		}
+		const double d2 = (qx - cx) * (qx - cx) + (qy - cy) * (qy - cy);
+		if (d2 < best2)
+		{
+			best2 = d2;
+			best = std::sqrt(d2);
+			limit = limitFor(best);
+			hit.x = cx;
+			hit.y = cy;
+			// An interior foot point belongs to the edge; an end point to
+			// the point itself (a lone point, or a corner's vertex).
+			hit.a = static_cast<uint32_t>(a);
+			hit.b = static_cast<uint32_t>(a != b && t > 0 && t < 1 ? b : a);
+			if (a != b && t >= 1) hit.a = hit.b = static_cast<uint32_t>(b);
+			found = true;
+		}
+	};
+	// The hint's edges first: a tight bound from the start.
+	if (hint < m_points.size())
+	{
+		if (m_joined[hint]) test(hint, hint + 1);
+		if (hint > 0 && m_joined[hint - 1]) test(hint - 1, hint);
+		if (!m_edges[hint].joinedEither) test(hint, hint);
+	}
+	walkOutwards(q.bearing, [&](size_t a, size_t b, double minDelta) {
+		if (minDelta >= limit) return false;
+		// A joined point is tested with its edges.
+		if (!(a == b && m_edges[a].joinedEither)) test(a, b);
+		return true;
+	});
+	if (found) hit.distance = best;
+	return found;
+}
+
+bool ReferencePolyline::matchingRangePoint(
+	const Query& q, double window, Hit& hit, uint32_t hint) const
+{
+	const double range = q.range, bearing = q.bearing;
+	double bestDr = std::numeric_limits<double>::infinity(), bestDb = bestDr;
+	double bestR = 0, bestTheta = 0;
+	bool found = false;
+	auto consider = [&](double r, double db, double theta, size_t a, size_t b) {
+		const double dr = std::abs(r - range);
+		if (dr < bestDr || (dr == bestDr && db < bestDb))
+		{
+			bestDr = dr;
+			bestDb = db;
+			bestR = r;
+			bestTheta = theta;
+			hit.a = static_cast<uint32_t>(a);
+			hit.b = static_cast<uint32_t>(b);
+			found = true;
+		}
+	};
+	auto test = [&](size_t a, size_t b) {
+		const Edge& e = m_edges[a];
+		const ScanPoint& p = m_points[a];
+		// Bearings relative to q's, in (-pi, pi].
+		const double b0 = wrapAngle(p.bearing - bearing);
+		if (a == b || !(e.bearingSpan > 0))
+		{
+			if (std::abs(b0) <= window) consider(p.range, std::abs(b0), bearing + b0, a, a);
+			return;
+		}
+		const double b1 = b0 + e.bearingSpan;
+		const double ta = std::max(-window, b0), tb = std::min(window, b1);
+		if (ta > tb) return;
+		// Range linear in bearing along the edge (Lu & Milios' interpolation).
+		const double ra = p.range + e.rangeSlope * (ta - b0);
+		const double rb = p.range + e.rangeSlope * (tb - b0);
+		if ((range - ra) * (range - rb) <= 0 && ra != rb)
+		{
+			const double th = ta + (tb - ta) * (range - ra) / (rb - ra);
+			consider(range, std::abs(th), bearing + th, a, b);
+		}
+		else if (std::abs(ra - range) <= std::abs(rb - range))
+			consider(ra, std::abs(ta), bearing + ta, a, b);
+		else
+			consider(rb, std::abs(tb), bearing + tb, a, b);
+	};
+	// The hint's edges first: an exact match there bounds the walk.
+	if (hint < m_points.size())
+	{
+		if (m_joined[hint]) test(hint, hint + 1);
+		if (hint > 0 && m_joined[hint - 1]) test(hint - 1, hint);
+		if (!m_edges[hint].joinedEither) test(hint, hint);
+	}
+	walkOutwards(bearing, [&](size_t a, size_t b, double minDelta) {
+		// Outside the window, or farther in bearing than an exact match.
+		if (minDelta > window || (bestDr == 0 && minDelta > bestDb)) return false;
+		if (!(a == b && m_edges[a].joinedEither)) test(a, b);	// joined: with its edges
+		return true;
+	});
+	if (!found) return false;
+	hit.x = bestR * std::cos(bestTheta);
+	hit.y = bestR * std::sin(bestTheta);
+	hit.distance = std::sqrt((hit.x - q.x) * (hit.x - q.x) + (hit.y - q.y) * (hit.y - q.y));
+	return true;
+}
+}  // namespace featloc

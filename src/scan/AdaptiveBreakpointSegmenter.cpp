@@ -1,0 +1,59 @@
+#include "featloc/scan/AdaptiveBreakpointSegmenter.h"
+
+#include <cmath>
+
+#include "featloc/config/ConfigValues.h"
+
+namespace featloc
+{
+void AdaptiveBreakpointSegmenter::Parameters::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace featloc::config;
+	readDegrees(c, s, "breakpoint_lambda_DEG", lambda);
+	read(c, s, "breakpoint_sigma_r", sigma_r);
+	require(lambda > 0 && lambda < M_PI / 2, c, s, "breakpoint_lambda_DEG",
+		"must be in (0, 90) degrees");
+	require(sigma_r >= 0, c, s, "breakpoint_sigma_r", "must be >= 0");
+}
+
+void AdaptiveBreakpointSegmenter::Parameters::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	using namespace featloc::config;
+	writeDegrees(c, s, "breakpoint_lambda_DEG", lambda,
+		"[deg] segmentation, eq. (3): most grazing incidence of a surface");
+	write(c, s, "breakpoint_sigma_r", sigma_r,
+		"[m] segmentation, eq. (3): range noise sigma_r");
+}
+
+bool AdaptiveBreakpointSegmenter::isBreakpoint(const ScanPoint& a, const ScanPoint& b) const
+{
+	const double dphi = std::abs(b.bearing - a.bearing);
+	if (dphi >= params.lambda) return true;
+	const double bound =
+		a.range * std::sin(dphi) / std::sin(params.lambda - dphi) + 3 * params.sigma_r;
+	return std::hypot(b.x - a.x, b.y - a.y) > bound;
+}
+
+void AdaptiveBreakpointSegmenter::segment(
+	const ScanPoints& points, std::vector<ScanSegment>& out) const
+{
+	out.clear();
+	const size_t n = points.size();
+	if (n == 0) return;
+	ScanSegment cur;
+	cur.first = 0;
+	for (size_t i = 1; i < n; i++)
+	{
+		if (isBreakpoint(points[i - 1], points[i]))
+		{
+			cur.last = static_cast<uint32_t>(i - 1);
+			out.push_back(cur);
+			cur.first = static_cast<uint32_t>(i);
+		}
+	}
+	cur.last = static_cast<uint32_t>(n - 1);
+	out.push_back(cur);
+}
+}  // namespace featloc

@@ -1,0 +1,41 @@
+#include "featloc/scan/PointNoiseEstimator.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace featloc
+{
+double PointNoiseEstimator::chordDistance(const ScanPoint& a, const ScanPoint& b, const ScanPoint& p)
+{
+	const double ex = b.x - a.x, ey = b.y - a.y;
+	const double len = std::hypot(ex, ey);
+	if (len < 1e-12) return std::hypot(p.x - a.x, p.y - a.y);
+	return std::abs(ex * (p.y - a.y) - ey * (p.x - a.x)) / len;
+}
+
+double PointNoiseEstimator::fromDeviations()
+{
+	if (m_deviations.empty()) return 0;
+	auto mid = m_deviations.begin() + static_cast<long>(m_deviations.size() / 2);
+	std::nth_element(m_deviations.begin(), mid, m_deviations.end());
+	return 1.4826 * *mid / std::sqrt(1.5);
+}
+
+double PointNoiseEstimator::estimate(const std::vector<ScanPoint>& p, size_t first, size_t last)
+{
+	m_deviations.clear();
+	for (size_t k = first + 1; k < last; k++)
+		m_deviations.push_back(chordDistance(p[k - 1], p[k + 1], p[k]));
+	return fromDeviations();
+}
+
+double PointNoiseEstimator::estimate(
+	const std::vector<ScanPoint>& p, const std::vector<ScanSegment>& segments)
+{
+	m_deviations.clear();
+	for (const auto& seg : segments)
+		for (size_t k = seg.first + 1; k < seg.last; k++)
+			m_deviations.push_back(chordDistance(p[k - 1], p[k + 1], p[k]));
+	return fromDeviations();
+}
+}  // namespace featloc
