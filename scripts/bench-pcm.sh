@@ -17,26 +17,21 @@ source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-pcm "$@"
 LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 
-# Two copies of the PCM matcher's parameters: "paper" (as published) and the
-# defaults. featloc-bench takes a config and a matcher list; the paper variant
-# runs through its own config with the two additions switched off.
-sed -e 's/^refinement .*/refinement = none/' -e 's/^pair_gate_chi2 .*/pair_gate_chi2 = 0/' \
-  "$ROOT/config.ini" > "$OUT/paper.ini"
+# Three matchers in one featloc-bench run: PCM as published (the two
+# featloc additions switched off), PCM with them (config.ini), IcpMatcher.
 PROTOCOL="--set ScanMatcher.PcmFeatureMatcher:initial_bounds_source=config --perturb-xy 0.3 --perturb-yaw-deg 10 --seed 1"
+MATCHERS="PCM as published=featloc::PcmFeatureMatcher{refinement=none;pair_gate_chi2=0},PCM + featloc additions=featloc::PcmFeatureMatcher,IcpMatcher=featloc::IcpMatcher"
+HEADER=--header
 
 bench() { # name, data, extra args...
   local name="$1" data="$2"; shift 2
-  "$BIN/featloc-bench" "$OUT/paper.ini" "$data" $PROTOCOL -m featloc::PcmFeatureMatcher \
-    --name "$name" "$@" -j "$OUT/$name-paper.json" | sed 's/featloc::PcmFeatureMatcher/PCM as published/'
-  "$BIN/featloc-bench" "$ROOT/config.ini" "$data" $PROTOCOL \
-    -m featloc::PcmFeatureMatcher,featloc::IcpMatcher --name "$name" "$@" -j "$OUT/$name.json" \
-    | sed 's/featloc::PcmFeatureMatcher/PCM + featloc additions/; s/featloc::IcpMatcher/IcpMatcher/'
+  "$BIN/featloc-bench" "$ROOT/config.ini" "$data" $PROTOCOL -m "$MATCHERS" $HEADER \
+    --name "$name" "$@" -j "$OUT/$name.json"
+  HEADER=
 }
 
 machine_line
 echo
-echo "| data | matcher | pairs | failed | MAE t_x [mm] | MAE t_y [mm] | MAE w [deg] | median \\|t err\\| [mm] | time/match mean [ms] | median [ms] | iterations | mean NEES |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 for scene in office lab; do
   "$BIN/featloc-sim" "$ROOT/worlds/$scene.ini" --out "$OUT/$scene-1cm" -q \
     --set Laser:range_noise=0.01 > /dev/null

@@ -14,6 +14,7 @@
 
 #include "featloc/app/AppMain.h"
 #include "featloc/app/ConfigCommandLine.h"
+#include "featloc/app/MatcherVariant.h"
 #include "featloc/app/RunConfiguration.h"
 #include "featloc/app/UsageError.h"
 #include "featloc/config/TrackedConfig.h"
@@ -126,7 +127,10 @@ int BenchApp::main(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argGt("g", "ground-truth",
 		"Ground truth for a rawlog (TUM or t x y yaw)", false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> argMatchers("m", "matchers",
-		"Comma-separated matcher classes", false,
+		"Comma-separated matchers, each [LABEL=]CLASS[{key=value;...}]: the class, "
+		"its [ScanMatcher.<Class>] parameters with the overrides on top, and the "
+		"label of its rows",
+		false,
 		"featloc::PcmFeatureMatcher,featloc::IcpMatcher", "CLASSES", cmd);
 	TCLAP::ValueArg<std::string> argReference("", "reference-matcher",
 		"Without ground truth: the motion this matcher finds from odometry is "
@@ -162,16 +166,9 @@ int BenchApp::main(int argc, char** argv)
 	TrackedConfig cfg;
 	config.load(cfg, argConfig.getValue());
 	const RunConfiguration rc = RunConfiguration::load(cfg);
+	const auto variants = MatcherVariant::parseList(argMatchers.getValue());
 	std::vector<ScanMatcher::Ptr> matchers;
-	std::vector<std::string> names;
-	mrpt::system::tokenize(argMatchers.getValue(), ",", names);
-	if (names.empty()) throw UsageError("--matchers names no class");
-	for (const auto& n : names)
-	{
-		auto m = ScanMatcherFactory::create(mrpt::system::trim(n));
-		m->loadParams(cfg, ScanMatcherFactory::paramsSection(n));
-		matchers.push_back(m);
-	}
+	for (const auto& v : variants) matchers.push_back(v.create(cfg));
 	cfg.requireAllKeysRead();
 
 	const std::string data = argData.getValue();
@@ -235,11 +232,12 @@ int BenchApp::main(int argc, char** argv)
 	}
 	o.seed = argSeed.getValue();
 	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
-	const auto results = ScanPairBenchmark::run(pairs, matchers, o, [&](size_t done) {
+	auto results = ScanPairBenchmark::run(pairs, matchers, o, [&](size_t done) {
 		if (!config.quiet())
 			progress.update(static_cast<double>(done) / static_cast<double>(pairs.size()), done);
 	});
 	if (!config.quiet()) progress.done(pairs.size());
+	for (size_t m = 0; m < results.size(); m++) results[m].matcher = variants[m].label;
 
 	const std::string name = argName.isSet()
 		? argName.getValue()
@@ -249,8 +247,8 @@ int BenchApp::main(int argc, char** argv)
 		std::printf(
 			"| data | matcher | pairs | failed | MAE t_x [mm] | MAE t_y [mm] | MAE w "
 			"[deg] | median \\|t err\\| [mm] | time/match mean [ms] | median [ms] | "
-			"iterations | mean NEES |\n");
-		std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+			"iterations | mean NEES | NEES in 95%% bound |\n");
+		std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 	}
 	nlohmann::json j;
 	j["data"] = data;
@@ -264,17 +262,20 @@ int BenchApp::main(int argc, char** argv)
 	for (const auto& r : results)
 	{
 		std::printf(
-			"| %s | %s | %zu | %.1f%% | %.2f | %.2f | %.3f | %.2f | %.3f | %.3f | %.1f | %.2f |\n",
+			"| %s | %s | %zu | %.1f%% | %.2f | %.2f | %.3f | %.2f | %.3f | %.3f | %.1f | %.2f | %.0f%% "
+			"|\n",
 			name.c_str(), r.matcher.c_str(), r.pairs,
 			100.0 * static_cast<double>(r.failures) / static_cast<double>(r.pairs),
 			r.maeX * 1e3, r.maeY * 1e3, mrpt::RAD2DEG(r.maeYaw), r.medianTrans * 1e3,
-			r.meanTime * 1e3, r.medianTime * 1e3, r.meanIterations, r.meanNees);
+			r.meanTime * 1e3, r.medianTime * 1e3, r.meanIterations, r.meanNees,
+			100 * r.neesWithin95);
 		j["results"].push_back({{"matcher", r.matcher}, {"pairs", r.pairs},
 			{"failures", r.failures}, {"mae_x_m", r.maeX}, {"mae_y_m", r.maeY},
 			{"mae_yaw_deg", mrpt::RAD2DEG(r.maeYaw)}, {"median_trans_err_m", r.medianTrans},
 			{"p95_trans_err_m", r.p95Trans}, {"time_mean_s", r.meanTime},
 			{"time_median_s", r.medianTime}, {"iterations_mean", r.meanIterations},
-			{"nees_mean", r.meanNees}, {"failure_examples", r.failureExamples}});
+			{"nees_mean", r.meanNees}, {"nees_median", r.medianNees},
+			{"nees_within_95", r.neesWithin95}, {"failure_examples", r.failureExamples}});
 	}
 	if (argJson.isSet())
 	{

@@ -6,6 +6,7 @@
 #include <mrpt/random/RandomGenerators.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
 #include "featloc/eval/ErrorStats.h"
@@ -102,7 +103,15 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 		r.meanTime = time.mean;
 		r.medianTime = time.median;
 		r.meanIterations = r.pairs ? a.iterations / static_cast<double>(r.pairs) : 0;
-		r.meanNees = ErrorStats::of(a.nees).mean;
+		const auto nees = ErrorStats::of(a.nees);
+		r.meanNees = nees.mean;
+		r.medianNees = nees.median;
+		// 7.815: the 95% quantile of chi-square with 3 degrees of freedom.
+		r.neesWithin95 = a.nees.empty()
+			? 0.0
+			: static_cast<double>(std::count_if(a.nees.begin(), a.nees.end(),
+				  [](double v) { return v <= 7.815; })) /
+				static_cast<double>(a.nees.size());
 	}
 	return res;
 }

@@ -47,7 +47,7 @@ void CfIdcMatcher::Parameters::saveToConfigFile(
 	write(c, s, "pairing_gate", pairing_gate,
 		"compare only segments that can be the same object under the initial guess (false: the paper)");
 	write(c, s, "segment_gate", segment_gate,
-		"[m] when IDC switches to point-to-line, keep the current segments within this (median) of the reference (0: the paper's pairing decides)");
+		"[m] keep the current segments within this (median) of the reference once IDC has converged, twice this at its switch to point-to-line (0: the paper's pairing decides)");
 	idc.saveToConfigFile(c, s);
 }
 
@@ -208,23 +208,26 @@ void CfIdcMatcher::collectKeptCurrent(const ScanPoints& current)
 				current.points.begin() + s.segment.last + 1);
 }
 
-void CfIdcMatcher::reselect(
-	const ScanPoints& reference, const ScanPoints& current, const mrpt::math::TPose2D& x)
+bool CfIdcMatcher::reselect(
+	const ScanPoints& reference, const ScanPoints& current, const mrpt::math::TPose2D& x,
+	double gate)
 {
 	// Kept as they are if the estimate is too poor for the test to leave
 	// enough points (IDC then fails or succeeds on the pairing's choice).
+	// Every segment is judged by geometry now, the small ones too: a door
+	// jamb of three points may be all that fixes the motion along a
+	// corridor, and a person's leg that moved goes either way.
 	const auto currentBefore = m_currentReport, referenceBefore = m_referenceReport;
+	bool referenceChanged = false;
 	for (auto& s : m_referenceReport)
-		if (s.segment.size() >= params.min_segment_points)
-		{
-			s.kept = true;
-			s.reason.clear();
-		}
-	buildReference(reference);
-	const double gate = params.segment_gate;
+	{
+		referenceChanged = referenceChanged || !s.kept;
+		s.kept = true;
+		s.reason.clear();
+	}
+	if (referenceChanged) buildReference(reference);
 	for (auto& s : m_currentReport)
 	{
-		if (s.segment.size() < params.min_segment_points) continue;
 		const double d = IterativeDualCorrespondence::medianDistance(
 			m_polyline, &current.points[s.segment.first], s.segment.size(), x, 4 * gate);
 		char buf[200];
@@ -234,16 +237,19 @@ void CfIdcMatcher::reselect(
 			{
 				std::snprintf(buf, sizeof(buf),
 					"kept: lies on the reference at the estimate (median distance %.3f m), "
-					"though its curvature was not paired",
-					d);
+					"though %s",
+					d,
+					s.segment.size() < params.min_segment_points ? "too small for CF-SMA1"
+																  : "its curvature was not paired");
 				s.reason = buf;
 			}
 			s.kept = true;
 			continue;
 		}
 		std::snprintf(buf, sizeof(buf),
-			"moved: median distance %s%.3f m to the reference at the estimate > segment_gate",
-			d >= 4 * gate ? ">= " : "", d);
+			"moved: median distance %s%.3f m to the reference at the estimate > %.3f m "
+			"(segment_gate)",
+			d >= 4 * gate ? ">= " : "", d, gate);
 		s.kept = false;
 		s.reason = buf;
 	}
@@ -254,7 +260,13 @@ void CfIdcMatcher::reselect(
 		m_referenceReport = referenceBefore;
 		buildReference(reference);
 		collectKeptCurrent(current);
+		return false;
 	}
+	for (size_t k = 0; k < m_currentReport.size(); k++)
+		if (m_currentReport[k].kept != currentBefore[k].kept) return true;
+	for (size_t k = 0; k < m_referenceReport.size(); k++)
+		if (m_referenceReport[k].kept != referenceBefore[k].kept) return true;
+	return false;
 }
 
 void CfIdcMatcher::matchPoints(
@@ -315,11 +327,22 @@ void CfIdcMatcher::matchPoints(
 
 	// CF-SMA3: IDC on the kept points; featloc's segment gate at the switch
 	// to the point-to-line phase.
-	IterativeDualCorrespondence::PhaseSwitch reselectAt;
+	IterativeDualCorrespondence::PhaseSwitch reselectAtSwitch;
+	IterativeDualCorrespondence::Revision reselectAtEnd;
 	if (params.segment_gate > 0)
-		reselectAt = [&](const mrpt::math::TPose2D& x) { reselect(reference, current, x); };
+	{
+		// Centimetres off still at the switch: a looser gate there, so that
+		// the few points that fix a weak direction are not judged by an
+		// estimate that is wrong along it; the segment gate proper at the end.
+		reselectAtSwitch = [&](const mrpt::math::TPose2D& x) {
+			reselect(reference, current, x, 2 * params.segment_gate);
+		};
+		reselectAtEnd = [&](const mrpt::math::TPose2D& x) {
+			return reselect(reference, current, x, params.segment_gate);
+		};
+	}
 	IterativeDualCorrespondence::Result r;
-	m_idc.run(m_polyline, m_kept, initialGuess, r, reselectAt);
+	m_idc.run(m_polyline, m_kept, initialGuess, r, reselectAtSwitch, reselectAtEnd);
 
 	result.currentPoints = m_kept.size();
 	result.referencePoints = m_polyline.size();

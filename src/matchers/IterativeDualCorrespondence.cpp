@@ -175,7 +175,8 @@ bool IterativeDualCorrespondence::pointToLineStep(
 
 void IterativeDualCorrespondence::run(
 	const ReferencePolyline& reference, const std::vector<ScanPoint>& current,
-	const mrpt::poses::CPosePDFGaussian& guess, Result& r, const PhaseSwitch& onPointToLine)
+	const mrpt::poses::CPosePDFGaussian& guess, Result& r, const PhaseSwitch& onPointToLine,
+	const Revision& onConverged)
 {
 	r = Result();
 	mrpt::math::TPose2D x(guess.mean.x(), guess.mean.y(), guess.mean.phi());
@@ -213,6 +214,23 @@ void IterativeDualCorrespondence::run(
 	m_closestHint.assign(current.size(), ReferencePolyline::kNoHint);
 	m_rangeHint.assign(current.size(), ReferencePolyline::kNoHint);
 	double lastRotation = M_PI, lastTranslation = 1e9;	// the last dual step
+	// Converged, unless the caller changes the point sets once more at the
+	// point-to-line phase's end (then the iterations go on from there).
+	bool refined = false;
+	auto settled = [&] {
+		if (!dual && onConverged && !refined)
+		{
+			refined = true;
+			if (onConverged(x))
+			{
+				previousErrors.fill(-1);
+				m_closestHint.assign(current.size(), ReferencePolyline::kNoHint);
+				return false;
+			}
+		}
+		converged = true;
+		return true;
+	};
 	for (unsigned int k = 0; k < params.max_iterations && !converged; k++)
 	{
 		const double f = std::min(1.0, static_cast<double>(k) / n_s);
@@ -318,8 +336,8 @@ void IterativeDualCorrespondence::run(
 			repeats = repeats || same(previousErrors[j]);
 		if (repeats)
 		{
-			converged = true;
-			break;
+			if (settled()) break;
+			continue;
 		}
 		std::rotate(previousErrors.rbegin(), previousErrors.rbegin() + 1, previousErrors.rend());
 		previousErrors[0] = error;
@@ -339,8 +357,8 @@ void IterativeDualCorrespondence::run(
 			}
 			if (stepSigmas < params.step_tolerance)
 			{
-				converged = true;
-				break;
+				if (settled()) break;
+				continue;
 			}
 		}
 		else
@@ -360,8 +378,9 @@ void IterativeDualCorrespondence::run(
 			lastRotation = std::abs(w2);
 			lastTranslation = std::hypot(x.x - before.x, x.y - before.y);
 		}
-		converged = atMinima && std::hypot(x.x - before.x, x.y - before.y) < 1e-7 &&
-			std::abs(mrpt::math::wrapToPi(x.phi - before.phi)) < 1e-7;
+		if (atMinima && std::hypot(x.x - before.x, x.y - before.y) < 1e-7 &&
+			std::abs(mrpt::math::wrapToPi(x.phi - before.phi)) < 1e-7 && settled())
+			break;
 	}
 	r.estimate = x;
 	if (!converged)

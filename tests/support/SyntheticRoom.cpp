@@ -5,6 +5,10 @@
 #include <cmath>
 #include <limits>
 
+#include "featloc/config/TrackedConfig.h"
+#include "featloc/sim/RayCaster.h"
+#include "featloc/sim/SimWorld.h"
+
 namespace featloc::test
 {
 SyntheticRoom SyntheticRoom::office()
@@ -39,9 +43,27 @@ SyntheticRoom SyntheticRoom::corridor()
 	return r;
 }
 
+SyntheticRoom SyntheticRoom::fromWorldFile(const std::string& path, double t, bool withPeople)
+{
+	TrackedConfig cfg;
+	cfg.loadFile(path);
+	const SimWorld world = SimWorld::fromConfig(cfg);
+	SyntheticRoom r;
+	for (const auto& w : world.segments()) r.add(w.a.x, w.a.y, w.b.x, w.b.y);
+	std::vector<CircleShape> circles = world.circles();
+	if (withPeople) world.circlesAt(t, circles);
+	for (const auto& c : circles) r.addCircle(c.centre.x, c.centre.y, c.radius);
+	return r;
+}
+
 void SyntheticRoom::add(double x0, double y0, double x1, double y1)
 {
 	m_segments.push_back({x0, y0, x1, y1});
+}
+
+void SyntheticRoom::addCircle(double cx, double cy, double radius)
+{
+	m_circles.push_back({cx, cy, radius});
 }
 
 mrpt::obs::CObservation2DRangeScan::Ptr SyntheticRoom::scan(
@@ -54,26 +76,30 @@ mrpt::obs::CObservation2DRangeScan::Ptr SyntheticRoom::scan(
 	s->maxRange = static_cast<float>(maxRange);
 	s->sensorPose = mrpt::poses::CPose3D(sensorOnRobot);
 	s->resizeScan(beams);
+	std::vector<WallSegment> walls;
+	for (const auto& g : m_segments)
+	{
+		WallSegment w;
+		w.a = {g.x0, g.y0};
+		w.b = {g.x1, g.y1};
+		walls.push_back(w);
+	}
+	std::vector<CircleShape> circles;
+	for (const auto& c : m_circles)
+	{
+		CircleShape shape;
+		shape.centre = {c[0], c[1]};
+		shape.radius = c[2];
+		circles.push_back(shape);
+	}
+	std::vector<double> ranges;
 	const mrpt::poses::CPose2D sensor = robot + sensorOnRobot;
+	RayCaster::cast(sensor.asTPose(), -aperture / 2, aperture / static_cast<double>(beams - 1),
+		beams, maxRange, walls, circles, ranges);
 	for (size_t i = 0; i < beams; i++)
 	{
-		const double a = sensor.phi() - aperture / 2 +
-			aperture * static_cast<double>(i) / static_cast<double>(beams - 1);
-		const double dx = std::cos(a), dy = std::sin(a);
-		double best = std::numeric_limits<double>::infinity();
-		for (const auto& g : m_segments)
-		{
-			// sensor + t (dx,dy) = p0 + u (p1 - p0), t > 0, u in [0,1]
-			const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;
-			const double den = dx * ey - dy * ex;
-			if (std::abs(den) < 1e-12) continue;
-			const double wx = g.x0 - sensor.x(), wy = g.y0 - sensor.y();
-			const double t = (wx * ey - wy * ex) / den;
-			const double u = (wx * dy - wy * dx) / den;
-			if (t > 0 && u >= 0 && u <= 1 && t < best) best = t;
-		}
-		const bool valid = best < maxRange;
-		s->setScanRange(i, static_cast<float>(valid ? best : maxRange));
+		const bool valid = ranges[i] < maxRange;
+		s->setScanRange(i, static_cast<float>(valid ? ranges[i] : maxRange));
 		s->setScanRangeValidity(i, valid);
 	}
 	return s;

@@ -2,12 +2,14 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <string>
 #include <vector>
 
 namespace featloc::test
 {
-/** A few wall segments and exact ray casting, to make noise-free scans with
- * known geometry for unit tests (the full simulator is featloc-sim). */
+/** A few wall segments and circles, scanned by the simulator's exact
+ * RayCaster, to make noise-free scans with known geometry for unit tests
+ * (featloc-sim adds robots, people, noise and rawlogs). */
 class SyntheticRoom
 {
    public:
@@ -21,8 +23,13 @@ class SyntheticRoom
 	static SyntheticRoom office();
 	/** Two long parallel walls (a corridor): motion along it is unobservable. */
 	static SyntheticRoom corridor();
+	/** A featloc-sim world file's walls and obstacles, and (withPeople) its
+	 * people where they are at time t [s] (legs or body: circles). */
+	static SyntheticRoom fromWorldFile(const std::string& path, double t, bool withPeople = true);
 
 	void add(double x0, double y0, double x1, double y1);
+	/** A circle (a pillar, or a person's body). */
+	void addCircle(double cx, double cy, double radius);
 
 	/** Exact scan from the robot at `robot`, sensor mounted at `sensorOnRobot`,
 	 * `beams` beams over `aperture` (centred, counter-clockwise), ranges >=
@@ -34,5 +41,6 @@ class SyntheticRoom
 
    private:
 	std::vector<Segment> m_segments;
+	std::vector<std::vector<double>> m_circles;	 // cx, cy, r
 };
 }  // namespace featloc::test

@@ -58,6 +58,8 @@ class ScanPairBenchmark
 		double meanTime = 0, medianTime = 0;  //!< [s] per match
 		double meanIterations = 0;
 		double meanNees = 0;  //!< over successes (3 for a consistent covariance)
+		double medianNees = 0;	//!< 2.37 for a consistent covariance
+		double neesWithin95 = 0;  //!< share within chi2(3) 95% (0.95 if consistent)
 		std::vector<std::string> failureExamples;
 	};
 

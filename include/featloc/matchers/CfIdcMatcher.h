@@ -42,10 +42,14 @@ namespace featloc
  *   normalised curvature function. So when IDC's dual rules have brought
  *   the estimate near the solution (at the switch to the point-to-line
  *   phase), the segments are chosen again by geometry: every segment of
- *   the current scan large enough is kept if, at the estimate, the median
- *   distance of its points to the reference (all its segments large
- *   enough) is at most segment_gate, and dropped otherwise ("moved");
- *   the point-to-line phase runs on those.
+ *   the current scan, small ones included, is kept if, at the estimate,
+ *   the median distance of its points to the reference (all its segments)
+ *   is at most twice segment_gate, and dropped otherwise ("moved"); the
+ *   point-to-line phase runs on those, and once it has converged the test
+ *   is made again with segment_gate itself (the iterations go on if that
+ *   drops anything). The looser first test leaves the few points that fix
+ *   a weak direction (a door jamb of three points along a corridor) to be
+ *   judged by an estimate that is right along it.
  * If the curvature pairing keeps less than a third of the points of the
  * segments large enough (or fewer than 3 min_pairs), IDC starts from all of
  * them (reported as the reason); if the segment gate would leave fewer than
@@ -121,8 +125,11 @@ class CfIdcMatcher : public ScanMatcher
 	/** CF-SMA2's verdicts in the reports. */
 	void pairSegments();
 	/** segment_gate, at the estimate x: the reference becomes all its
-	 * segments large enough, the current scan those lying on it. */
-	void reselect(const ScanPoints& reference, const ScanPoints& current, const mrpt::math::TPose2D& x);
+	 * segments, the current scan those lying within `gate` of it (median).
+	 * True if that changed the sets. */
+	bool reselect(
+		const ScanPoints& reference, const ScanPoints& current, const mrpt::math::TPose2D& x,
+		double gate);
 	/** The reference polyline of the reference segments marked kept. */
 	void buildReference(const ScanPoints& reference);
 	/** The current points of the segments marked kept. */

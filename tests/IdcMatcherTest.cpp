@@ -1,0 +1,429 @@
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <limits>
+
+#include "featloc/config/ConfigValues.h"
+#include "featloc/config/TrackedConfig.h"
+#include "featloc/core/ConfigError.h"
+#include "featloc/matchers/CfIdcMatcher.h"
+#include "featloc/matchers/IdcMatcher.h"
+#include "featloc/matchers/PointToLineCovariance.h"
+#include "featloc/matchers/ReferencePolyline.h"
+#include "featloc/matchers/ScanMatcherFactory.h"
+#include "featloc/math/DiagonalPoseGaussian.h"
+#include "featloc/registerClasses.h"
+#include "featloc/scan/AdaptiveBreakpointSegmenter.h"
+#include "featloc/sim/SimWorld.h"
+#include "support/ErrorMessage.h"
+#include "support/SyntheticRoom.h"
+
+using namespace featloc;
+using featloc::test::SyntheticRoom;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+const std::string kHall = std::string(FEATLOC_SOURCE_DIR) + "/worlds/hall-people.ini";
+
+mrpt::obs::CObservation2DRangeScan::Ptr noisy(
+	mrpt::obs::CObservation2DRangeScan::Ptr s, mrpt::random::CRandomGenerator& rng, double sigma)
+{
+	for (size_t i = 0; i < s->getScanSize(); i++)
+		if (s->getScanRangeValidity(i))
+			s->setScanRange(
+				i, s->getScanRange(i) + static_cast<float>(sigma * rng.drawGaussian1D_normalized()));
+	return s;
+}
+
+ReferencePolyline polylineOf(const ScanPoints& s)
+{
+	std::vector<ScanSegment> segments;
+	AdaptiveBreakpointSegmenter().segment(s, segments);
+	ReferencePolyline p;
+	p.build(s, segments);
+	return p;
+}
+
+Eigen::Vector3d errorOf(const MatchResult& r, const CPose2D& truth)
+{
+	return {r.estimate.mean.x() - truth.x(), r.estimate.mean.y() - truth.y(),
+		mrpt::math::wrapToPi(r.estimate.mean.phi() - truth.phi())};
+}
+
+/** Matchers with parameter overrides ("key=value" lines). */
+ScanMatcher::Ptr matcher(const std::string& cls, const std::string& overrides = "")
+{
+	registerClasses();
+	auto m = ScanMatcherFactory::create(cls);
+	mrpt::config::CConfigFileMemory cfg;
+	cfg.setContent("[S]\n" + overrides + "\n");
+	m->loadParams(cfg, "S");
+	return m;
+}
+
+const char* kIdcAsPublished = "final_phase=idc";
+const char* kCfIdcAsPublished =
+	"final_phase=idc\npairing_gate=false\nsegment_gate=0\ncurvature_sampling=normalized";
+}  // namespace
+
+TEST(ReferencePolyline, SearchesEqualBruteForce)
+{
+	// A 360-degree noisy scan: bearing windows cross +-pi.
+	mrpt::random::CRandomGenerator rng(3);
+	const SyntheticRoom room = SyntheticRoom::office();
+	const ScanPoints ref =
+		ScanPoints::fromScan(*noisy(room.scan(CPose2D(0.3, -0.2, 0.4), CPose2D(), 720, 2 * M_PI), rng, 0.01));
+	const ReferencePolyline poly = polylineOf(ref);
+	const size_t n = poly.size();
+	for (int trial = 0; trial < 400; trial++)
+	{
+		const double b = rng.drawUniform(-M_PI, M_PI), r = rng.drawUniform(0.3, 5.0);
+		const ReferencePolyline::Query q(r * std::cos(b), r * std::sin(b));
+		const double maxD = rng.drawUniform(0.02, 0.8);
+
+		// Closest point: every edge and lone point.
+		double best = maxD;
+		for (uint32_t i = 0; i < n; i++)
+		{
+			const ScanPoint& p = poly.point(i);
+			double d = std::hypot(q.x - p.x, q.y - p.y);
+			if (poly.joined(i))
+			{
+				const ScanPoint& p2 = poly.point(i + 1);
+				const double ex = p2.x - p.x, ey = p2.y - p.y;
+				const double t =
+					std::clamp(((q.x - p.x) * ex + (q.y - p.y) * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+				d = std::hypot(q.x - p.x - t * ex, q.y - p.y - t * ey);
+			}
+			best = std::min(best, d);
+		}
+		ReferencePolyline::Hit hit;
+		const bool found = poly.closestPoint(q, maxD, hit);
+		ASSERT_EQ(found, best < maxD) << trial;
+		if (found)
+		{
+			EXPECT_NEAR(hit.distance, best, 1e-12) << trial;
+		}
+
+		// Matching range: within +-window of q's bearing, the range closest
+		// to |q| along the edges (range linear in bearing), then the
+		// smallest bearing change.
+		const double window = rng.drawUniform(0.005, 0.4);
+		double bestDr = std::numeric_limits<double>::infinity(), bestDb = bestDr;
+		auto consider = [&](double range, double db) {
+			const double dr = std::abs(range - q.range);
+			if (dr < bestDr - 1e-12 || (std::abs(dr - bestDr) <= 1e-12 && db < bestDb))
+				bestDr = dr, bestDb = db;
+		};
+		for (uint32_t i = 0; i < n; i++)
+		{
+			const ScanPoint& p = poly.point(i);
+			const double b0 = mrpt::math::wrapToPi(p.bearing - q.bearing);
+			if (!poly.joined(i))
+			{
+				if (std::abs(b0) <= window) consider(p.range, std::abs(b0));
+				continue;
+			}
+			const ScanPoint& p2 = poly.point(i + 1);
+			const double b1 = b0 + mrpt::math::wrapToPi(p2.bearing - p.bearing);
+			// Dense sampling of the edge inside the window.
+			for (int k = 0; k <= 2000; k++)
+			{
+				const double th = b0 + (b1 - b0) * k / 2000.0;
+				if (std::abs(th) > window) continue;
+				consider(p.range + (p2.range - p.range) * (th - b0) / (b1 - b0), std::abs(th));
+			}
+		}
+		const bool mrp = poly.matchingRangePoint(q, window, hit);
+		ASSERT_EQ(mrp, std::isfinite(bestDr)) << trial;
+		if (!mrp) continue;
+		// The sampled brute force is exact to the sampling step.
+		EXPECT_NEAR(std::hypot(hit.x, hit.y), q.range, bestDr + 2e-3) << trial;
+		if (bestDr < 1e-9)
+		{
+			const double db = std::abs(mrpt::math::wrapToPi(std::atan2(hit.y, hit.x) - q.bearing));
+			EXPECT_NEAR(db, bestDb, 1e-3) << trial;
+		}
+	}
+}
+
+TEST(PointToLineCovariance, RangeDerivativesEqualFiniteDifferences)
+{
+	mrpt::random::CRandomGenerator rng(4);
+	const SyntheticRoom room = SyntheticRoom::office();
+	const ScanPoints ref =
+		ScanPoints::fromScan(*noisy(room.scan(CPose2D(0.1, 0.2, 0.3)), rng, 0.01));
+	std::vector<ScanSegment> segments;
+	AdaptiveBreakpointSegmenter().segment(ref, segments);
+	const ReferencePolyline poly = polylineOf(ref);
+	const mrpt::math::TPose2D x(0.12, -0.05, 0.07);
+	const double c = std::cos(x.phi), s = std::sin(x.phi);
+	int checked = 0;
+	for (uint32_t a = 0; a + 1 < poly.size() && checked < 25; a += 7)
+	{
+		if (!poly.joined(a)) continue;
+		const auto L = poly.localLine(a);
+		if (L.hi - L.lo < 2) continue;
+		// A current point near the line.
+		ScanPoint p;
+		p.x = 0.9 * L.cx + 0.05;
+		p.y = 0.9 * L.cy - 0.03;
+		p.range = std::hypot(p.x, p.y);
+		p.bearing = std::atan2(p.y, p.x);
+		std::vector<double> dedz;
+		Eigen::Matrix<double, 3, Eigen::Dynamic> mixed;
+		PointToLineCovariance::rangeDerivatives(x, p, L, poly, dedz, &mixed);
+		ASSERT_EQ(dedz.size(), 1 + L.hi - L.lo + 1);
+
+		// Numerically: move one range, rebuild the polyline (same window).
+		auto evaluate = [&](size_t k, double h, Eigen::Vector3d& grad) {
+			ScanPoints moved = ref;
+			ScanPoint q = p;
+			ScanPoint* target = k == 0 ? &q : &moved.points[L.lo + k - 1];
+			target->range += h;
+			target->x = target->range * std::cos(target->bearing);
+			target->y = target->range * std::sin(target->bearing);
+			ReferencePolyline poly2;
+			poly2.build(moved, segments);
+			const auto L2 = poly2.localLine(a);
+			EXPECT_EQ(L2.lo, L.lo);
+			EXPECT_EQ(L2.hi, L.hi);
+			return PointToLineCovariance::residual(x, c, s, q, L2, &grad);
+		};
+		for (size_t k = 0; k < dedz.size(); k++)
+		{
+			const double h = 1e-6;
+			Eigen::Vector3d gp, gm;
+			const double ep = evaluate(k, h, gp), em = evaluate(k, -h, gm);
+			EXPECT_NEAR(dedz[k], (ep - em) / (2 * h), 1e-6) << "edge " << a << " z " << k;
+			const Eigen::Vector3d numeric = (gp - gm) / (2 * h);
+			for (int r = 0; r < 3; r++)
+				EXPECT_NEAR(mixed(r, static_cast<Eigen::Index>(k)), numeric[r], 1e-5)
+					<< "edge " << a << " z " << k << " row " << r;
+		}
+		checked++;
+	}
+	EXPECT_GT(checked, 10);
+}
+
+TEST(IdcMatcher, NoiseFreePairRecoveredFromAPerturbedGuess)
+{
+	const SyntheticRoom room = SyntheticRoom::office();
+	const CPose2D p0(0.3, -0.4, 0.2), motion(0.15, 0.05, mrpt::DEG2RAD(4.0));
+	const auto ref = room.scan(p0, CPose2D(0.2, 0, 0)), cur = room.scan(p0 + motion, CPose2D(0.2, 0, 0));
+	const CPose2D start(motion.x() + 0.05, motion.y() - 0.04, motion.phi() + mrpt::DEG2RAD(4.0));
+	for (const auto& [cls, overrides] : std::vector<std::pair<std::string, std::string>>{
+			 {"featloc::IdcMatcher", ""}, {"featloc::CfIdcMatcher", ""}})
+	{
+		const MatchResult r = matcher(cls, overrides)
+								  ->match(*ref, *cur,
+									  diagonalPoseGaussian(start, 0.05, mrpt::DEG2RAD(5.0)));
+		ASSERT_TRUE(r.success) << cls << ": " << r.failureReason;
+		const Eigen::Vector3d e = errorOf(r, motion);
+		EXPECT_LT(std::hypot(e[0], e[1]), 1e-3) << cls;
+		EXPECT_LT(std::abs(mrpt::RAD2DEG(e[2])), 0.01) << cls;
+		EXPECT_LE(r.iterations, 15u) << cls;
+	}
+	// The paper's IDC converges too, to the fixed point of its two rules:
+	// the range rule's interpolation in polar coordinates biases it by a
+	// fraction of a millimetre (doc/cfidc-matcher.md).
+	for (const auto& [cls, overrides] : std::vector<std::pair<std::string, std::string>>{
+			 {"featloc::IdcMatcher", kIdcAsPublished},
+			 {"featloc::CfIdcMatcher", kCfIdcAsPublished}})
+	{
+		const MatchResult r = matcher(cls, overrides)
+								  ->match(*ref, *cur,
+									  diagonalPoseGaussian(start, 0.05, mrpt::DEG2RAD(5.0)));
+		ASSERT_TRUE(r.success) << cls << " as published: " << r.failureReason;
+		const Eigen::Vector3d e = errorOf(r, motion);
+		EXPECT_LT(std::hypot(e[0], e[1]), 3e-3) << cls;
+		EXPECT_LT(std::abs(mrpt::RAD2DEG(e[2])), 0.05) << cls;
+	}
+}
+
+TEST(IdcMatcher, CovarianceIsConsistentOverNoisyTrials)
+{
+	// The simulator's office floor: scans 0.1-0.3 m apart along the robot's
+	// route (as consecutive scans are), the SICK LMS200 mounted 0.2 m ahead
+	// with 1 cm range noise, initial errors of 3 cm and 3 deg.
+	const std::string world = std::string(FEATLOC_SOURCE_DIR) + "/worlds/office.ini";
+	const SyntheticRoom office = SyntheticRoom::fromWorldFile(world, 0, false);
+	TrackedConfig cfg;
+	cfg.loadFile(world);
+	std::vector<std::vector<double>> route;
+	cfg.read_string("Robot", "waypoints", "");	// (read by readRows below)
+	config::readRows(cfg, "Robot", "waypoints", route, {2, 3});
+	mrpt::random::CRandomGenerator rng(21);
+	const int trials = 300;
+	for (const std::string cls : {"featloc::IdcMatcher", "featloc::CfIdcMatcher"})
+	{
+		auto m = matcher(cls);
+		double neesSum = 0;
+		int used = 0;
+		for (int t = 0; t < trials; t++)
+		{
+			// A point on a random leg of the route, heading along it.
+			const size_t leg = static_cast<size_t>(rng.drawUniform32bit() % (route.size() - 1));
+			const double f = rng.drawUniform(0.2, 0.8);
+			const double ax = route[leg][0], ay = route[leg][1];
+			const double bx = route[leg + 1][0], by = route[leg + 1][1];
+			if (std::hypot(bx - ax, by - ay) < 1) continue;
+			const CPose2D p0(ax + f * (bx - ax), ay + f * (by - ay),
+				std::atan2(by - ay, bx - ax) + mrpt::DEG2RAD(rng.drawUniform(-20.0, 20.0)));
+			const CPose2D motion(rng.drawUniform(0.1, 0.3), rng.drawUniform(-0.02, 0.02),
+				mrpt::DEG2RAD(rng.drawUniform(-5.0, 5.0)));
+			const auto ref = noisy(office.scan(p0, CPose2D(0.2, 0, 0), 361, M_PI, 80), rng, 0.01);
+			const auto cur =
+				noisy(office.scan(p0 + motion, CPose2D(0.2, 0, 0), 361, M_PI, 80), rng, 0.01);
+			const CPose2D guess(motion.x() + 0.03 * rng.drawGaussian1D_normalized(),
+				motion.y() + 0.03 * rng.drawGaussian1D_normalized(),
+				motion.phi() + mrpt::DEG2RAD(3.0) * rng.drawGaussian1D_normalized());
+			const MatchResult r =
+				m->match(*ref, *cur, diagonalPoseGaussian(guess, 0.03, mrpt::DEG2RAD(3.0)));
+			if (!r.success) continue;  // e.g. a corridor stretch: checked elsewhere
+			const Eigen::Vector3d e = errorOf(r, motion);
+			neesSum += e.dot(r.estimate.cov.asEigen().inverse() * e);
+			used++;
+		}
+		ASSERT_GT(used, trials / 2) << cls;
+		// Average NEES of 3-dof estimates: within the chi-square 95% band.
+		const double mean = neesSum / used, half = 1.96 * std::sqrt(6.0 / used);
+		EXPECT_GT(mean, 3 - half) << cls << " over " << used << " trials";
+		EXPECT_LT(mean, 3 + half) << cls << " over " << used << " trials";
+	}
+}
+
+TEST(CfIdcMatcher, PeopleWhoMovedAreDroppedAndWallsKept)
+{
+	// The robot stands still in the hall; 0.4 s pass between the scans,
+	// during which the people walk on. Their segments must go, the walls and
+	// furniture stay, and the estimate must not move.
+	const double t1 = 22.0, t2 = 22.4;
+	const SyntheticRoom before = SyntheticRoom::fromWorldFile(kHall, t1),
+						after = SyntheticRoom::fromWorldFile(kHall, t2);
+	const CPose2D robot(5, 3.5, mrpt::DEG2RAD(30.0)), sensor(0.2, 0, 0);
+	mrpt::random::CRandomGenerator rng(2);
+	const auto ref = noisy(before.scan(robot, sensor), rng, 0.01);
+	const auto cur = noisy(after.scan(robot, sensor), rng, 0.01);
+
+	CfIdcMatcher m;
+	const MatchResult r = m.match(*ref, *cur, diagonalPoseGaussian(CPose2D(), 0.05, mrpt::DEG2RAD(5.0)));
+	ASSERT_TRUE(r.success) << r.failureReason;
+	const Eigen::Vector3d e = errorOf(r, CPose2D());
+	EXPECT_LT(std::hypot(e[0], e[1]), 3e-3);
+	EXPECT_LT(std::abs(mrpt::RAD2DEG(e[2])), 0.05);
+
+	// Which current points are on a person (in the sensor frame).
+	TrackedConfig cfg;
+	cfg.loadFile(kHall);
+	const SimWorld world = SimWorld::fromConfig(cfg);
+	std::vector<CircleShape> people;
+	for (const auto& a : world.agents())
+	{
+		// Only people who moved more than the segment gate between the scans.
+		const auto s1 = a.stateAt(t1), s2 = a.stateAt(t2);
+		if (std::hypot(s2.position.x - s1.position.x, s2.position.y - s1.position.y) < 0.1) continue;
+		a.shapesAt(t2, people);
+	}
+	ASSERT_FALSE(people.empty());
+	const ScanPoints pts = ScanPoints::fromScan(*cur);
+	const CPose2D sensorInWorld = robot + sensor;
+	auto onPerson = [&](const ScanPoint& p) {
+		const CPose2D w = sensorInWorld + CPose2D(p.x, p.y, 0);
+		for (const auto& c : people)
+			if (std::hypot(w.x() - c.centre.x, w.y() - c.centre.y) < c.radius + 0.05) return true;
+		return false;
+	};
+	size_t personSegments = 0, staticSegments = 0;
+	for (const auto& seg : m.lastCurrentSegments())
+	{
+		if (seg.segment.size() < m.params.min_segment_points) continue;
+		size_t person = 0;
+		for (uint32_t i = seg.segment.first; i <= seg.segment.last; i++) person += onPerson(pts[i]);
+		if (person * 2 > seg.segment.size())
+		{
+			personSegments++;
+			EXPECT_FALSE(seg.kept) << "a person's segment was kept: [" << seg.segment.first << ", "
+								   << seg.segment.last << "]";
+			EXPECT_FALSE(seg.reason.empty());
+		}
+		else if (person == 0)
+		{
+			staticSegments++;
+			EXPECT_TRUE(seg.kept) << "a static segment was dropped: [" << seg.segment.first << ", "
+								  << seg.segment.last << "] " << seg.reason;
+		}
+	}
+	EXPECT_GE(personSegments, 1u);
+	EXPECT_GE(staticSegments, 4u);
+}
+
+TEST(IdcMatcher, CorridorIsFlaggedWithItsUnconstrainedDirection)
+{
+	const SyntheticRoom corridor = SyntheticRoom::corridor();
+	const auto ref = corridor.scan(CPose2D()), cur = corridor.scan(CPose2D(0.3, 0, 0));
+	for (const std::string cls : {"featloc::IdcMatcher", "featloc::CfIdcMatcher"})
+	{
+		const MatchResult r = matcher(cls)->match(
+			*ref, *cur, diagonalPoseGaussian(CPose2D(0.25, 0.02, 0.01), 0.05, 0.05));
+		EXPECT_FALSE(r.success) << cls;
+		EXPECT_NE(r.failureReason.find("translation along direction (1.00, 0.00)"), std::string::npos)
+			<< cls << ": " << r.failureReason;
+	}
+}
+
+TEST(IdcMatcher, FailuresAreReportedWithAReason)
+{
+	const SyntheticRoom room = SyntheticRoom::office();
+	const auto ref = room.scan(CPose2D());
+	// No overlap: the guess puts the current scan 20 m away.
+	const MatchResult far = matcher("featloc::IdcMatcher")
+								->match(*ref, *ref, diagonalPoseGaussian(CPose2D(20, 0, 0), 0.01, 0.01));
+	EXPECT_FALSE(far.success);
+	EXPECT_NE(far.failureReason.find("too few pairs"), std::string::npos) << far.failureReason;
+	// A scan of a handful of isolated points has no segment for CF-IDC.
+	auto sparse = std::make_shared<mrpt::obs::CObservation2DRangeScan>(*ref);
+	for (size_t i = 0; i < sparse->getScanSize(); i++)
+		sparse->setScanRangeValidity(i, i % 40 == 0);
+	const MatchResult none = matcher("featloc::CfIdcMatcher")
+								 ->match(*ref, *sparse, diagonalPoseGaussian(CPose2D(), 0.01, 0.01));
+	EXPECT_FALSE(none.success);
+	EXPECT_NE(none.failureReason.find("no segment of 5 points or more in the current scan"),
+		std::string::npos)
+		<< none.failureReason;
+}
+
+TEST(CfIdcMatcher, ParametersRoundTripAndBadValuesNameTheKey)
+{
+	CfIdcMatcher::Parameters p;
+	p.curvature.sampling = "normalized";
+	p.curvature.length = 128;
+	p.correlation.U_c = 0.55;
+	p.segment_gate = 0.07;
+	p.idc.final_phase = "idc";
+	p.idc.min_bearing_window = mrpt::DEG2RAD(0.8);
+	mrpt::config::CConfigFileMemory saved;
+	p.saveToConfigFile(saved, "S");
+	TrackedConfig cfg;
+	cfg.loadText(saved.getContent(), "saved.ini");
+	CfIdcMatcher::Parameters back;
+	back.loadFromConfigFile(cfg, "S");
+	cfg.requireAllKeysRead();  // everything saved is read back
+	EXPECT_EQ(back.curvature.sampling, "normalized");
+	EXPECT_EQ(back.curvature.length, 128u);
+	EXPECT_NEAR(back.correlation.U_c, 0.55, 1e-12);
+	EXPECT_NEAR(back.segment_gate, 0.07, 1e-12);
+	EXPECT_EQ(back.idc.final_phase, "idc");
+	EXPECT_NEAR(back.idc.min_bearing_window, mrpt::DEG2RAD(0.8), 1e-12);
+
+	TrackedConfig bad;
+	bad.loadText("[S]\ncurvature_length = 100\n", "bad.ini");
+	const std::string msg = test::errorMessageOf<ConfigError>([&] { back.loadFromConfigFile(bad, "S"); });
+	EXPECT_NE(msg.find("curvature_length"), std::string::npos) << msg;
+	EXPECT_NE(msg.find("power of two"), std::string::npos) << msg;
+}
