@@ -40,7 +40,10 @@ double CurvatureFunction::arcLength(const ScanPoints& s, const ScanSegment& seg)
 {
 	double total = 0;
 	for (uint32_t i = seg.first; i < seg.last; i++)
-		total += std::hypot(s.points[i + 1].x - s.points[i].x, s.points[i + 1].y - s.points[i].y);
+	{
+		const double dx = s.points[i + 1].x - s.points[i].x, dy = s.points[i + 1].y - s.points[i].y;
+		total += std::sqrt(dx * dx + dy * dy);
+	}
 	return total;
 }
 
@@ -60,7 +63,8 @@ void CurvatureFunction::compute(
 	if (n < 2) return;
 	auto pt = [&](size_t k) -> const ScanPoint& { return s.points[seg.first + k]; };
 	auto dist = [&](size_t a, size_t b) {
-		return std::hypot(pt(b).x - pt(a).x, pt(b).y - pt(a).y);
+		const double dx = pt(b).x - pt(a).x, dy = pt(b).y - pt(a).y;
+		return std::sqrt(dx * dx + dy * dy);
 	};
 	m_arc[0] = 0;
 	for (size_t k = 1; k < n; k++) m_arc[k] = m_arc[k - 1] + dist(k - 1, k);

@@ -65,21 +65,20 @@ void CfIdcMatcher::describe(
 	const ScanPoints& scan, std::vector<SegmentReport>& report,
 	std::vector<std::vector<double>>& functions, std::vector<int>& segmentOf)
 {
-	m_segmenter.segment(scan, m_segments);
-	report.assign(m_segments.size(), SegmentReport());
-	functions.resize(m_segments.size());
+	// report holds the segments already (matchPoints).
+	functions.resize(report.size());
 	segmentOf.clear();
 	size_t used = 0;
-	for (size_t k = 0; k < m_segments.size(); k++)
+	for (size_t k = 0; k < report.size(); k++)
 	{
-		report[k].segment = m_segments[k];
-		if (m_segments[k].size() < params.min_segment_points)
+		const ScanSegment& seg = report[k].segment;
+		if (seg.size() < params.min_segment_points)
 		{
-			report[k].reason = "too small (" + std::to_string(m_segments[k].size()) +
-				" points < min_segment_points)";
+			report[k].reason =
+				"too small (" + std::to_string(seg.size()) + " points < min_segment_points)";
 			continue;
 		}
-		m_curvature.compute(scan, m_segments[k], functions[used++], m_curvatureStep);
+		m_curvature.compute(scan, seg, functions[used++], m_curvatureStep);
 		segmentOf.push_back(static_cast<int>(k));
 	}
 	functions.resize(used);
@@ -284,12 +283,18 @@ void CfIdcMatcher::matchPoints(
 	// CF-SMA1. Metric sampling: one step for both scans, coarser than
 	// curvature_step if needed to bound the FFT length.
 	m_curvatureStep = params.curvature.step;
-	for (const auto* scan : {&reference, &current})
+	for (auto [scan, report] : {std::make_pair(&reference, &m_referenceReport),
+			 std::make_pair(&current, &m_currentReport)})
 	{
 		m_segmenter.segment(*scan, m_segments);
-		for (const auto& seg : m_segments)
-			m_curvatureStep = std::max(m_curvatureStep,
-				CurvatureFunction::arcLength(*scan, seg) / kMaxCurvatureSamples);
+		report->assign(m_segments.size(), SegmentReport());
+		for (size_t k = 0; k < m_segments.size(); k++)
+		{
+			(*report)[k].segment = m_segments[k];
+			if (params.curvature.sampling == "metric")
+				m_curvatureStep = std::max(m_curvatureStep,
+					CurvatureFunction::arcLength(*scan, m_segments[k]) / kMaxCurvatureSamples);
+		}
 	}
 	describe(reference, m_referenceReport, m_referenceFunctions, m_referenceSegmentOf);
 	describe(current, m_currentReport, m_currentFunctions, m_currentSegmentOf);

@@ -31,14 +31,22 @@ bool AdaptiveBreakpointSegmenter::isBreakpoint(const ScanPoint& a, const ScanPoi
 {
 	const double dphi = std::abs(b.bearing - a.bearing);
 	if (dphi >= params.lambda) return true;
-	const double bound =
-		a.range * std::sin(dphi) / std::sin(params.lambda - dphi) + 3 * params.sigma_r;
-	return std::hypot(b.x - a.x, b.y - a.y) > bound;
+	// The ratio depends on dphi only, which is the scan's angular step for
+	// most neighbours: computed once for it.
+	if (dphi != m_lastDphi)
+	{
+		m_lastDphi = dphi;
+		m_lastRatio = std::sin(dphi) / std::sin(params.lambda - dphi);
+	}
+	const double bound = a.range * m_lastRatio + 3 * params.sigma_r;
+	const double dx = b.x - a.x, dy = b.y - a.y;
+	return dx * dx + dy * dy > bound * bound;
 }
 
 void AdaptiveBreakpointSegmenter::segment(
 	const ScanPoints& points, std::vector<ScanSegment>& out) const
 {
+	m_lastDphi = -1;  // params may have changed
 	out.clear();
 	const size_t n = points.size();
 	if (n == 0) return;

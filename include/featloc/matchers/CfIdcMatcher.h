@@ -111,7 +111,7 @@ class CfIdcMatcher : public ScanMatcher
 		MatchResult& result) override;
 
    private:
-	/** CF-SMA1 for one scan: its segments (reports) and the curvature
+	/** CF-SMA1 for one scan whose segments are in `report`: the curvature
 	 * functions of those large enough; segmentOf[f] is the report index of
 	 * function f. */
 	void describe(

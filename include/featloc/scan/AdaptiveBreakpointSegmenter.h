@@ -52,5 +52,8 @@ class AdaptiveBreakpointSegmenter
 	bool isBreakpoint(const ScanPoint& a, const ScanPoint& b) const;
 
 	Parameters params;
+
+   private:
+	mutable double m_lastDphi = -1, m_lastRatio = 0;  // eq. (3) for the last dphi
 };
 }  // namespace featloc
