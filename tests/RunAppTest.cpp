@@ -409,3 +409,49 @@ TEST(FeatlocBench, PaperProtocolTableOnASimulatedScene)
 	EXPECT_EQ(noGt.exitCode, 2);
 	EXPECT_NE(noGt.output.find("--reference-matcher"), std::string::npos) << noGt.output;
 }
+
+TEST(FeatlocBench, NunezProtocolWithMatcherVariantsSideBySide)
+{
+	// The CF-IDC paper's protocol on a short piece of the hall with people:
+	// same-place pairs, a random motion of mean 1 m and 15 deg applied.
+	TempDir dir;
+	const std::string hall = std::string(FEATLOC_SOURCE_DIR) + "/worlds/hall-people.ini";
+	const CommandResult sim = runCommand(shellQuote(FEATLOC_SIM_EXE) + " " + shellQuote(hall) +
+		" --out " + shellQuote(dir.file("hall")) + " --set Simulation:duration=8 -q");
+	ASSERT_EQ(sim.exitCode, 0) << sim.output;
+	const std::string common = shellQuote(FEATLOC_BENCH_EXE) + " " + shellQuote(kConfig) + " " +
+		shellQuote(dir.file("hall.rawlog")) + " -g " + shellQuote(dir.file("hall.gt.txt")) +
+		" --perturbation gaussian --perturb-xy 0.05 --perturb-yaw-deg 5 -q";
+	const CommandResult r = runCommand(common +
+		" --apply-motion 0.7071,0.7071,15 --header -j " + shellQuote(dir.file("b.json")) +
+		" -m 'IDC as published=featloc::IdcMatcher{final_phase=idc},featloc::CfIdcMatcher'");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("| hall.rawlog | IDC as published | 40 |"), std::string::npos) << r.output;
+	EXPECT_NE(r.output.find("| hall.rawlog | featloc::CfIdcMatcher | 40 |"), std::string::npos)
+		<< r.output;
+	const auto j = readJson(dir.file("b.json"));
+	EXPECT_NEAR(j["applied_motion"]["yaw_deg"].get<double>(), 15, 1e-9);
+	ASSERT_EQ(j["results"].size(), 2u);
+	for (const auto& m : j["results"])
+	{
+		// The moved scans are recovered to millimetres from 50 mm / 5 deg.
+		EXPECT_EQ(m["failures"], 0) << m["matcher"];
+		EXPECT_LT(m["mae_x_m"].get<double>(), 0.006) << m["matcher"];
+		EXPECT_LT(m["mae_yaw_deg"].get<double>(), 0.06) << m["matcher"];
+	}
+
+	// A misspelled override names the key and the one meant; a malformed
+	// motion is a usage error.
+	const CommandResult typo =
+		runCommand(common + " -m 'featloc::CfIdcMatcher{segment_gat=0}'");
+	EXPECT_EQ(typo.exitCode, 2);
+	EXPECT_NE(typo.output.find("segment_gat"), std::string::npos) << typo.output;
+	EXPECT_NE(typo.output.find("did you mean 'segment_gate'"), std::string::npos) << typo.output;
+	const CommandResult motion = runCommand(common + " --apply-motion 1,x,15");
+	EXPECT_EQ(motion.exitCode, 2);
+	EXPECT_NE(motion.output.find("--apply-motion: 'x' is not a number"), std::string::npos)
+		<< motion.output;
+	const CommandResult braces = runCommand(common + " -m 'featloc::IdcMatcher{final_phase=idc'");
+	EXPECT_EQ(braces.exitCode, 2);
+	EXPECT_NE(braces.output.find("unbalanced"), std::string::npos) << braces.output;
+}
