@@ -30,6 +30,11 @@ int EvalApp::main(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argPlot(
 		"p", "plot", "Write a PNG with both trajectories", false, "",
 		"FILE.png", cmd);
+	TCLAP::ValueArg<std::string> argNees(
+		"", "nees-series",
+		"Write the NEES of every pose ('t nees' rows; the estimate needs "
+		"covariances, as poses_cov.txt)",
+		false, "", "FILE", cmd);
 	TCLAP::SwitchArg argJson("j", "json", "Print JSON instead of a table", cmd);
 	TCLAP::ValueArg<double> argMaxDt(
 		"", "max-dt", "Max time difference when associating poses [s]", false,
@@ -54,6 +59,8 @@ int EvalApp::main(int argc, char** argv)
 	{
 		if (argPlot.isSet())
 			throw UsageError("--plot needs a reference trajectory, not relations");
+		if (argNees.isSet())
+			throw UsageError("--nees-series needs a reference trajectory, not relations");
 		rep = evaluator.evaluateRelations(
 			TrajectoryFile::readRelations(argRef.getValue()), est);
 	}
@@ -61,6 +68,14 @@ int EvalApp::main(int argc, char** argv)
 	{
 		const Trajectory ref = TrajectoryFile::read(argRef.getValue(), refFormat);
 		rep = evaluator.evaluate(ref, est);
+		if (argNees.isSet())
+		{
+			if (!rep.hasNees)
+				throw UsageError(
+					"--nees-series: '" + argEst.getValue() +
+					"' has no covariances (use featloc-run's poses_cov.txt)");
+			rep.writeNeesSeries(argNees.getValue());
+		}
 		if (argPlot.isSet())
 		{
 			char title[160];

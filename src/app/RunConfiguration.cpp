@@ -11,6 +11,7 @@ RunConfiguration RunConfiguration::load(const mrpt::config::CConfigFileBase& cfg
 	rc.input.loadFromConfigFile(cfg, InputOptions::kSection);
 	rc.odometry.loadFromConfigFile(cfg, OdometryOptions::kSection);
 	rc.pipeline.loadFromConfigFile(cfg, PipelineOptions::kSection);
+	rc.ekf.loadFromConfigFile(cfg, EkfOptions::kSection);
 	rc.output.loadFromConfigFile(cfg, OutputOptions::kSection);
 	rc.evaluation.loadFromConfigFile(cfg, EvaluationOptions::kSection);
 	rc.matcher = ScanMatcherFactory::createFromConfig(cfg);
@@ -29,6 +30,7 @@ void RunConfiguration::save(mrpt::config::CConfigFileBase& cfg) const
 	input.saveToConfigFile(cfg, InputOptions::kSection);
 	odometry.saveToConfigFile(cfg, OdometryOptions::kSection);
 	pipeline.saveToConfigFile(cfg, PipelineOptions::kSection);
+	ekf.saveToConfigFile(cfg, EkfOptions::kSection);
 	config::write(
 		cfg, ScanMatcherFactory::kSection, "class", matcher->className(),
 		"scan matcher class; parameters in [ScanMatcher.<ClassName>]");

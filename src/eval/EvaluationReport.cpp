@@ -3,6 +3,8 @@
 #include <mrpt/core/bits_math.h>
 
 #include <cstdio>
+#include <fstream>
+#include <stdexcept>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -61,6 +63,15 @@ std::string EvaluationReport::toText() const
 		out << row("ATE rotation", ateRotation, mrpt::RAD2DEG(1.0), "deg");
 		out << row("RPE translation (consec.)", rpeTranslation, 1, "m");
 		out << row("RPE rotation (consec.)", rpeRotation, mrpt::RAD2DEG(1.0), "deg");
+		if (hasNees)
+		{
+			out << row("NEES (estimate's covariance)", nees, 1, "");
+			std::snprintf(buf, sizeof(buf),
+				"  NEES within the 95%% chi-square bound (3 dof): %.1f%% of %zu poses "
+				"(consistent: mean 3, 95%%)\n",
+				100 * neesWithin95, nees.count);
+			out << buf;
+		}
 	}
 	if (hasRelations)
 	{
@@ -104,6 +115,11 @@ std::string EvaluationReport::toJson() const
 		j["ate_rotation"] = rotationJson(ateRotation);
 		j["rpe_translation_m"] = statsJson(rpeTranslation);
 		j["rpe_rotation"] = rotationJson(rpeRotation);
+		if (hasNees)
+		{
+			j["nees"] = statsJson(nees);
+			j["nees_within_95"] = neesWithin95;
+		}
 	}
 	if (hasRelations)
 	{
@@ -113,5 +129,18 @@ std::string EvaluationReport::toJson() const
 		j["relation_rotation"] = rotationJson(relationRotation);
 	}
 	return j.dump(2);
+}
+void EvaluationReport::writeNeesSeries(const std::string& path) const
+{
+	std::ofstream out(path);
+	if (!out) throw std::runtime_error("cannot write '" + path + "'");
+	out << "# NEES of each pose against the reference (3 dof; consistent: mean 3): t nees\n";
+	char buf[64];
+	for (const auto& [t, nees] : neesSeries)
+	{
+		std::snprintf(buf, sizeof(buf), "%.6f %.6g\n", t, nees);
+		out << buf;
+	}
+	if (!out) throw std::runtime_error("error writing '" + path + "'");
 }
 }  // namespace featloc

@@ -1,5 +1,7 @@
 #include "featloc/eval/TrajectoryEvaluator.h"
 
+#include <Eigen/Dense>
+
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/tfest/se2.h>
@@ -155,7 +157,45 @@ EvaluationReport TrajectoryEvaluator::evaluate(
 	rep.ateRotation = ErrorStats::of(rot);
 	rep.rpeTranslation = ErrorStats::of(rpeT);
 	rep.rpeRotation = ErrorStats::of(rpeR);
+	neesOf(reference, estimate, pairs, rep);
 	return rep;
+}
+
+void TrajectoryEvaluator::neesOf(
+	const Trajectory& reference, const Trajectory& estimate,
+	const std::vector<std::pair<size_t, size_t>>& pairs, EvaluationReport& rep) const
+{
+	// The estimator's covariance grows from its first pose, so the estimate
+	// is anchored there (moved so that its first associated pose is the
+	// reference's), not least-squares aligned: the alignment would absorb
+	// part of the very error the covariance describes.
+	const auto& [r0, e0] = pairs.front();
+	const CPose2D anchor = asPose(reference.poses[r0]) - asPose(estimate.poses[e0]);
+	const double c = std::cos(anchor.phi()), s = std::sin(anchor.phi());
+	Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();
+	rot.block<2, 2>(0, 0) << c, -s, s, c;
+	std::vector<double> nees;
+	size_t within = 0;
+	for (size_t k = 1; k < pairs.size(); k++)
+	{
+		const auto& [r, e] = pairs[k];
+		const TimedPose& est = estimate.poses[e];
+		if (!est.hasCovariance) continue;
+		const Eigen::Matrix3d P = rot * est.cov.asEigen() * rot.transpose();
+		const Eigen::LDLT<Eigen::Matrix3d> ldlt(P);
+		if (ldlt.info() != Eigen::Success || !(P.determinant() > 0)) continue;
+		const CPose2D ref = asPose(reference.poses[r]), moved = anchor + asPose(est);
+		const Eigen::Vector3d d(
+			ref.x() - moved.x(), ref.y() - moved.y(), mrpt::math::wrapToPi(ref.phi() - moved.phi()));
+		nees.push_back(d.dot(ldlt.solve(d)));
+		rep.neesSeries.emplace_back(est.t, nees.back());
+		// 7.815: the 95% quantile of chi-square with 3 degrees of freedom.
+		if (nees.back() <= 7.815) within++;
+	}
+	if (nees.empty()) return;
+	rep.hasNees = true;
+	rep.nees = ErrorStats::of(nees);
+	rep.neesWithin95 = static_cast<double>(within) / static_cast<double>(nees.size());
 }
 
 EvaluationReport TrajectoryEvaluator::evaluateRelations(

@@ -1,6 +1,7 @@
 #pragma once
 #include <mrpt/config/CConfigFileBase.h>
 
+#include "featloc/ekf/EkfOptions.h"
 #include "featloc/eval/EvaluationOptions.h"
 #include "featloc/io/InputOptions.h"
 #include "featloc/matchers/ScanMatcher.h"
@@ -20,6 +21,7 @@ struct RunConfiguration
 	PipelineOptions pipeline;
 	OutputOptions output;
 	EvaluationOptions evaluation;
+	EkfOptions ekf;
 	ScanMatcher::Ptr matcher;  //!< always created (keys are validated)
 
 	/** Loads every section. Throws ConfigError on a bad value. (Unknown keys

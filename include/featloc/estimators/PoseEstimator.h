@@ -3,8 +3,11 @@
 #include <mrpt/poses/CPosePDFGaussian.h>
 
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "featloc/ekf/EstimatedLandmark.h"
 #include "featloc/matchers/MatchResult.h"
 #include "featloc/pipeline/ScanStep.h"
 
@@ -43,7 +46,20 @@ class PoseEstimator
 	 * step). */
 	virtual void markKeyframe() {}
 
+	/** The keyframe scan's pose as the estimator knows it now, when it
+	 * keeps refining it (the EKF's clone); otherwise nothing, and the
+	 * pipeline uses the pose estimated when the scan became the keyframe.
+	 * The matcher's guess is the predicted pose seen from this pose. */
+	virtual std::optional<mrpt::poses::CPose2D> currentKeyframePose() const { return {}; }
+
 	/** Current global robot pose with covariance. */
 	virtual const mrpt::poses::CPosePDFGaussian& pose() const = 0;
+
+	/** The point landmarks the estimator keeps (none for most). */
+	virtual std::vector<EstimatedLandmark> landmarks() const { return {}; }
+
+	/** Why the last process() did not use the match ("" if it did, or
+	 * there was none). */
+	virtual std::string lastFallbackReason() const { return ""; }
 };
 }  // namespace featloc

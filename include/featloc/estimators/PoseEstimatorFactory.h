@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "featloc/ekf/EkfOptions.h"
 #include "featloc/estimators/PoseEstimator.h"
 
 namespace featloc
@@ -10,8 +11,9 @@ namespace featloc
 class PoseEstimatorFactory
 {
    public:
-	/** Throws ConfigError listing the known names for an unknown one. */
-	static PoseEstimator::Ptr create(const std::string& name);
+	/** Throws ConfigError listing the known names for an unknown one.
+	 * `ekf`: the [Ekf] options of estimator = ekf. */
+	static PoseEstimator::Ptr create(const std::string& name, const EkfOptions& ekf = {});
 	static std::vector<std::string> knownNames();
 };
 }  // namespace featloc

@@ -3,6 +3,8 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "featloc/eval/ErrorStats.h"
 
@@ -26,6 +28,13 @@ struct EvaluationReport
 	ErrorStats rpeTranslation;	//!< consecutive associated poses [m]
 	ErrorStats rpeRotation;	 //!< [rad]
 
+	// Consistency, when the estimate has covariances.
+	bool hasNees = false;
+	ErrorStats nees;  //!< per pose: 3 on average if consistent
+	double neesWithin95 = 0;  //!< share within chi2(3) 95%: 0.95 if consistent
+	/** Per pose: (estimate's time [s], NEES), in time order. */
+	std::vector<std::pair<double, double>> neesSeries;
+
 	// Relations (Kummerle et al. 2009).
 	bool hasRelations = false;
 	size_t relations = 0, relationsMatched = 0;
@@ -36,5 +45,9 @@ struct EvaluationReport
 	std::string toText() const;
 	/** JSON object. */
 	std::string toJson() const;
+	/** Writes neesSeries as "t nees" rows (for Monte Carlo consistency
+	 * tests over several runs: scripts/bench-ekf.sh). Throws when the file
+	 * cannot be written. */
+	void writeNeesSeries(const std::string& path) const;
 };
 }  // namespace featloc

@@ -15,7 +15,12 @@ namespace featloc
  * - RPE between consecutive associated poses: translation and rotation of
  *   (gt_i^-1 (+) gt_j)^-1 (+) (est_i^-1 (+) est_j);
  * - Kummerle et al. (2009) relations: the same error for given pairs
- *   (t1, t2) with reference relative poses. */
+ *   (t1, t2) with reference relative poses;
+ * - NEES, when the estimate has covariances (poses_cov.txt): e^T P^-1 e of
+ *   every associated pose after the first, the estimate anchored at the
+ *   first associated pose (not aligned: the alignment would absorb part of
+ *   the error the covariance describes), with the share within the 95%
+ *   chi-square bound for 3 dof (0.95 when the covariance is consistent). */
 class TrajectoryEvaluator
 {
    public:
@@ -37,6 +42,10 @@ class TrajectoryEvaluator
 		const Trajectory& estimate) const;
 
    private:
+	void neesOf(
+		const Trajectory& reference, const Trajectory& estimate,
+		const std::vector<std::pair<size_t, size_t>>& pairs, EvaluationReport& rep) const;
+
 	double m_maxDt;
 };
 }  // namespace featloc

@@ -11,8 +11,8 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 {
 	static constexpr const char* kSection = "Pipeline";
 
-	/** "odometry" (dead reckoning) or "matcher" (chained scan matches with
-	 * odometry as prior and fallback). */
+	/** "odometry" (dead reckoning), "matcher" (chained scan matches with
+	 * odometry as prior and fallback) or "ekf" (EkfEstimator). */
 	std::string estimator = "matcher";
 	/** Robot pose at the first scan: x [m], y [m], yaw [rad] in memory
 	 * (degrees in the file). */

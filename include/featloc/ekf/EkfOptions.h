@@ -1,0 +1,39 @@
+#pragma once
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <string>
+
+namespace featloc
+{
+/** `[Ekf]`: the EKF front end (EkfLocalizer, estimator = ekf). */
+struct EkfOptions : public mrpt::config::CLoadableOptions
+{
+	static constexpr const char* kSection = "Ekf";
+
+	/** A scan-matcher motion whose Mahalanobis^2 against the prediction
+	 * exceeds this is not used (21.1: 99.99% for 3 dof; a 99% gate
+	 * drops about one good match in a hundred, and each costs accuracy in
+	 * turns, where odometry is worst). */
+	double matcher_gate_chi2 = 21.1;
+	/** The matcher's covariance is scaled by this before fusion (1: as the
+	 * matcher reports it; MRPT's ICP under-reports by about 2). */
+	double matcher_covariance_scale = 1;
+	/** Probability of the landmark gates: individual (2 dof) and joint
+	 * (2 dof per pair). */
+	double landmark_gate_probability = 0.99;
+	/** An unidentified observation starts a new landmark only when it lies
+	 * outside this (2 dof) probability gate of every landmark; between the
+	 * two gates it is ignored as ambiguous. */
+	double landmark_new_probability = 0.99999;
+	/** jcbb (joint compatibility branch and bound) | nearest (each
+	 * observation its nearest compatible landmark). */
+	std::string data_association = "jcbb";
+	/** A landmark seen only once is removed after this many steps. */
+	unsigned int landmark_probation_steps = 10;
+
+	void loadFromConfigFile(
+		const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+	void saveToConfigFile(
+		mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+}  // namespace featloc

@@ -1,0 +1,352 @@
+#include "featloc/ekf/EkfLocalizer.h"
+
+#include <mrpt/math/distributions.h>
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/poses/CPosePDF.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "featloc/ekf/JointCompatibilityBranchAndBound.h"
+
+namespace featloc
+{
+namespace
+{
+Eigen::Matrix2d rotation(double th)
+{
+	Eigen::Matrix2d R;
+	R << std::cos(th), -std::sin(th), std::sin(th), std::cos(th);
+	return R;
+}
+
+/** dR(th)^T/dth times d. */
+Eigen::Vector2d dRtTimes(double th, const Eigen::Vector2d& d)
+{
+	const double c = std::cos(th), s = std::sin(th);
+	return {-s * d.x() + c * d.y(), -c * d.x() - s * d.y()};
+}
+
+mrpt::poses::CPosePDFGaussian poseAt(const Eigen::VectorXd& x, const Eigen::MatrixXd& P, int k)
+{
+	mrpt::math::CMatrixDouble33 cov;
+	for (int r = 0; r < 3; r++)
+		for (int c = 0; c < 3; c++) cov(r, c) = P(k + r, k + c);
+	return mrpt::poses::CPosePDFGaussian(mrpt::poses::CPose2D(x[k], x[k + 1], x[k + 2]), cov);
+}
+}  // namespace
+
+void EkfLocalizer::reset(const mrpt::poses::CPosePDFGaussian& initial)
+{
+	m_x = Eigen::VectorXd::Zero(kLandmarks);
+	m_P = Eigen::MatrixXd::Zero(kLandmarks, kLandmarks);
+	m_x.segment<3>(kRobot) << initial.mean.x(), initial.mean.y(), initial.mean.phi();
+	m_P.block<3, 3>(kRobot, kRobot) = initial.cov.asEigen();
+	m_info.clear();
+	m_step = 0;
+	cloneKeyframe();
+}
+
+void EkfLocalizer::predict(const mrpt::poses::CPosePDFGaussian& u)
+{
+	const mrpt::poses::CPose2D x(m_x[0], m_x[1], m_x[2]);
+	mrpt::math::CMatrixDouble33 Jx, Ju;
+	mrpt::poses::CPosePDF::jacobiansPoseComposition(x, u.mean, Jx, Ju);
+	const mrpt::poses::CPose2D next = x + u.mean;
+	m_x.segment<3>(kRobot) << next.x(), next.y(), next.phi();
+	const Eigen::Matrix3d A = Jx.asEigen(), B = Ju.asEigen();
+	const Eigen::Index n = m_x.size();
+	// The robot's rows and columns: P_rr and its correlations with the rest.
+	const Eigen::Matrix3d Prr = A * m_P.block<3, 3>(0, 0) * A.transpose() +
+		B * u.cov.asEigen() * B.transpose();
+	const Eigen::MatrixXd Prest = A * m_P.block(0, 3, 3, n - 3);
+	m_P.block<3, 3>(0, 0) = 0.5 * (Prr + Prr.transpose());
+	m_P.block(0, 3, 3, n - 3) = Prest;
+	m_P.block(3, 0, n - 3, 3) = Prest.transpose();
+	m_step++;
+	pruneLandmarks();
+}
+
+void EkfLocalizer::cloneKeyframe()
+{
+	const Eigen::Index n = m_x.size();
+	m_x.segment<3>(kClone) = m_x.segment<3>(kRobot);
+	m_P.block(kClone, 0, 3, n) = m_P.block(kRobot, 0, 3, n);
+	m_P.block(0, kClone, n, 3) = m_P.block(0, kRobot, n, 3);
+	m_P.block<3, 3>(kClone, kClone) = m_P.block<3, 3>(kRobot, kRobot);
+}
+
+void EkfLocalizer::update(
+	const Eigen::MatrixXd& H, const Eigen::VectorXd& nu, const Eigen::MatrixXd& R)
+{
+	const Eigen::MatrixXd PHt = m_P * H.transpose();
+	const Eigen::MatrixXd S = H * PHt + R;
+	const Eigen::LDLT<Eigen::MatrixXd> ldlt(S);
+	const Eigen::MatrixXd K = ldlt.solve(PHt.transpose()).transpose();
+	m_x += K * nu;
+	m_P -= K * S * K.transpose();
+	m_P = 0.5 * (m_P + m_P.transpose()).eval();
+	m_x[kRobot + 2] = mrpt::math::wrapToPi(m_x[kRobot + 2]);
+	m_x[kClone + 2] = mrpt::math::wrapToPi(m_x[kClone + 2]);
+}
+
+EkfLocalizer::MotionUpdate EkfLocalizer::updateRelativeMotion(
+	const mrpt::poses::CPosePDFGaussian& z)
+{
+	// h = x_c^-1 (+) x_r = (R_c^T (t_r - t_c), th_r - th_c).
+	const double thc = m_x[kClone + 2];
+	const Eigen::Vector2d d = m_x.segment<2>(kRobot) - m_x.segment<2>(kClone);
+	const Eigen::Matrix2d Rct = rotation(thc).transpose();
+	const Eigen::Vector2d ht = Rct * d;
+	const double hth = mrpt::math::wrapToPi(m_x[kRobot + 2] - thc);
+	Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, m_x.size());
+	H.block<2, 2>(0, kRobot) = Rct;
+	H(2, kRobot + 2) = 1;
+	H.block<2, 2>(0, kClone) = -Rct;
+	H.block<2, 1>(0, kClone + 2) = dRtTimes(thc, d);
+	H(2, kClone + 2) = -1;
+	Eigen::VectorXd nu(3);
+	nu << z.mean.x() - ht.x(), z.mean.y() - ht.y(), mrpt::math::wrapToPi(z.mean.phi() - hth);
+	const Eigen::MatrixXd R = z.cov.asEigen();
+	const Eigen::MatrixXd S = H * m_P * H.transpose() + R;
+
+	MotionUpdate out;
+	out.mahalanobis2 = nu.dot(S.ldlt().solve(nu));
+	if (!(out.mahalanobis2 <= options.matcher_gate_chi2))
+	{
+		char buf[200];
+		std::snprintf(buf, sizeof(buf),
+			"the match disagrees with the prediction (Mahalanobis^2 %.1f > matcher_gate_chi2 "
+			"%.1f: %.3f m, %.2f deg apart)",
+			out.mahalanobis2, options.matcher_gate_chi2, std::hypot(nu[0], nu[1]),
+			mrpt::RAD2DEG(nu[2]));
+		out.reason = buf;
+		return out;
+	}
+	update(H, nu, R);
+	out.used = true;
+	return out;
+}
+
+Eigen::Vector2d EkfLocalizer::predictObservation(
+	size_t j, Eigen::Matrix<double, 2, 3>* Hr, Eigen::Matrix2d* Hl) const
+{
+	const Eigen::Index k = kLandmarks + 2 * static_cast<Eigen::Index>(j);
+	const double th = m_x[kRobot + 2];
+	const Eigen::Vector2d d = m_x.segment<2>(k) - m_x.segment<2>(kRobot);
+	const Eigen::Matrix2d Rt = rotation(th).transpose();
+	if (Hr)
+	{
+		Hr->block<2, 2>(0, 0) = -Rt;
+		Hr->col(2) = dRtTimes(th, d);
+	}
+	if (Hl) *Hl = Rt;
+	return Rt * d;
+}
+
+void EkfLocalizer::stack(
+	const std::vector<LandmarkObservation>& obs, const std::vector<std::pair<size_t, size_t>>& pairs,
+	Eigen::MatrixXd& H, Eigen::VectorXd& nu, Eigen::MatrixXd& R) const
+{
+	const Eigen::Index m = 2 * static_cast<Eigen::Index>(pairs.size());
+	H = Eigen::MatrixXd::Zero(m, m_x.size());
+	nu.resize(m);
+	R = Eigen::MatrixXd::Zero(m, m);
+	for (size_t a = 0; a < pairs.size(); a++)
+	{
+		const auto [i, j] = pairs[a];
+		Eigen::Matrix<double, 2, 3> Hr;
+		Eigen::Matrix2d Hl;
+		const Eigen::Vector2d h = predictObservation(j, &Hr, &Hl);
+		const Eigen::Index row = 2 * static_cast<Eigen::Index>(a);
+		H.block<2, 3>(row, kRobot) = Hr;
+		H.block<2, 2>(row, kLandmarks + 2 * static_cast<Eigen::Index>(j)) = Hl;
+		nu.segment<2>(row) = obs[i].position - h;
+		R.block<2, 2>(row, row) = obs[i].covariance;
+	}
+}
+
+double EkfLocalizer::jointMahalanobis2(
+	const std::vector<LandmarkObservation>& obs,
+	const std::vector<std::pair<size_t, size_t>>& pairs) const
+{
+	Eigen::MatrixXd H, R;
+	Eigen::VectorXd nu;
+	stack(obs, pairs, H, nu, R);
+	const Eigen::MatrixXd S = H * m_P * H.transpose() + R;
+	return nu.dot(S.ldlt().solve(nu));
+}
+
+EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
+	const std::vector<LandmarkObservation>& obs)
+{
+	LandmarkUpdate out;
+	out.observed = obs.size();
+	const size_t n = obs.size(), L = m_info.size();
+	const double p = options.landmark_gate_probability;
+	const double gate2 = mrpt::math::chi2inv(p, 2);
+	// An observation starts a landmark only if it is implausible for every
+	// known one at this much stricter level: at gate2 alone, 1% of the
+	// observations of known landmarks would each start a duplicate.
+	const double newGate2 = mrpt::math::chi2inv(options.landmark_new_probability, 2);
+
+	// Pairs: known identities directly; the others by gating, then
+	// joint compatibility (or nearest neighbour).
+	std::vector<int> pairing(n, -1);
+	std::vector<std::vector<size_t>> candidates(n);
+	std::vector<char> unknown(n, 0);
+	std::vector<char> nearSome(n, 0);  //!< within newGate2 of some landmark
+	for (size_t i = 0; i < n; i++)
+	{
+		if (obs[i].id >= 0)
+		{
+			// Known identity: its landmark, if the innovation is plausible.
+			for (size_t j = 0; j < L; j++)
+				if (m_info[j].id == obs[i].id)
+				{
+					if (jointMahalanobis2(obs, {{i, j}}) <= gate2)
+						pairing[i] = static_cast<int>(j);
+					else
+					{
+						candidates[i].push_back(j);	 // known but implausible: not a new one
+						out.rejected++;
+					}
+				}
+			continue;
+		}
+		unknown[i] = 1;
+		std::vector<std::pair<double, size_t>> scored;
+		for (size_t j = 0; j < L; j++)
+		{
+			if (m_info[j].id >= 0) continue;  // identified landmarks pair by id only
+			const double d2 = jointMahalanobis2(obs, {{i, j}});
+			if (d2 <= gate2) scored.emplace_back(d2, j);
+			if (d2 <= newGate2) nearSome[i] = 1;
+		}
+		std::sort(scored.begin(), scored.end());
+		for (const auto& [d2, j] : scored) candidates[i].push_back(j);
+	}
+	if (options.data_association == "jcbb")
+	{
+		const auto best = JointCompatibilityBranchAndBound::solve(
+			candidates,
+			[&](const std::vector<std::pair<size_t, size_t>>& pairs) {
+				return jointMahalanobis2(obs, pairs);
+			},
+			[&](size_t k) { return mrpt::math::chi2inv(p, static_cast<unsigned>(2 * k)); });
+		for (size_t i = 0; i < n; i++)
+			if (unknown[i]) pairing[i] = best[i];
+	}
+	else
+	{
+		// Nearest neighbour, the most certain pairs first, each landmark once.
+		std::vector<std::tuple<double, size_t, size_t>> all;
+		for (size_t i = 0; i < n; i++)
+			for (size_t j : candidates[i]) all.emplace_back(jointMahalanobis2(obs, {{i, j}}), i, j);
+		std::sort(all.begin(), all.end());
+		std::vector<char> used(L, 0);
+		for (const auto& [d2, i, j] : all)
+			if (pairing[i] < 0 && !used[j])
+			{
+				pairing[i] = static_cast<int>(j);
+				used[j] = 1;
+			}
+	}
+
+	std::vector<std::pair<size_t, size_t>> pairs;
+	for (size_t i = 0; i < n; i++)
+		if (pairing[i] >= 0) pairs.emplace_back(i, static_cast<size_t>(pairing[i]));
+	if (!pairs.empty())
+	{
+		Eigen::MatrixXd H, R;
+		Eigen::VectorXd nu;
+		stack(obs, pairs, H, nu, R);
+		out.jointMahalanobis2 = nu.dot((H * m_P * H.transpose() + R).ldlt().solve(nu));
+		update(H, nu, R);
+		for (const auto& [i, j] : pairs) m_info[j].observations++;
+		out.associated = pairs.size();
+	}
+	// New landmarks: compatible with nothing (or a new identity).
+	for (size_t i = 0; i < n; i++)
+	{
+		if (pairing[i] >= 0) continue;
+		if (!candidates[i].empty() || nearSome[i])
+		{
+			if (unknown[i]) out.ambiguous++;
+			continue;
+		}
+		addLandmark(obs[i]);
+		out.added++;
+	}
+	return out;
+}
+
+void EkfLocalizer::addLandmark(const LandmarkObservation& o)
+{
+	// Inverse observation model l = t_r + R(th) z, with
+	// G_r = dl/dx_r = [I, dR/dth z], G_z = R(th).
+	const double th = m_x[kRobot + 2], c = std::cos(th), s = std::sin(th);
+	const Eigen::Matrix2d Rr = rotation(th);
+	const Eigen::Vector2d l = m_x.segment<2>(kRobot) + Rr * o.position;
+	Eigen::Matrix<double, 2, 3> Gr;
+	Gr.block<2, 2>(0, 0).setIdentity();
+	Gr.col(2) << -s * o.position.x() - c * o.position.y(), c * o.position.x() - s * o.position.y();
+	const Eigen::Index n = m_x.size();
+	const Eigen::MatrixXd cross = Gr * m_P.block(kRobot, 0, 3, n);	 // 2 x n
+	const Eigen::Matrix2d Pll = Gr * m_P.block<3, 3>(kRobot, kRobot) * Gr.transpose() +
+		Rr * o.covariance * Rr.transpose();
+	m_x.conservativeResize(n + 2);
+	m_x.segment<2>(n) = l;
+	m_P.conservativeResize(n + 2, n + 2);
+	m_P.block(n, 0, 2, n) = cross;
+	m_P.block(0, n, n, 2) = cross.transpose();
+	m_P.block<2, 2>(n, n) = 0.5 * (Pll + Pll.transpose());
+	m_info.push_back({o.id, 1, m_step});
+}
+
+void EkfLocalizer::removeLandmark(size_t j)
+{
+	const Eigen::Index k = kLandmarks + 2 * static_cast<Eigen::Index>(j);
+	const Eigen::Index n = m_x.size(), tail = n - k - 2;
+	m_x.segment(k, tail) = m_x.tail(tail).eval();
+	m_x.conservativeResize(n - 2);
+	// Rows, then columns, shifted over the removed pair.
+	m_P.block(k, 0, tail, n) = m_P.block(k + 2, 0, tail, n).eval();
+	m_P.block(0, k, n, tail) = m_P.block(0, k + 2, n, tail).eval();
+	m_P.conservativeResize(n - 2, n - 2);
+	m_info.erase(m_info.begin() + static_cast<long>(j));
+}
+
+void EkfLocalizer::pruneLandmarks()
+{
+	for (size_t j = m_info.size(); j-- > 0;)
+		if (m_info[j].observations <= 1 && m_step - m_info[j].firstStep > options.landmark_probation_steps)
+			removeLandmark(j);
+}
+
+mrpt::poses::CPosePDFGaussian EkfLocalizer::robotPose() const { return poseAt(m_x, m_P, kRobot); }
+
+mrpt::poses::CPosePDFGaussian EkfLocalizer::keyframePose() const
+{
+	return poseAt(m_x, m_P, kClone);
+}
+
+std::vector<EstimatedLandmark> EkfLocalizer::landmarks() const
+{
+	std::vector<EstimatedLandmark> out;
+	for (size_t j = 0; j < m_info.size(); j++)
+	{
+		const Eigen::Index k = kLandmarks + 2 * static_cast<Eigen::Index>(j);
+		EstimatedLandmark l;
+		l.id = m_info[j].id;
+		l.mean = m_x.segment<2>(k);
+		l.covariance = m_P.block<2, 2>(k, k);
+		l.observations = m_info[j].observations;
+		out.push_back(l);
+	}
+	return out;
+}
+}  // namespace featloc

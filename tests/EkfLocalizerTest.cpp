@@ -1,0 +1,271 @@
+// EkfLocalizer: prediction and updates against hand-computed values,
+// Jacobians against finite differences, gating, landmark initialisation and
+// joint-compatibility association among near-identical landmarks.
+#include <gtest/gtest.h>
+#include <mrpt/math/distributions.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+
+#include "featloc/ekf/EkfLocalizer.h"
+#include "featloc/ekf/JointCompatibilityBranchAndBound.h"
+#include "featloc/math/DiagonalPoseGaussian.h"
+
+using namespace featloc;
+using mrpt::poses::CPose2D;
+using mrpt::poses::CPosePDFGaussian;
+
+namespace
+{
+CPosePDFGaussian gaussian(const CPose2D& mean, double vx, double vy, double vyaw)
+{
+	CPosePDFGaussian g;
+	g.mean = mean;
+	g.cov.setZero();
+	g.cov(0, 0) = vx;
+	g.cov(1, 1) = vy;
+	g.cov(2, 2) = vyaw;
+	return g;
+}
+
+LandmarkObservation observation(double x, double y, double sigma, int64_t id = -1)
+{
+	LandmarkObservation o;
+	o.position = {x, y};
+	o.covariance = Eigen::Matrix2d::Identity() * sigma * sigma;
+	o.id = id;
+	return o;
+}
+}  // namespace
+
+TEST(EkfLocalizer, PredictionComposesOnSE2WithHandComputedCovariance)
+{
+	EkfLocalizer f;
+	// At (1, 2) heading +90 deg, P = diag(a, b, c); move 1 m forward.
+	const double a = 0.01, b = 0.02, c = 0.003;
+	f.reset(gaussian(CPose2D(1, 2, M_PI / 2), a, b, c));
+	f.predict(gaussian(CPose2D(1, 0, 0), 0.04, 0.001, 0.0005));
+	const auto p = f.robotPose();
+	EXPECT_NEAR(p.mean.x(), 1, 1e-12);
+	EXPECT_NEAR(p.mean.y(), 3, 1e-12);
+	EXPECT_NEAR(p.mean.phi(), M_PI / 2, 1e-12);
+	// J_x = [1 0 -1; 0 1 0; 0 0 1] (d/dyaw of the rotated step (-sin, cos)
+	// * 1 m = (-1, 0)), J_u = rotation by 90 deg: the step's forward
+	// variance goes to y, its lateral variance to x.
+	Eigen::Matrix3d expected;
+	expected << a + c + 0.001, 0, -c, 0, b + 0.04, 0, -c, 0, c + 0.0005;
+	EXPECT_LT((p.cov.asEigen() - expected).cwiseAbs().maxCoeff(), 1e-12) << p.cov;
+	// The clone stays where it was, still fully correlated with the old
+	// pose: cov(robot, clone) = J_x P.
+	const Eigen::MatrixXd& P = f.covariance();
+	EXPECT_NEAR(P(0, 3), a, 1e-12);
+	EXPECT_NEAR(P(0, 5), -c, 1e-12);
+	EXPECT_NEAR(P(1, 4), b, 1e-12);
+}
+
+TEST(EkfLocalizer, MatchUpdateIsTheScalarKalmanUpdateWhenTheCloneIsCertain)
+{
+	EkfLocalizer f;
+	f.reset(gaussian(CPose2D(0, 0, 0), 0, 0, 0));
+	f.predict(gaussian(CPose2D(1, 0, 0), 0.04, 0.04, 0.0004));
+	// The matcher says 1.1 m with variance 0.01: gain 0.04 / 0.05 = 0.8.
+	const auto u = f.updateRelativeMotion(gaussian(CPose2D(1.1, -0.05, 0.01), 0.01, 0.01, 0.0001));
+	ASSERT_TRUE(u.used) << u.reason;
+	const auto p = f.robotPose();
+	EXPECT_NEAR(p.mean.x(), 1.08, 1e-9);
+	EXPECT_NEAR(p.mean.y(), -0.04, 1e-9);
+	EXPECT_NEAR(p.mean.phi(), 0.008, 1e-9);
+	EXPECT_NEAR(p.cov(0, 0), 0.008, 1e-12);
+	EXPECT_NEAR(p.cov(1, 1), 0.008, 1e-12);
+	EXPECT_NEAR(p.cov(2, 2), 0.00008, 1e-12);
+	// Mahalanobis^2 of the innovation (0.1, -0.05, 0.01) under S = diag(0.05,
+	// 0.05, 0.0005).
+	EXPECT_NEAR(u.mahalanobis2, 0.01 / 0.05 + 0.0025 / 0.05 + 0.0001 / 0.0005, 1e-9);
+}
+
+TEST(EkfLocalizer, MatchUpdateCorrectsAnUncertainKeyframeToo)
+{
+	// Clone and robot equally uncertain and fully correlated: a relative
+	// motion says nothing about where the keyframe was, only about the
+	// motion since, so the robot's covariance cannot drop below the
+	// clone's.
+	EkfLocalizer f;
+	f.reset(gaussian(CPose2D(0, 0, 0), 0.5, 0.5, 0.01));
+	f.predict(gaussian(CPose2D(1, 0, 0), 0.04, 0.04, 0.0004));
+	ASSERT_TRUE(f.updateRelativeMotion(gaussian(CPose2D(1, 0, 0), 1e-8, 1e-8, 1e-10)).used);
+	const auto r = f.robotPose(), k = f.keyframePose();
+	EXPECT_GE(r.cov(0, 0), k.cov(0, 0) - 1e-9);
+	// ... and with an almost exact match the robot is exactly the keyframe
+	// moved by it: the motion's own uncertainty is gone.
+	const Eigen::MatrixXd& P = f.covariance();
+	const double varMotionX = P(0, 0) + P(3, 3) - 2 * P(0, 3);
+	EXPECT_LT(varMotionX, 1e-7);
+}
+
+TEST(EkfLocalizer, ObservationJacobiansMatchFiniteDifferences)
+{
+	EkfLocalizer f;
+	f.reset(gaussian(CPose2D(0.3, -0.2, 0.7), 0.01, 0.01, 0.001));
+	f.updateLandmarks({observation(2.0, 1.0, 0.05)});
+	ASSERT_EQ(f.landmarkCount(), 1u);
+	f.predict(gaussian(CPose2D(0.5, 0.1, 0.3), 0.01, 0.01, 0.001));
+	Eigen::Matrix<double, 2, 3> Hr;
+	Eigen::Matrix2d Hl;
+	const Eigen::Vector2d h0 = f.predictObservation(0, &Hr, &Hl);
+	// Perturb the state through a copy with a moved robot / landmark: the
+	// observation of the landmark from the moved robot.
+	const Eigen::VectorXd x = f.state();
+	auto observe = [&](const Eigen::VectorXd& s) {
+		const double c = std::cos(s[2]), sn = std::sin(s[2]);
+		const Eigen::Vector2d d = s.segment<2>(6) - s.segment<2>(0);
+		return Eigen::Vector2d(c * d.x() + sn * d.y(), -sn * d.x() + c * d.y());
+	};
+	EXPECT_LT((observe(x) - h0).norm(), 1e-12);
+	const double eps = 1e-7;
+	for (int k = 0; k < 3; k++)
+	{
+		Eigen::VectorXd xp = x;
+		xp[k] += eps;
+		EXPECT_LT(((observe(xp) - h0) / eps - Hr.col(k)).norm(), 1e-5) << "robot " << k;
+	}
+	for (int k = 0; k < 2; k++)
+	{
+		Eigen::VectorXd xp = x;
+		xp[6 + k] += eps;
+		EXPECT_LT(((observe(xp) - h0) / eps - Hl.col(k)).norm(), 1e-5) << "landmark " << k;
+	}
+}
+
+TEST(EkfLocalizer, MatchFarFromThePredictionIsGatedWithAReason)
+{
+	EkfLocalizer f;
+	f.reset(gaussian(CPose2D(0, 0, 0), 0, 0, 0));
+	f.predict(gaussian(CPose2D(1, 0, 0), 0.0004, 0.0004, 1e-5));
+	const auto before = f.robotPose();
+	const auto u = f.updateRelativeMotion(gaussian(CPose2D(1.5, 0, 0), 0.0004, 0.0004, 1e-5));
+	EXPECT_FALSE(u.used);
+	EXPECT_GT(u.mahalanobis2, f.options.matcher_gate_chi2);
+	EXPECT_NE(u.reason.find("Mahalanobis^2"), std::string::npos) << u.reason;
+	EXPECT_NE(u.reason.find("0.500 m"), std::string::npos) << u.reason;
+	EXPECT_EQ(f.robotPose().mean, before.mean);	 // nothing changed
+}
+
+TEST(EkfLocalizer, LandmarkIsInitialisedByTheInverseModelAndRefinedByReobservation)
+{
+	EkfLocalizer f;
+	// Certain robot at (1, 1) heading 90 deg; a landmark 2 m ahead.
+	f.reset(gaussian(CPose2D(1, 1, M_PI / 2), 0, 0, 0));
+	LandmarkObservation o;
+	o.position = {2, 0};
+	o.covariance << 0.01, 0.002, 0.002, 0.04;
+	const auto u1 = f.updateLandmarks({o});
+	EXPECT_EQ(u1.added, 1u);
+	auto l = f.landmarks();
+	ASSERT_EQ(l.size(), 1u);
+	EXPECT_NEAR(l[0].mean.x(), 1, 1e-12);
+	EXPECT_NEAR(l[0].mean.y(), 3, 1e-12);
+	// Robot-frame covariance rotated by 90 deg: x' = -y, y' = x.
+	EXPECT_NEAR(l[0].covariance(0, 0), 0.04, 1e-12);
+	EXPECT_NEAR(l[0].covariance(1, 1), 0.01, 1e-12);
+	EXPECT_NEAR(l[0].covariance(0, 1), -0.002, 1e-12);
+	// The same observation again: two equal measurements halve the
+	// covariance and leave the mean.
+	const auto u2 = f.updateLandmarks({o});
+	EXPECT_EQ(u2.associated, 1u);
+	EXPECT_EQ(u2.added, 0u);
+	l = f.landmarks();
+	ASSERT_EQ(l.size(), 1u);
+	EXPECT_NEAR(l[0].mean.y(), 3, 1e-12);
+	EXPECT_NEAR(l[0].covariance(0, 0), 0.02, 1e-12);
+	EXPECT_NEAR(l[0].covariance(1, 1), 0.005, 1e-12);
+	EXPECT_EQ(l[0].observations, 2u);
+}
+
+TEST(EkfLocalizer, LandmarkSeenOnceIsRemovedAfterProbation)
+{
+	EkfLocalizer f;
+	f.options.landmark_probation_steps = 3;
+	f.reset(gaussian(CPose2D(0, 0, 0), 0, 0, 0));
+	f.updateLandmarks({observation(2, 0, 0.05), observation(0, 3, 0.05)});
+	for (int k = 0; k < 3; k++)
+	{
+		f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+		f.updateLandmarks({observation(2, 0, 0.05)});  // only the first again
+	}
+	EXPECT_EQ(f.landmarkCount(), 2u);
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	ASSERT_EQ(f.landmarkCount(), 1u);
+	EXPECT_NEAR(f.landmarks()[0].mean.x(), 2, 1e-3);
+	EXPECT_EQ(f.state().size(), 8);
+	EXPECT_EQ(f.covariance().rows(), 8);
+}
+
+TEST(EkfLocalizer, KnownIdentityPairsEvenWhenAnotherLandmarkIsNearer)
+{
+	EkfLocalizer f;
+	f.reset(gaussian(CPose2D(0, 0, 0), 0, 0, 0));
+	f.updateLandmarks({observation(3, 0, 0.05, 7), observation(3, 0.3, 0.05, 8)});
+	ASSERT_EQ(f.landmarkCount(), 2u);
+	const auto u = f.updateLandmarks({observation(3, 0.28, 0.05, 8)});
+	EXPECT_EQ(u.associated, 1u);
+	const auto l = f.landmarks();
+	EXPECT_EQ(l[0].observations, 1u);
+	EXPECT_EQ(l[1].observations, 2u);
+	EXPECT_EQ(l[1].id, 8);
+}
+
+// Two landmarks 0.3 m apart, the robot 0.3 m off to the side of where the
+// filter believes (sigma 0.3 m across): each observation is individually
+// compatible with both landmarks, and nearest neighbour pairs the first
+// one with the wrong landmark. The joint test sees that one common offset
+// explains both observations only with the right pairing.
+TEST(EkfLocalizer, JcbbSeparatesNearIdenticalLandmarksWhereNearestNeighbourFails)
+{
+	auto run = [](const std::string& method) {
+		EkfLocalizer f;
+		f.options.data_association = method;
+		f.reset(gaussian(CPose2D(0, 0, 0), 1e-8, 1e-8, 1e-10));
+		f.updateLandmarks({observation(5, 0, 0.01), observation(5, 0.3, 0.01)});
+		// The robot drifts sideways by -0.3 m; the filter predicts no motion
+		// with 0.3 m sigma across.
+		f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 0.09, 1e-8));
+		// From y = -0.3 the landmarks appear 0.3 m further left.
+		f.updateLandmarks({observation(5, 0.3, 0.01), observation(5, 0.6, 0.01)});
+		return f;
+	};
+	const EkfLocalizer jcbb = run("jcbb");
+	EXPECT_NEAR(jcbb.robotPose().mean.y(), -0.3, 0.01);
+	auto l = jcbb.landmarks();
+	ASSERT_EQ(l.size(), 2u);
+	EXPECT_NEAR(l[0].mean.y(), 0, 0.01);
+	EXPECT_NEAR(l[1].mean.y(), 0.3, 0.01);
+	EXPECT_EQ(l[0].observations, 2u);
+	EXPECT_EQ(l[1].observations, 2u);
+
+	// Nearest neighbour pairs the first observation with the second
+	// landmark (a perfect fit on its own), then the second with the first:
+	// the map is corrupted (the landmarks pulled together).
+	const EkfLocalizer nn = run("nearest");
+	l = nn.landmarks();
+	ASSERT_EQ(l.size(), 2u);
+	EXPECT_LT(std::abs(l[1].mean.y() - l[0].mean.y()), 0.2)
+		<< "nearest neighbour was expected to be fooled in this scene";
+}
+
+TEST(JointCompatibilityBranchAndBound, PrefersMorePairsThenSmallerDistance)
+{
+	// Two observations, two landmarks, every pairing individually fine;
+	// only (0->1, 1->0) is jointly compatible.
+	const auto best = JointCompatibilityBranchAndBound::solve(
+		{{0, 1}, {0, 1}},
+		[](const std::vector<std::pair<size_t, size_t>>& pairs) {
+			double d = 0;
+			for (const auto& [i, j] : pairs) d += (i == j) ? 5.0 : 0.5;
+			return d;
+		},
+		[](size_t k) { return mrpt::math::chi2inv(0.99, static_cast<unsigned>(2 * k)); });
+	ASSERT_EQ(best.size(), 2u);
+	EXPECT_EQ(best[0], 1);
+	EXPECT_EQ(best[1], 0);
+}
