@@ -71,7 +71,15 @@ std::string conciseMessage(const std::exception& e)
 		msg = first == std::string::npos ? "" : msg.substr(first);
 		if (!msg.empty()) out += (out.empty() ? "" : " <- ") + msg;
 	}
-	return out.empty() ? text : out;
+	// MRPT quotes what it read as a class name: from a damaged file, raw
+	// bytes. Keep the message printable (and valid UTF-8 for summary.json).
+	std::string msg = out.empty() ? text : out;
+	for (char& c : msg)
+	{
+		const auto u = static_cast<unsigned char>(c);
+		if ((u < 0x20 && c != '\n') || u >= 0x7f) c = '?';
+	}
+	return msg;
 }
 }  // namespace
 

@@ -26,12 +26,15 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"odometry_readings", s.odometryReadings},
 		{"odometry_actions", s.odometryActions},
 		{"steps_without_odometry", s.stepsWithoutOdometry},
+		{"landmark_observations", s.landmarkObservations},
+		{"landmarks_in_map", s.landmarksInMap},
 		{"invalidated_beams", s.invalidatedBeams},
 		{"keyframes", s.keyframes},
 		{"matches", s.matchesAttempted},
 		{"match_failures", s.matchFailures},
 		{"fallbacks_to_odometry", s.fallbacks}};
 	j["failure_examples"] = s.failureExamples;
+	j["rejection_examples"] = s.rejectionExamples;
 	const ErrorStats t = ErrorStats::of(s.matchTimes);
 	j["match_time_s"] = {
 		{"count", t.count}, {"mean", t.mean}, {"median", t.median},
@@ -40,6 +43,10 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 	const ErrorStats it = ErrorStats::of(its);
 	j["match_iterations"] = {
 		{"mean", it.mean}, {"median", it.median}, {"max", it.max}};
+	const ErrorStats e = ErrorStats::of(s.estimatorTimes);
+	j["estimator_time_s"] = {
+		{"count", e.count}, {"mean", e.mean}, {"median", e.median},
+		{"p95", e.p95},		{"max", e.max}};
 	j["wall_time_s"] = s.wallTime;
 	j["outputs"] = outputs;
 	return j;
@@ -49,7 +56,9 @@ void writeJson(const std::string& path, const nlohmann::json& j)
 {
 	std::ofstream out(path);
 	if (!out) throw std::runtime_error("cannot write '" + path + "'");
-	out << j.dump(2) << "\n";
+	// MRPT's exception texts can quote raw bytes of a damaged file: replace
+	// invalid UTF-8 rather than lose the whole summary.
+	out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 }  // namespace
 
