@@ -22,6 +22,7 @@
 #include "featloc/eval/TrajectoryFile.h"
 #include "featloc/eval/TrajectoryPlot.h"
 #include "featloc/output/EstimatedRawlogWriter.h"
+#include "featloc/output/LandmarkTableWriter.h"
 #include "featloc/output/PoseCovarianceWriter.h"
 #include "featloc/output/ScanMapSceneWriter.h"
 #include "featloc/output/SummaryJsonWriter.h"
@@ -60,6 +61,10 @@ void printSummary(const RunStats& s)
 		std::printf(
 			"  %zu steps had no odometry (zero-motion prior used)\n",
 			s.stepsWithoutOdometry);
+	if (s.landmarkObservations || s.landmarksInMap)
+		std::printf(
+			"  %zu range-bearing observations; %zu landmarks in the map at the end\n",
+			s.landmarkObservations, s.landmarksInMap);
 	if (s.matchesAttempted)
 	{
 		const ErrorStats t = ErrorStats::of(s.matchTimes);
@@ -70,6 +75,16 @@ void printSummary(const RunStats& s)
 			t.median * 1e3, t.p95 * 1e3);
 		for (const auto& ex : s.failureExamples)
 			std::printf("    failed: %s\n", ex.c_str());
+		for (const auto& ex : s.rejectionExamples)
+			std::printf("    not used: %s\n", ex.c_str());
+	}
+	if (!s.estimatorTimes.empty())
+	{
+		// Real-time factor at 10 Hz scans: 0.1 s per scan over the time taken.
+		const ErrorStats e = ErrorStats::of(s.estimatorTimes);
+		std::printf(
+			"  estimator %s: mean %.1f us per step (matcher excluded; %.0fx real time at 10 Hz)\n",
+			s.estimator.c_str(), e.mean * 1e6, e.mean > 0 ? 0.1 / e.mean : 0.0);
 	}
 }
 }  // namespace
@@ -143,7 +158,11 @@ int RunApp::main(int argc, char** argv)
 			joinPath(outDir, "estimated.rawlog"), rc.output.pose_label));
 	if (rc.output.write_scene)
 		outputs.push_back(std::make_unique<ScanMapSceneWriter>(
-			joinPath(outDir, "map.3Dscene"), rc.output.scene_scan_decimation));
+			joinPath(outDir, "map.3Dscene"), rc.output.scene_scan_decimation,
+			rc.output.scene_ellipse_every));
+	if (rc.pipeline.estimator == "ekf")
+		outputs.push_back(
+			std::make_unique<LandmarkTableWriter>(joinPath(outDir, "landmarks.txt")));
 	std::vector<std::string> written;
 	for (const auto& o : outputs) written.push_back(o->path());
 	const std::string summaryPath = joinPath(outDir, "summary.json");
@@ -159,7 +178,7 @@ int RunApp::main(int argc, char** argv)
 		  << cfg.content();
 	}
 
-	auto estimator = PoseEstimatorFactory::create(rc.pipeline.estimator);
+	auto estimator = PoseEstimatorFactory::create(rc.pipeline.estimator, rc.ekf);
 	std::printf(
 		"featloc-run: %s (%s)\n  estimator: %s%s\n  results:   %s\n",
 		rawlog.c_str(), sizeText(rawlog).c_str(), estimator->name().c_str(),
@@ -194,12 +213,18 @@ int RunApp::main(int argc, char** argv)
 			EvaluationOptions::kSection, "ground_truth",
 			rc.evaluation.ground_truth);
 		const Trajectory gt = TrajectoryFile::read(gtPath);
-		const Trajectory est =
-			TrajectoryFile::read(joinPath(outDir, "trajectory.tum"));
+		// poses_cov.txt: the same poses with their covariances (NEES).
+		const Trajectory est = TrajectoryFile::read(joinPath(outDir, "poses_cov.txt"));
 		const TrajectoryEvaluator evaluator(rc.evaluation.max_time_difference);
 		const EvaluationReport rep = evaluator.evaluate(gt, est);
 		std::printf("against ground truth:\n%s", rep.toText().c_str());
 		summaryPtr->writeWithEvaluation(stats, rep.toJson());
+		if (rep.hasNees)
+		{
+			const std::string neesPath = joinPath(outDir, "nees.txt");
+			rep.writeNeesSeries(neesPath);
+			written.push_back(neesPath);
+		}
 		const std::string plot = joinPath(outDir, "trajectory.png");
 		char title[128];
 		std::snprintf(

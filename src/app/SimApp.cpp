@@ -67,7 +67,7 @@ int SimApp::main(int argc, char** argv)
 					  scene = prefix + ".3Dscene", picture = prefix + ".png";
 
 	const auto t0 = std::chrono::steady_clock::now();
-	Simulator sim(sc.world, sc.robot, sc.laser, sc.odometry, sc.simulation);
+	Simulator sim(sc.world, sc.robot, sc.laser, sc.odometry, sc.simulation, sc.beacons);
 	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
 	size_t scans = 0;
 	const auto res = sim.run(

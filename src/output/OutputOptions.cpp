@@ -13,6 +13,7 @@ void OutputOptions::loadFromConfigFile(
 	read(c, s, "write_scene", write_scene);
 	read(c, s, "pose_label", pose_label);
 	read(c, s, "scene_scan_decimation", scene_scan_decimation);
+	read(c, s, "scene_ellipse_every", scene_ellipse_every);
 	require(!dir.empty(), c, s, "dir", "a folder name");
 	require(!pose_label.empty(), c, s, "pose_label", "a non-empty label");
 	require(scene_scan_decimation >= 1, c, s, "scene_scan_decimation", ">= 1");
@@ -31,5 +32,7 @@ void OutputOptions::saveToConfigFile(
 		"sensor label of the pose observations in estimated.rawlog");
 	write(c, s, "scene_scan_decimation", scene_scan_decimation,
 		"map.3Dscene shows every N-th scan");
+	write(c, s, "scene_ellipse_every", scene_ellipse_every,
+		"map.3Dscene: robot 3-sigma ellipse every N-th scan (0: none)");
 }
 }  // namespace featloc

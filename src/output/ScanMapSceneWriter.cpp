@@ -1,5 +1,6 @@
 #include "featloc/output/ScanMapSceneWriter.h"
 
+#include <mrpt/opengl/CEllipsoid2D.h>
 #include <mrpt/opengl/CGridPlaneXY.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CPointCloud.h>
@@ -16,9 +17,28 @@
 
 namespace featloc
 {
+namespace
+{
+mrpt::opengl::CEllipsoid2D::Ptr ellipse(
+	const Eigen::Vector2d& mean, const Eigen::Matrix2d& cov)
+{
+	auto e = mrpt::opengl::CEllipsoid2D::Create();
+	mrpt::math::CMatrixDouble22 c;
+	c(0, 0) = cov(0, 0);
+	c(0, 1) = c(1, 0) = 0.5 * (cov(0, 1) + cov(1, 0));
+	c(1, 1) = cov(1, 1);
+	e->setCovMatrixAndMean(c, mrpt::math::CVectorFixedDouble<2>({mean.x(), mean.y()}));
+	e->setQuantiles(3.0f);
+	e->setLocation(0, 0, 0.03);
+	return e;
+}
+}  // namespace
+
 ScanMapSceneWriter::ScanMapSceneWriter(
-	std::string path, unsigned int scanDecimation)
-	: m_path(std::move(path)), m_decimation(std::max(1u, scanDecimation))
+	std::string path, unsigned int scanDecimation, unsigned int ellipseEvery)
+	: m_path(std::move(path)),
+	  m_decimation(std::max(1u, scanDecimation)),
+	  m_ellipseEvery(ellipseEvery)
 {
 }
 
@@ -26,6 +46,13 @@ void ScanMapSceneWriter::onStep(const StepRecord& r)
 {
 	const mrpt::poses::CPose2D robot = r.pose.mean;
 	m_path3d.push_back(mrpt::poses::CPose3D(robot).asTPose());
+	if (r.landmarks) m_landmarks = *r.landmarks;
+	if (m_ellipseEvery > 0 && r.step.scanIndex % m_ellipseEvery == 0)
+	{
+		Eigen::Matrix2d c;
+		c << r.pose.cov(0, 0), r.pose.cov(0, 1), r.pose.cov(1, 0), r.pose.cov(1, 1);
+		m_robotEllipses.emplace_back(Eigen::Vector2d(robot.x(), robot.y()), c);
+	}
 	if (r.step.scanIndex % m_decimation != 0) return;
 	// Points in the sensor frame -> robot frame (sensorPose) -> world.
 	const mrpt::poses::CPose2D sensor =
@@ -73,6 +100,28 @@ void ScanMapSceneWriter::finish(const RunStats&)
 			m_path3d[i - 1].x, m_path3d[i - 1].y, 0.02, m_path3d[i].x,
 			m_path3d[i].y, 0.02);
 	scene.insert(path);
+
+	for (const auto& [mean, cov] : m_robotEllipses)
+	{
+		auto e = ellipse(mean, cov);
+		e->setColor(0.0f, 0.3f, 1.0f, 0.8f);
+		scene.insert(e);
+	}
+	if (!m_landmarks.empty())
+	{
+		auto points = mrpt::opengl::CPointCloud::Create();
+		points->setColor(0.9f, 0.1f, 0.1f);
+		points->setPointSize(6.0f);
+		for (const auto& l : m_landmarks)
+		{
+			points->insertPoint(
+				static_cast<float>(l.mean.x()), static_cast<float>(l.mean.y()), 0.03f);
+			auto e = ellipse(l.mean, l.covariance);
+			e->setColor(0.9f, 0.1f, 0.1f, 0.8f);
+			scene.insert(e);
+		}
+		scene.insert(points);
+	}
 
 	if (!m_path3d.empty())
 	{

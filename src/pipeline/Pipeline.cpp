@@ -23,6 +23,7 @@ void copyAssemblerStats(const ScanStepAssembler& a, RunStats& s)
 	s.odometryReadings = a.odometryReadings();
 	s.odometryActions = a.odometryActions();
 	s.stepsWithoutOdometry = a.stepsWithoutOdometry();
+	s.landmarkObservations = a.landmarkObservations();
 }
 }  // namespace
 
@@ -158,7 +159,7 @@ void Pipeline::processStep(
 			// Guess: previous estimate (+) odometry, relative to the keyframe.
 			mrpt::poses::CPosePDFGaussian guess = m_odometrySinceKeyframe;
 			guess.mean = (m_estimator->pose().mean + step.odometry.mean) -
-				m_keyframePose;
+				m_estimator->currentKeyframePose().value_or(m_keyframePose);
 			match = m_matcher->match(*m_keyframeScan, *step.scan, guess);
 			matchPtr = &match;
 			stats.matchesAttempted++;
@@ -174,8 +175,19 @@ void Pipeline::processStep(
 						"): " + match.failureReason);
 			}
 		}
+		const auto e0 = std::chrono::steady_clock::now();
 		usedMatch = m_estimator->process(step, matchPtr);
-		if (matchPtr && !usedMatch) stats.fallbacks++;
+		stats.estimatorTimes.push_back(
+			std::chrono::duration<double>(std::chrono::steady_clock::now() - e0).count());
+		if (matchPtr && !usedMatch)
+		{
+			stats.fallbacks++;
+			if (match.success && stats.rejectionExamples.size() < kMaxFailureExamples)
+				stats.rejectionExamples.push_back(
+					"scan " + std::to_string(step.scanIndex) + " (entry #" +
+					std::to_string(step.entryIndex) +
+					"): " + m_estimator->lastFallbackReason());
+		}
 	}
 	if (!m_keyframeScan || isNewKeyframe(matchPtr))
 	{
@@ -186,7 +198,9 @@ void Pipeline::processStep(
 		stats.keyframes++;
 	}
 	stats.scans++;
-	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch};
+	const std::vector<EstimatedLandmark> landmarks = m_estimator->landmarks();
+	stats.landmarksInMap = landmarks.size();
+	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch, &landmarks};
 	for (auto* o : outputs) o->onStep(record);
 }
 }  // namespace featloc

@@ -2,10 +2,13 @@
 
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
+#include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "featloc/core/InputError.h"
@@ -125,6 +128,12 @@ void ScanStepAssembler::onObservation(
 		return;
 	}
 
+	if (auto br = std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(obs))
+	{
+		addLandmarks(*br, where);
+		return;
+	}
+
 	if (full()) return;
 	auto scan = m_selector.select(obs, entryIndex);
 	if (!scan) return;
@@ -157,8 +166,45 @@ void ScanStepAssembler::onObservation(
 		p.step.odometry = m_actionSum;
 		m_haveActions = false;
 	}
+	p.step.landmarks = std::move(m_landmarks);
+	m_landmarks.clear();
 	selected.push_back({p.step.scanIndex, p.step.source});
 	m_pending.push_back(std::move(p));
+}
+
+void ScanStepAssembler::addLandmarks(
+	const mrpt::obs::CObservationBearingRange& obs, const std::string& where)
+{
+	if (obs.timestamp == INVALID_TIMESTAMP)
+		throw InputError(
+			where + ": range-bearing observation '" + obs.sensorLabel +
+			"' has no valid timestamp");
+	for (size_t i = 0; i < obs.sensedData.size(); i++)
+	{
+		const auto& m = obs.sensedData[i];
+		const bool finite = std::isfinite(m.range) && std::isfinite(m.yaw) &&
+			(!obs.validCovariances || m.covariance.array().isFinite().all());
+		if (!finite || m.range < 0)
+			throw InputError(
+				where + ": range-bearing observation '" + obs.sensorLabel +
+				"': landmark #" + std::to_string(i) +
+				" has a negative or non-finite range, bearing or covariance");
+	}
+	const auto obsList = LandmarkObservation::fromBearingRange(obs);
+	for (size_t i = 0; i < obsList.size(); i++)
+	{
+		const auto& o = obsList[i];
+		// A zero or indefinite covariance would make the filter claim
+		// certainty it has not got.
+		if (!(o.covariance.determinant() > 0 && o.covariance(0, 0) > 0))
+			throw InputError(
+				where + ": range-bearing observation '" + obs.sensorLabel +
+				"': landmark #" + std::to_string(i) +
+				" has no positive-definite covariance (set sensor_std_range "
+				"and sensor_std_yaw, or per-landmark covariances)");
+	}
+	m_landmarks.insert(m_landmarks.end(), obsList.begin(), obsList.end());
+	m_landmarkObservations++;
 }
 
 void ScanStepAssembler::release(bool endOfLog, std::vector<ScanStep>& ready)

@@ -9,6 +9,7 @@ SimConfiguration SimConfiguration::load(const mrpt::config::CConfigFileBase& cfg
 	sc.robot.loadFromConfigFile(cfg, RobotPathOptions::kSection);
 	sc.laser.loadFromConfigFile(cfg, LaserOptions::kSection);
 	sc.odometry.loadFromConfigFile(cfg, SimOdometryOptions::kSection);
+	sc.beacons.loadFromConfigFile(cfg, BeaconSensorOptions::kSection);
 	sc.world = SimWorld::fromConfig(cfg);
 	return sc;
 }
@@ -19,5 +20,6 @@ void SimConfiguration::saveSettings(mrpt::config::CConfigFileBase& cfg) const
 	robot.saveToConfigFile(cfg, RobotPathOptions::kSection);
 	laser.saveToConfigFile(cfg, LaserOptions::kSection);
 	odometry.saveToConfigFile(cfg, SimOdometryOptions::kSection);
+	beacons.saveToConfigFile(cfg, BeaconSensorOptions::kSection);
 }
 }  // namespace featloc

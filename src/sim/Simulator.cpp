@@ -44,14 +44,19 @@ std::string tumRow(double t, const mrpt::poses::CPose2D& p)
 
 Simulator::Simulator(
 	SimWorld world, RobotPathOptions robot, LaserOptions laser,
-	SimOdometryOptions odometry, SimulationOptions simulation)
+	SimOdometryOptions odometry, SimulationOptions simulation,
+	BeaconSensorOptions beacons)
 	: m_world(std::move(world)),
 	  m_robot(std::move(robot)),
 	  m_laser(std::move(laser)),
 	  m_odometry(std::move(odometry)),
-	  m_sim(simulation)
+	  m_sim(simulation),
+	  m_beacons(std::move(beacons))
 {
 	rng().randomize(m_sim.seed);
+	// Beacons draw from their own sequence: adding them to a world leaves
+	// its laser and odometry exactly as they were (same seed, same draws).
+	m_beaconRng.randomize(m_sim.seed + 0x9e3779b9u);
 	m_trajectory = std::make_unique<RobotTrajectory>(
 		RobotTrajectory::fromOptions(m_robot, m_world, rng()));
 }
@@ -114,7 +119,55 @@ SimulatedScan Simulator::makeScan(size_t index, double t)
 		obs->setScanRangeValidity(i, valid);
 	}
 	s.observation = obs;
+	if (m_beacons.enabled()) s.beacons = makeBeacons(s.robot, t);
 	return s;
+}
+
+mrpt::obs::CObservationBearingRange::Ptr Simulator::makeBeacons(
+	const mrpt::poses::CPose2D& robot, double t)
+{
+	const auto& b = m_beacons;
+	const mrpt::poses::CPose2D mount(b.sensor_pose[0], b.sensor_pose[1], b.sensor_pose[2]);
+	const mrpt::poses::CPose2D sensor = robot + mount;
+	auto obs = std::make_shared<mrpt::obs::CObservationBearingRange>();
+	obs->sensorLabel = b.label;
+	obs->timestamp = mrpt::Clock::fromDouble(m_sim.t0 + t);
+	obs->sensorLocationOnRobot = mrpt::poses::CPose3D(mount);
+	obs->minSensorDistance = 0;
+	obs->maxSensorDistance = static_cast<float>(b.max_range);
+	obs->fieldOfView_yaw = static_cast<float>(b.field_of_view);
+	obs->sensor_std_range = static_cast<float>(b.range_noise);
+	obs->sensor_std_yaw = static_cast<float>(b.bearing_noise);
+	obs->validCovariances = false;
+
+	std::vector<CircleShape> circles;
+	if (b.occlusion) m_world.circlesAt(t, circles);
+	for (size_t i = 0; i < b.points.size(); i++)
+	{
+		// Always draw both numbers (fixed random sequence, as for beams).
+		const double nr = m_beaconRng.drawGaussian1D_normalized();
+		const double nb = m_beaconRng.drawGaussian1D_normalized();
+		const double dx = b.points[i][0] - sensor.x(), dy = b.points[i][1] - sensor.y();
+		const double range = std::hypot(dx, dy);
+		const double bearing = mrpt::math::wrapToPi(std::atan2(dy, dx) - sensor.phi());
+		if (range > b.max_range || std::abs(bearing) > b.field_of_view / 2) continue;
+		if (b.occlusion)
+		{
+			// One beam towards the beacon: something nearer hides it (a
+			// beacon on a wall is still seen: 2 cm tolerance).
+			std::vector<double> hit;
+			RayCaster::cast(
+				sensor.asTPose(), bearing, 1e-3, 1, range, m_world.segments(), circles, hit);
+			if (std::isfinite(hit[0]) && hit[0] < range - 0.02) continue;
+		}
+		mrpt::obs::CObservationBearingRange::TMeasurement m;
+		m.range = static_cast<float>(range + b.range_noise * nr);
+		m.yaw = static_cast<float>(mrpt::math::wrapToPi(bearing + b.bearing_noise * nb));
+		m.pitch = 0;
+		m.landmarkID = b.with_ids ? static_cast<int32_t>(i) : -1;
+		obs->sensedData.push_back(m);
+	}
+	return obs;
 }
 
 mrpt::poses::CPose2D Simulator::noisyIncrement(const mrpt::poses::CPose2D& truth)
@@ -280,14 +333,18 @@ Simulator::Result Simulator::run(
 		prevTruth = truth;
 
 		const SimulatedScan scan = makeScan(k, t);
+		// Beacons first: the pipeline applies them with the next scan.
+		if (scan.beacons) res.beaconMeasurements += scan.beacons->sensedData.size();
 		if (m_sim.format == 1)
 		{
 			mrpt::obs::CSensoryFrame sf;
+			if (scan.beacons) sf.insert(scan.beacons);
 			sf.insert(scan.observation);
 			arch << sf;
 		}
 		else
 		{
+			if (scan.beacons) arch << *scan.beacons;
 			arch << *scan.observation;
 		}
 		gt << tumRow(scan.time, scan.robot);

@@ -20,6 +20,9 @@ struct OutputOptions : public mrpt::config::CLoadableOptions
 	std::string pose_label = "featloc_estimate";
 	/** map.3Dscene holds the points of every N-th scan. */
 	unsigned int scene_scan_decimation = 1;
+	/** map.3Dscene draws the robot's 3-sigma covariance ellipse at every
+	 * N-th scan (0: none); landmarks always get theirs. */
+	unsigned int scene_ellipse_every = 10;
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& c,

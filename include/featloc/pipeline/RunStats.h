@@ -20,6 +20,8 @@ struct RunStats
 	size_t odometryReadings = 0;  //!< CObservationOdometry (format #2)
 	size_t odometryActions = 0;	 //!< CActionRobotMovement2D (format #1)
 	size_t stepsWithoutOdometry = 0;
+	size_t landmarkObservations = 0;  //!< CObservationBearingRange read
+	size_t landmarksInMap = 0;	//!< the estimator's landmarks at the end
 	size_t invalidatedBeams = 0;
 
 	size_t keyframes = 0;  //!< reference scans used by the matcher
@@ -28,8 +30,14 @@ struct RunStats
 	size_t fallbacks = 0;  //!< steps where the estimator used odometry
 	/** A few failure examples: "scan 123: reason". */
 	std::vector<std::string> failureExamples;
+	/** A few examples of successful matches the estimator did not use
+	 * (e.g. the EKF's gate): "scan 123: reason". */
+	std::vector<std::string> rejectionExamples;
 	std::vector<double> matchTimes;	 //!< [s] per match
 	std::vector<unsigned int> matchIterations;
+	/** [s] per step after the first: the estimator's own work (prediction,
+	 * fusion, landmarks), the matcher's time excluded. */
+	std::vector<double> estimatorTimes;
 
 	double wallTime = 0;  //!< [s] whole run, reading and writing included
 	bool ok = true;

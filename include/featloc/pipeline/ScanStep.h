@@ -3,6 +3,9 @@
 #include <mrpt/poses/CPosePDFGaussian.h>
 
 #include <cstddef>
+#include <vector>
+
+#include "featloc/ekf/LandmarkObservation.h"
 
 namespace featloc
 {
@@ -24,6 +27,9 @@ struct ScanStep
 	/** Robot motion from the previous step's scan to this one (robot frame of
 	 * the previous scan), with covariance. */
 	mrpt::poses::CPosePDFGaussian odometry;
+	/** Point landmarks observed since the previous step (range-bearing
+	 * observations of the rawlog; applied at this scan's time). */
+	std::vector<LandmarkObservation> landmarks;
 
 	mrpt::Clock::time_point timestamp() const { return scan->timestamp; }
 };

@@ -27,6 +27,13 @@ namespace featloc
  *   odometry stopped). The increment's covariance comes from the
  *   [Odometry] model.
  *
+ * Landmarks: the points of CObservationBearingRange observations (range,
+ * bearing; pitch ignored) go, in the robot frame with their covariances,
+ * into the next selected scan's step and are applied at that scan's time
+ * (exact when the landmark sensor fires with the laser, as featloc-sim's
+ * does; otherwise the robot's motion in between is an unmodelled error).
+ * A log without laser scans gives no steps, so no landmark updates.
+ *
  * Scan times must strictly increase; a repeat or a step back is an
  * InputError naming the entries (carmen2rawlog in MRPT 2.5.8 stamps every
  * scan with the same time). */
@@ -61,6 +68,7 @@ class ScanStepAssembler
 	size_t odometryReadings() const { return m_odometryReadings; }
 	size_t odometryActions() const { return m_actions; }
 	size_t stepsWithoutOdometry() const { return m_stepsWithoutOdometry; }
+	size_t landmarkObservations() const { return m_landmarkObservations; }
 
    private:
 	struct Pending
@@ -72,6 +80,8 @@ class ScanStepAssembler
 	void onObservation(
 		const mrpt::obs::CObservation::Ptr& obs, size_t entryIndex,
 		std::vector<SelectedScan>& selected);
+	void addLandmarks(
+		const mrpt::obs::CObservationBearingRange& obs, const std::string& where);
 	void onAction(const mrpt::serialization::CSerializable::Ptr& action);
 	void release(bool endOfLog, std::vector<ScanStep>& ready);
 	void completeFromTimeline(ScanStep& step);
@@ -98,6 +108,10 @@ class ScanStepAssembler
 	// Format #2: odometry pose at the previous released scan.
 	std::optional<mrpt::poses::CPose2D> m_prevScanOdometry;
 
+	// Landmark observations since the last selected scan.
+	std::vector<LandmarkObservation> m_landmarks;
+
 	size_t m_odometryReadings = 0, m_actions = 0, m_stepsWithoutOdometry = 0;
+	size_t m_landmarkObservations = 0;
 };
 }  // namespace featloc

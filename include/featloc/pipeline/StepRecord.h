@@ -1,6 +1,9 @@
 #pragma once
 #include <mrpt/poses/CPosePDFGaussian.h>
 
+#include <vector>
+
+#include "featloc/ekf/EstimatedLandmark.h"
 #include "featloc/matchers/MatchResult.h"
 #include "featloc/pipeline/ScanStep.h"
 
@@ -17,5 +20,8 @@ struct StepRecord
 	const MatchResult* match = nullptr;
 	/** The estimator used the match (false: odometry or first scan). */
 	bool usedMatch = false;
+	/** The estimator's point landmarks after this step (empty for all but
+	 * the EKF). */
+	const std::vector<EstimatedLandmark>* landmarks = nullptr;
 };
 }  // namespace featloc

@@ -1,6 +1,7 @@
 #pragma once
 #include <mrpt/config/CConfigFileBase.h>
 
+#include "featloc/sim/BeaconSensorOptions.h"
 #include "featloc/sim/LaserOptions.h"
 #include "featloc/sim/RobotPathOptions.h"
 #include "featloc/sim/SimOdometryOptions.h"
@@ -17,6 +18,7 @@ struct SimConfiguration
 	RobotPathOptions robot;
 	LaserOptions laser;
 	SimOdometryOptions odometry;
+	BeaconSensorOptions beacons;
 	SimWorld world;
 
 	/** Throws ConfigError on a bad value (unknown keys are checked by the

@@ -1,12 +1,16 @@
 #pragma once
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
+#include <mrpt/random/RandomGenerators.h>
 
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <mrpt/obs/CObservationBearingRange.h>
+
+#include "featloc/sim/BeaconSensorOptions.h"
 #include "featloc/sim/LaserOptions.h"
 #include "featloc/sim/RobotPathOptions.h"
 #include "featloc/sim/RobotTrajectory.h"
@@ -26,6 +30,8 @@ struct SimulatedScan
 	/** Exact ranges before noise (double precision); +inf: no return. */
 	std::vector<double> exactRanges;
 	mrpt::obs::CObservation2DRangeScan::Ptr observation;  //!< as written
+	/** The beacons seen with the scan (nullptr without [Beacons]). */
+	mrpt::obs::CObservationBearingRange::Ptr beacons;
 };
 
 /** featloc-sim's engine: drives the robot along its path, casts the laser
@@ -46,13 +52,15 @@ class Simulator
 		size_t scans = 0;
 		size_t odometryReadings = 0;  //!< format #2
 		size_t actions = 0;	 //!< format #1
+		size_t beaconMeasurements = 0;	//!< range-bearing measurements
 		double duration = 0;  //!< [s] from the first to the last scan
 		double pathLength = 0;	//!< [m] driven by the robot
 	};
 
 	Simulator(
 		SimWorld world, RobotPathOptions robot, LaserOptions laser,
-		SimOdometryOptions odometry, SimulationOptions simulation);
+		SimOdometryOptions odometry, SimulationOptions simulation,
+		BeaconSensorOptions beacons = {});
 
 	/** Writes `rawlogPath` and `groundTruthPath`; `onScan` (optional) sees
 	 * every scan. */
@@ -77,6 +85,8 @@ class Simulator
 
    private:
 	SimulatedScan makeScan(size_t index, double t);
+	mrpt::obs::CObservationBearingRange::Ptr makeBeacons(
+		const mrpt::poses::CPose2D& robot, double t);
 	mrpt::poses::CPose2D noisyIncrement(const mrpt::poses::CPose2D& truth);
 	mrpt::serialization::CSerializable::Ptr makeAction(
 		const mrpt::poses::CPose2D& reading, double t);
@@ -86,6 +96,8 @@ class Simulator
 	LaserOptions m_laser;
 	SimOdometryOptions m_odometry;
 	SimulationOptions m_sim;
+	BeaconSensorOptions m_beacons;
+	mrpt::random::CRandomGenerator m_beaconRng;
 	std::unique_ptr<RobotTrajectory> m_trajectory;
 };
 }  // namespace featloc
