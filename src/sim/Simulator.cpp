@@ -160,8 +160,12 @@ mrpt::obs::CObservationBearingRange::Ptr Simulator::makeBeacons(
 				sensor.asTPose(), bearing, 1e-3, 1, range, m_world.segments(), circles, hit);
 			if (std::isfinite(hit[0]) && hit[0] < range - 0.02) continue;
 		}
+		// A beacon within a few noise sigmas could come out at a negative
+		// range, which no sensor reports (and featloc-run rejects).
+		const double measured = range + b.range_noise * nr;
+		if (measured <= 0) continue;
 		mrpt::obs::CObservationBearingRange::TMeasurement m;
-		m.range = static_cast<float>(range + b.range_noise * nr);
+		m.range = static_cast<float>(measured);
 		m.yaw = static_cast<float>(mrpt::math::wrapToPi(bearing + b.bearing_noise * nb));
 		m.pitch = 0;
 		m.landmarkID = b.with_ids ? static_cast<int32_t>(i) : -1;
