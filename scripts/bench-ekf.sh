@@ -38,6 +38,15 @@ run() { # rawlog gt out estimator matcher [extra...]
     --set Output:write_scene=false "$@" >/dev/null
 }
 jqv() { jq -r "$1" "$2"; }
+# FORMAT nees.txt...: the NEES at every scan averaged over the runs (scans
+# every run has), printed as FORMAT with its mean over time and the share
+# of scans inside [LO, HI].
+mc_nees() {
+  local format="$1"; shift
+  awk -v lo="$LO" -v hi="$HI" -v fmt="$format" 'FNR==1{f++} !/^#/{k=FNR; s[k]+=$2; c[k]++}
+    END{for (k in s) if (c[k]==f) {n++; a=s[k]/f; t+=a; if (a>=lo && a<=hi) w++}
+        printf fmt, t/n, 100*w/n}' "$@"
+}
 mean() { awk '{s+=$1; n++} END{printf "%.9g", s/n}'; }
 
 machine_line
@@ -73,9 +82,7 @@ for scene in $SCENES; do
     done
     ates=$(awk '{o+=$1; m+=$2; e+=$3; n++} END{printf "%.4f | %.4f | %.4f", o/n, m/n, e/n}' "$OUT/ate.txt")
     # NEES at every scan averaged over the runs (only scans every run has).
-    nees_stats=$(awk -v lo="$LO" -v hi="$HI" 'FNR==1{f++} !/^#/{k=FNR; s[k]+=$2; c[k]++}
-      END{for (k in s) if (c[k]==f) {n++; a=s[k]/f; t+=a; if (a>=lo && a<=hi) w++}
-          printf "%.2f | %.0f%%", t/n, 100*w/n}' $nees)
+    nees_stats=$(mc_nees "%.2f | %.0f%%" $nees)
     tus=$(echo $us | tr ' ' '\n' | mean)
     rt=$(awk -v t="$tus" 'BEGIN{printf "%.0f", 0.1/t}')
     echo "| $scene | $m | $ates | $wins/$M | $nees_stats | $unused of $attempted | $(awk -v t="$tus" 'BEGIN{printf "%.1f", t*1e6}') | $rt |"
@@ -95,8 +102,6 @@ for s in $(seq 1 "$M"); do
   nees="$nees $base-b-ekf/nees.txt"
   echo "| $s | $(fmt "$(jqv .evaluation.ate_m.rmse "$base-IdcMatcher-ekf/summary.json")" 4) | $(fmt "$(jqv .evaluation.ate_m.rmse "$base-b-ekf/summary.json")" 4) | $(jqv .counts.landmarks_in_map "$base-b-ekf/summary.json") | |"
 done
-awk -v lo="$LO" -v hi="$HI" 'FNR==1{f++} !/^#/{k=FNR; s[k]+=$2; c[k]++}
-  END{for (k in s) if (c[k]==f) {n++; a=s[k]/f; t+=a; if (a>=lo && a<=hi) w++}
-      printf "| all | | | | %.2f (%.0f%% in band) |\n", t/n, 100*w/n}' $nees
+echo "| all | | | | $(mc_nees "%.2f (%.0f%% in band)" $nees) |"
 echo
 echo "results in $OUT"

@@ -53,8 +53,7 @@ std::string simulate(const TempDir& dir, const std::string& world, const std::st
 }
 
 /** ATE RMSE [m] of featloc-run with `estimator` on PREFIX.rawlog. */
-double ate(const TempDir& dir, const std::string& prefix, const std::string& estimator,
-	const std::string& extra = "")
+double ate(const std::string& prefix, const std::string& estimator, const std::string& extra = "")
 {
 	const std::string out = prefix + "-" + estimator;
 	const CommandResult r = runCommand(
@@ -62,7 +61,6 @@ double ate(const TempDir& dir, const std::string& prefix, const std::string& est
 		" --out " + shellQuote(out) + " -q --set Pipeline:estimator=" + estimator +
 		" --set Evaluation:ground_truth=" + shellQuote(prefix + ".gt.txt") + " " + extra);
 	EXPECT_EQ(r.exitCode, 0) << r.output;
-	(void)dir;
 	return readJson(out + "/summary.json")["evaluation"]["ate_m"]["rmse"];
 }
 }  // namespace
@@ -77,8 +75,8 @@ TEST(EkfApp, StraightCorridorEkfBeatsOdometryAndMatcher)
 		dir, "corridor-people.ini",
 		"--seed 2 --set 'Robot:waypoints=[1.5 1.2; 27 1.2]' "
 		"--set Odometry:sigma_yaw_per_m_DEG=1.5 --set Odometry:sigma_xy_per_m=0.04");
-	const double odometry = ate(dir, p, "odometry"), matcher = ate(dir, p, "matcher"),
-				 ekf = ate(dir, p, "ekf");
+	const double odometry = ate(p, "odometry"), matcher = ate(p, "matcher"),
+				 ekf = ate(p, "ekf");
 	// Measured: odometry 0.083 m, matcher 0.024 m, ekf 0.018 m.
 	EXPECT_LT(ekf, odometry) << "matcher " << matcher;
 	EXPECT_LT(ekf, matcher) << "odometry " << odometry;
@@ -94,8 +92,8 @@ TEST(EkfApp, LabLoopEkfBeatsOdometryAndMatcher)
 		dir, "lab.ini",
 		"--seed 4 --set Robot:path=waypoints "
 		"--set 'Robot:waypoints=[2 2; 12 2; 12 5; 9.5 5; 9.5 8.5; 2 8.5; 2 2]'");
-	const double odometry = ate(dir, p, "odometry"), matcher = ate(dir, p, "matcher"),
-				 ekf = ate(dir, p, "ekf");
+	const double odometry = ate(p, "odometry"), matcher = ate(p, "matcher"),
+				 ekf = ate(p, "ekf");
 	// Measured: odometry 0.15 m, matcher 3.0 m, ekf 0.027 m.
 	EXPECT_LT(ekf, odometry) << "matcher " << matcher;
 	EXPECT_LT(ekf, matcher) << "odometry " << odometry;
@@ -133,7 +131,7 @@ TEST(EkfApp, BeaconsBecomeOneLandmarkEachAndImproveTheTrajectory)
 		shellQuote(withBeacons) + " -q --seed 2 --set 'Beacons:points=" + points + "'");
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 
-	const double without = ate(dir, plain, "ekf"), with = ate(dir, withBeacons, "ekf");
+	const double without = ate(plain, "ekf"), with = ate(withBeacons, "ekf");
 	// Measured: 0.078 m without, 0.012 m with.
 	EXPECT_LT(with, 0.5 * without);
 
