@@ -12,6 +12,7 @@
 #include "featloc/eval/TrajectoryFile.h"
 #include "featloc/matchers/IdcMatcher.h"
 #include "featloc/output/RunOutput.h"
+#include "featloc/io/RawlogFileSource.h"
 #include "featloc/pipeline/Pipeline.h"
 #include "featloc/registerClasses.h"
 #include "featloc/sim/SimConfiguration.h"
@@ -158,7 +159,8 @@ TEST(EkfEstimator, FollowsTheTruthWithinItsCovarianceWhenHalfTheMatchesFail)
 		PoseEstimator::Ptr ekf = std::make_unique<EkfEstimator>(EkfOptions{});
 		PoseCollector collector;
 		Pipeline pipeline(InputOptions{}, OdometryOptions{}, po, std::move(ekf), matcher);
-		const RunStats stats = pipeline.run(rawlog, {&collector});
+		RawlogFileSource source(rawlog);
+		const RunStats stats = pipeline.run(source, {&collector});
 		ASSERT_EQ(collector.poses.size(), gt.poses.size());
 		EXPECT_GE(stats.matchFailures, stats.matchesAttempted / 2);
 		EXPECT_GE(stats.fallbacks, stats.matchFailures);

@@ -23,6 +23,7 @@
 #include "featloc/eval/TrajectoryEvaluator.h"
 #include "featloc/eval/TrajectoryFile.h"
 #include "featloc/io/CarmenLogReader.h"
+#include "featloc/io/CarmenLogSource.h"
 #include "featloc/io/RawlogReader.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/pipeline/ProgressBar.h"
@@ -40,15 +41,6 @@ struct Sequence
 	std::vector<mrpt::poses::CPosePDFGaussian> odometry;  //!< since the previous scan
 	std::vector<mrpt::poses::CPose2D> reference;  //!< poses, when known
 };
-
-bool isCarmen(const std::string& path)
-{
-	const std::string p = mrpt::system::lowerCase(path);
-	auto ends = [&](const std::string& s) {
-		return p.size() >= s.size() && p.compare(p.size() - s.size(), s.size(), s) == 0;
-	};
-	return ends(".log") || ends(".log.gz");
-}
 
 Sequence loadCarmen(const std::string& path)
 {
@@ -172,7 +164,7 @@ int BenchApp::main(int argc, char** argv)
 	cfg.requireAllKeysRead();
 
 	const std::string data = argData.getValue();
-	const Sequence seq = isCarmen(data) ? loadCarmen(data) : loadRawlog(data, rc, argGt.getValue());
+	const Sequence seq = CarmenLogSource::handles(data) ? loadCarmen(data) : loadRawlog(data, rc, argGt.getValue());
 	ScanMatcher::Ptr reference;
 	if (seq.reference.empty())
 	{

@@ -1,29 +1,34 @@
 #include "featloc/app/RunApp.h"
 
-#include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/system/filesystem.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "featloc/app/AppMain.h"
 #include "featloc/app/ConfigCommandLine.h"
+#include "featloc/app/InterruptSignals.h"
 #include "featloc/app/RunConfiguration.h"
 #include "featloc/app/UsageError.h"
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/ConfigError.h"
+#include "featloc/core/InputError.h"
 #include "featloc/estimators/PoseEstimatorFactory.h"
 #include "featloc/eval/ErrorStats.h"
 #include "featloc/eval/TrajectoryEvaluator.h"
 #include "featloc/eval/TrajectoryFile.h"
 #include "featloc/eval/TrajectoryPlot.h"
+#include "featloc/io/CarmenLogSource.h"
+#include "featloc/io/EntrySource.h"
+#include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/output/EstimatedRawlogWriter.h"
 #include "featloc/output/LandmarkTableWriter.h"
 #include "featloc/output/PoseCovarianceWriter.h"
+#include "featloc/output/ResultsFolder.h"
 #include "featloc/output/ScanMapSceneWriter.h"
 #include "featloc/output/SummaryJsonWriter.h"
 #include "featloc/output/TumTrajectoryWriter.h"
@@ -34,33 +39,158 @@ namespace featloc
 {
 namespace
 {
-std::string joinPath(const std::string& dir, const std::string& file)
+std::string joinedNames(const std::vector<std::string>& names, const char* sep)
 {
-	return (std::filesystem::path(dir) / file).string();
+	std::string out;
+	for (const auto& n : names) out += (out.empty() ? "" : sep) + n;
+	return out;
 }
 
-std::string sizeText(const std::string& path)
+/** The classes a user can choose, from the registries (not a hand list). */
+std::string classesText()
 {
-	std::error_code ec;
-	const auto bytes = std::filesystem::file_size(path, ec);
-	if (ec) return "?";
-	char buf[32];
-	std::snprintf(buf, sizeof(buf), "%.1f MB", static_cast<double>(bytes) / 1e6);
-	return buf;
+	return "estimators ([Pipeline] estimator): " +
+		joinedNames(PoseEstimatorFactory::knownNames(), ", ") +
+		"\nscan matchers ([ScanMatcher] class): " +
+		joinedNames(ScanMatcherFactory::knownClassNames(), ", ") + "\n";
+}
+
+/** The reference trajectory of a run and where it came from. */
+struct Reference
+{
+	Trajectory trajectory;
+	std::string description;
+};
+
+/** The ground truth named by [Evaluation] ground_truth, read now (a wrong
+ * path fails before the first scan); for a CARMEN log without one, the
+ * log's own corrected poses. The ini's ground truth belongs to the ini's
+ * rawlog: with another input on the command line it only applies when
+ * given with --set. */
+std::optional<Reference> loadReference(
+	const TrackedConfig& cfg, const RunConfiguration& rc, bool inputOnCommandLine,
+	const EntrySource& source)
+{
+	const std::string& gt = rc.evaluation.ground_truth;
+	const bool gtFromCommandLine =
+		cfg.origin(EvaluationOptions::kSection, "ground_truth").rfind("--set", 0) == 0;
+	if (!gt.empty() && (!inputOnCommandLine || gtFromCommandLine))
+	{
+		const std::string path =
+			cfg.resolvePath(EvaluationOptions::kSection, "ground_truth", gt);
+		TrajectoryFile::Format format = TrajectoryFile::Format::Auto;
+		Reference r;
+		try
+		{
+			r.trajectory = TrajectoryFile::read(path, format, &format);
+		}
+		catch (const InputError& e)
+		{
+			throw InputError(std::string("[Evaluation] ground_truth: ") + e.what());
+		}
+		r.description = path + " (" + TrajectoryFile::formatDescription(format) + ")";
+		return r;
+	}
+	if (!gt.empty())
+		std::printf(
+			"not evaluated against [Evaluation] ground_truth: it belongs to the ini's "
+			"rawlog; give --set Evaluation:ground_truth=FILE for this input\n");
+	if (const auto* carmen = dynamic_cast<const CarmenLogSource*>(&source))
+	{
+		Reference r;
+		for (const auto& s : carmen->scans())
+		{
+			TimedPose p;
+			p.t = s.time;
+			p.pose = s.pose;
+			r.trajectory.poses.push_back(p);
+		}
+		r.trajectory.source = carmen->name();
+		r.description = "the corrected poses in " + carmen->name();
+		return r;
+	}
+	return std::nullopt;
+}
+
+/** Every output of the run, writing into the staging folder. */
+struct RunOutputs
+{
+	std::vector<std::unique_ptr<RunOutput>> owned;
+	SummaryJsonWriter* summary = nullptr;
+	std::vector<std::string> names;	 //!< file names, for summary.json and the console
+
+	std::vector<RunOutput*> pointers() const
+	{
+		std::vector<RunOutput*> out;
+		for (const auto& o : owned) out.push_back(o.get());
+		return out;
+	}
+};
+
+RunOutputs makeOutputs(
+	const RunConfiguration& rc, const ResultsFolder& folder, bool withLandmarks,
+	bool withEvaluation)
+{
+	RunOutputs o;
+	auto add = [&](std::unique_ptr<RunOutput> out, const std::string& name) {
+		o.owned.push_back(std::move(out));
+		o.names.push_back(name);
+	};
+	add(std::make_unique<TumTrajectoryWriter>(folder.stagedFile("trajectory.tum")),
+		"trajectory.tum");
+	add(std::make_unique<PoseCovarianceWriter>(folder.stagedFile("poses_cov.txt")),
+		"poses_cov.txt");
+	if (rc.output.write_rawlog)
+		add(std::make_unique<EstimatedRawlogWriter>(
+				folder.stagedFile("estimated.rawlog"), rc.output.pose_label),
+			"estimated.rawlog");
+	if (rc.output.write_scene)
+		add(std::make_unique<ScanMapSceneWriter>(folder.stagedFile("map.3Dscene"),
+				rc.output.scene_scan_decimation, rc.output.scene_ellipse_every),
+			"map.3Dscene");
+	if (withLandmarks)
+		add(std::make_unique<LandmarkTableWriter>(folder.stagedFile("landmarks.txt")),
+			"landmarks.txt");
+	// Written after the run (see evaluateAndPlot), listed here so that
+	// summary.json names every file of the folder.
+	if (withEvaluation) o.names.push_back("nees.txt");
+	o.names.push_back("trajectory.png");
+	o.names.push_back("config_used.ini");
+	o.names.push_back("summary.json");
+	auto summary =
+		std::make_unique<SummaryJsonWriter>(folder.stagedFile("summary.json"), o.names);
+	o.summary = summary.get();
+	o.owned.push_back(std::move(summary));
+	return o;
+}
+
+void writeUsedConfig(const TrackedConfig& cfg, const std::string& path)
+{
+	std::ofstream f(path);
+	f << "# effective configuration of this run (ini + --set)\n" << cfg.content();
+	if (!f) throw std::runtime_error("cannot write '" + path + "'");
 }
 
 void printSummary(const RunStats& s)
 {
 	std::printf(
-		"processed %zu scans from %zu entries in %.2f s", s.scans, s.entries,
-		s.wallTime);
-	if (s.invalidatedBeams)
-		std::printf(" (%zu beams invalidated)", s.invalidatedBeams);
+		"%s %zu scans from %zu entries", s.interrupted ? "interrupted after" : "processed",
+		s.scans, s.entries);
+	if (s.invalidatedBeams) std::printf(" (%zu beams invalidated)", s.invalidatedBeams);
 	std::printf("\n");
+	// "N s of log in M s": the whole run, matcher and I/O included.
+	if (s.logSeconds > 0 && s.wallTime > 0)
+		std::printf(
+			"  %.1f s of log in %.2f s (%.1fx real time, everything included)\n",
+			s.logSeconds, s.wallTime, s.logSeconds / s.wallTime);
 	if (s.stepsWithoutOdometry)
 		std::printf(
-			"  %zu steps had no odometry (zero-motion prior used)\n",
-			s.stepsWithoutOdometry);
+			"  %zu steps had no odometry (zero-motion prior used)\n", s.stepsWithoutOdometry);
+	if (s.odometryCovarianceScale > 1)
+		std::printf(
+			"  odometry covariance: the log's is too small for the motion the matches "
+			"show; inflated x%.1f (see [Odometry] covariance_check)\n",
+			s.odometryCovarianceScale);
 	if (s.landmarkObservations || s.landmarksInMap)
 		std::printf(
 			"  %zu range-bearing observations; %zu landmarks in the map at the end\n",
@@ -71,21 +201,45 @@ void printSummary(const RunStats& s)
 		std::printf(
 			"  %zu matches: %zu failed (%zu fell back to odometry); time per "
 			"match mean %.2f ms, median %.2f ms, p95 %.2f ms\n",
-			s.matchesAttempted, s.matchFailures, s.fallbacks, t.mean * 1e3,
-			t.median * 1e3, t.p95 * 1e3);
-		for (const auto& ex : s.failureExamples)
-			std::printf("    failed: %s\n", ex.c_str());
-		for (const auto& ex : s.rejectionExamples)
-			std::printf("    not used: %s\n", ex.c_str());
+			s.matchesAttempted, s.matchFailures, s.fallbacks, t.mean * 1e3, t.median * 1e3,
+			t.p95 * 1e3);
+		for (const auto& ex : s.failureExamples) std::printf("    failed: %s\n", ex.c_str());
+		for (const auto& ex : s.rejectionExamples) std::printf("    not used: %s\n", ex.c_str());
 	}
 	if (!s.estimatorTimes.empty())
 	{
-		// Real-time factor at 10 Hz scans: 0.1 s per scan over the time taken.
 		const ErrorStats e = ErrorStats::of(s.estimatorTimes);
 		std::printf(
-			"  estimator %s: mean %.1f us per step (matcher excluded; %.0fx real time at 10 Hz)\n",
-			s.estimator.c_str(), e.mean * 1e6, e.mean > 0 ? 0.1 / e.mean : 0.0);
+			"  estimator %s: mean %.1f us per step (matcher excluded)\n", s.estimator.c_str(),
+			e.mean * 1e6);
 	}
+}
+
+/** The evaluation against the reference (summary.json, nees.txt) and
+ * trajectory.png, with or without a reference. */
+void evaluateAndPlot(
+	const RunConfiguration& rc, const std::optional<Reference>& reference,
+	const ResultsFolder& folder, const RunStats& stats, SummaryJsonWriter& summary)
+{
+	if (stats.scans == 0) return;
+	const Trajectory est = TrajectoryFile::read(folder.stagedFile("poses_cov.txt"));
+	char title[160];
+	if (!reference)
+	{
+		std::snprintf(title, sizeof(title), "%s: %zu poses (no ground truth)",
+			stats.estimator.c_str(), est.poses.size());
+		TrajectoryPlot::write(folder.stagedFile("trajectory.png"), Trajectory{}, est, {}, title);
+		return;
+	}
+	const TrajectoryEvaluator evaluator(rc.evaluation.max_time_difference);
+	const EvaluationReport rep = evaluator.evaluate(reference->trajectory, est);
+	std::printf("against %s:\n%s", reference->description.c_str(), rep.toText().c_str());
+	summary.writeWithEvaluation(stats, rep.toJson());
+	if (rep.hasNees) rep.writeNeesSeries(folder.stagedFile("nees.txt"));
+	std::snprintf(title, sizeof(title), "%s: ATE rmse %.3f m over %zu poses",
+		stats.estimator.c_str(), rep.ate.rmse, rep.associated);
+	TrajectoryPlot::write(
+		folder.stagedFile("trajectory.png"), reference->trajectory, est, rep.alignment, title);
 }
 }  // namespace
 
@@ -93,20 +247,24 @@ int RunApp::main(int argc, char** argv)
 {
 	registerClasses();
 	TCLAP::CmdLine cmd(
-		"featloc-run: estimate a robot trajectory from a rawlog (odometry + "
-		"2-D laser scans). Relative paths inside the ini are relative to the "
-		"ini file's folder.",
+		"featloc-run: estimate a robot trajectory from a rawlog or a CARMEN log "
+		"(odometry, 2-D laser scans, range-bearing landmarks). Relative paths inside "
+		"the ini are relative to the ini file's folder. The results folder is "
+		"replaced as a whole when the run ends; a run that cannot start leaves it "
+		"untouched.\n" +
+			classesText(),
 		' ', "0.1");
-	// TCLAP allows only one optional unlabeled argument: CONFIG [RAWLOG]
-	// are taken together and counted below.
-	TCLAP::UnlabeledMultiArg<std::string> argFiles(
-		"files",
-		"CONFIG: the INI configuration file (see config.ini); RAWLOG "
-		"(optional): the rawlog to process, overriding [Input] rawlog",
-		false, "CONFIG [RAWLOG]", cmd);
+	// TCLAP allows only one optional unlabeled argument: CONFIG [INPUT] are
+	// taken together and counted below.
+	TCLAP::UnlabeledMultiArg<std::string> argFiles("files",
+		"CONFIG: the INI configuration file (see config.ini); INPUT (optional): "
+		"the rawlog (.rawlog, .rawlog.gz) or CARMEN log (.log, .log.gz) to "
+		"process, overriding [Input] rawlog",
+		false, "CONFIG [INPUT]", cmd);
 	TCLAP::ValueArg<std::string> argOut(
-		"o", "out", "Results folder; overrides [Output] dir", false, "", "DIR",
-		cmd);
+		"o", "out", "Results folder; overrides [Output] dir", false, "", "DIR", cmd);
+	TCLAP::SwitchArg argList("", "list-classes",
+		"List the estimators and scan-matcher classes that can be chosen, and exit", cmd);
 	ConfigCommandLine config(cmd,
 		"ScanMatcher:class=featloc::IcpMatcher or --set "
 		"ScanMatcher.IcpMatcher:maxIterations=50",
@@ -114,127 +272,98 @@ int RunApp::main(int argc, char** argv)
 	int exitCode = 0;
 	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
 
+	if (argList.getValue())
+	{
+		std::printf("%s", classesText().c_str());
+		return 0;
+	}
 	if (config.writeConfigIfAsked(
 			"# featloc reference configuration: every key with its default.\n",
 			[](mrpt::config::CConfigFileBase& c) { RunConfiguration::defaults().save(c); }))
 		return 0;
 	const auto& files = argFiles.getValue();
+	for (const auto& f : files)
+		if (f.size() > 1 && f[0] == '-')
+			throw UsageError("unknown option '" + f + "'");
 	if (files.empty()) throw UsageError("missing CONFIG (the ini file)");
 	if (files.size() > 2)
 		throw UsageError(
-			"too many arguments: expected CONFIG [RAWLOG], got " +
-			std::to_string(files.size()) + " files");
-	const bool rawlogGiven = files.size() == 2;
+			"too many arguments: expected CONFIG [INPUT], got " + std::to_string(files.size()) +
+			" files");
+	const bool inputOnCommandLine = files.size() == 2;
 
+	// 1. The configuration, every key checked.
 	TrackedConfig cfg;
 	config.load(cfg, files[0]);
-	RunConfiguration rc = RunConfiguration::load(cfg);
+	const RunConfiguration rc = RunConfiguration::load(cfg);
 	cfg.requireAllKeysRead();
+	auto estimator = PoseEstimatorFactory::create(rc.pipeline.estimator, rc.ekf);
 
-	const std::string rawlog = rawlogGiven
+	// 2. The input and the ground truth, read before anything is written.
+	const std::string inputPath = inputOnCommandLine
 		? files[1]
 		: cfg.resolvePath(InputOptions::kSection, "rawlog", rc.input.rawlog);
-	if (rawlog.empty())
+	if (inputPath.empty())
 		throw ConfigError(
-			cfg.sourceName() +
-			": no rawlog: give one on the command line or set [Input] rawlog");
-	const std::string outDir = argOut.isSet()
-		? argOut.getValue()
-		: cfg.resolvePath(OutputOptions::kSection, "dir", rc.output.dir);
-	std::error_code ec;
-	std::filesystem::create_directories(outDir, ec);
-	if (ec || !std::filesystem::is_directory(outDir))
-		throw std::runtime_error(
-			"cannot create results folder '" + outDir + "': " + ec.message());
+			cfg.sourceName() + ": no rawlog: give one on the command line or set [Input] rawlog");
+	EntrySource::Ptr source = EntrySource::openFile(inputPath);
+	const std::optional<Reference> reference =
+		loadReference(cfg, rc, inputOnCommandLine, *source);
 
-	// Outputs.
-	std::vector<std::unique_ptr<RunOutput>> outputs;
-	outputs.push_back(
-		std::make_unique<TumTrajectoryWriter>(joinPath(outDir, "trajectory.tum")));
-	outputs.push_back(
-		std::make_unique<PoseCovarianceWriter>(joinPath(outDir, "poses_cov.txt")));
-	if (rc.output.write_rawlog)
-		outputs.push_back(std::make_unique<EstimatedRawlogWriter>(
-			joinPath(outDir, "estimated.rawlog"), rc.output.pose_label));
-	if (rc.output.write_scene)
-		outputs.push_back(std::make_unique<ScanMapSceneWriter>(
-			joinPath(outDir, "map.3Dscene"), rc.output.scene_scan_decimation,
-			rc.output.scene_ellipse_every));
-	if (rc.pipeline.estimator == "ekf")
-		outputs.push_back(
-			std::make_unique<LandmarkTableWriter>(joinPath(outDir, "landmarks.txt")));
-	std::vector<std::string> written;
-	for (const auto& o : outputs) written.push_back(o->path());
-	const std::string summaryPath = joinPath(outDir, "summary.json");
-	const std::string usedConfig = joinPath(outDir, "config_used.ini");
-	written.push_back(summaryPath);
-	written.push_back(usedConfig);
-	auto summary = std::make_unique<SummaryJsonWriter>(summaryPath, written);
-	SummaryJsonWriter* summaryPtr = summary.get();
-	outputs.push_back(std::move(summary));
-	{
-		std::ofstream f(usedConfig);
-		f << "# effective configuration of this run (ini + --set)\n"
-		  << cfg.content();
-	}
+	// 3. The results folder; the run writes into its staging folder.
+	ResultsFolder folder(argOut.isSet()
+			? argOut.getValue()
+			: cfg.resolvePath(OutputOptions::kSection, "dir", rc.output.dir));
+	folder.requireOutside(inputPath, "input");
+	if (reference && reference->trajectory.source != inputPath)
+		folder.requireOutside(reference->trajectory.source, "ground truth");
+	RunOutputs outputs =
+		makeOutputs(rc, folder, estimator->keepsLandmarks(), reference.has_value());
+	writeUsedConfig(cfg, folder.stagedFile("config_used.ini"));
 
-	auto estimator = PoseEstimatorFactory::create(rc.pipeline.estimator, rc.ekf);
-	std::printf(
-		"featloc-run: %s (%s)\n  estimator: %s%s\n  results:   %s\n",
-		rawlog.c_str(), sizeText(rawlog).c_str(), estimator->name().c_str(),
-		estimator->usesScanMatcher()
-			? (", matcher " + rc.matcher->className()).c_str()
-			: "",
-		outDir.c_str());
+	std::printf("featloc-run: %s (%s)\n  estimator: %s%s\n  results:   %s\n",
+		inputPath.c_str(), source->description().c_str(), estimator->name().c_str(),
+		estimator->usesScanMatcher() ? (", matcher " + rc.matcher->className()).c_str() : "",
+		folder.dir().c_str());
 	std::fflush(stdout);
 
-	Pipeline pipeline(
-		rc.input, rc.odometry, rc.pipeline, std::move(estimator), rc.matcher);
-	std::vector<RunOutput*> outs;
-	for (auto& o : outputs) outs.push_back(o.get());
-	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
-	const RunStats stats =
-		pipeline.run(rawlog, outs, config.quiet() ? nullptr : &progress);
-	printSummary(stats);
-
-	// The ini's ground truth belongs to the ini's rawlog: with another
-	// rawlog on the command line it only applies when given with --set.
-	const bool gtFromCommandLine =
-		cfg.origin(EvaluationOptions::kSection, "ground_truth").rfind("--set", 0) == 0;
-	const bool evaluate = !rc.evaluation.ground_truth.empty() &&
-		(!rawlogGiven || gtFromCommandLine);
-	if (!rc.evaluation.ground_truth.empty() && !evaluate)
-		std::printf(
-			"not evaluated: [Evaluation] ground_truth belongs to the ini's "
-			"rawlog; give --set Evaluation:ground_truth=FILE for this one\n");
-	if (evaluate)
+	// 4. The run. From here on, whatever happens, the results are published.
+	RunStats stats;
+	try
 	{
-		const std::string gtPath = cfg.resolvePath(
-			EvaluationOptions::kSection, "ground_truth",
-			rc.evaluation.ground_truth);
-		const Trajectory gt = TrajectoryFile::read(gtPath);
-		// poses_cov.txt: the same poses with their covariances (NEES).
-		const Trajectory est = TrajectoryFile::read(joinPath(outDir, "poses_cov.txt"));
-		const TrajectoryEvaluator evaluator(rc.evaluation.max_time_difference);
-		const EvaluationReport rep = evaluator.evaluate(gt, est);
-		std::printf("against ground truth:\n%s", rep.toText().c_str());
-		summaryPtr->writeWithEvaluation(stats, rep.toJson());
-		if (rep.hasNees)
+		Pipeline pipeline(rc.input, rc.odometry, rc.pipeline, std::move(estimator), rc.matcher);
+		ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
+		InterruptSignals signals;
+		stats = pipeline.run(
+			*source, outputs.pointers(), config.quiet() ? nullptr : &progress, &signals.flag());
+		printSummary(stats);
+		try
 		{
-			const std::string neesPath = joinPath(outDir, "nees.txt");
-			rep.writeNeesSeries(neesPath);
-			written.push_back(neesPath);
+			evaluateAndPlot(rc, reference, folder, stats, *outputs.summary);
 		}
-		const std::string plot = joinPath(outDir, "trajectory.png");
-		char title[128];
-		std::snprintf(
-			title, sizeof(title), "%s: ATE rmse %.3f m over %zu poses",
-			stats.estimator.c_str(), rep.ate.rmse, rep.associated);
-		TrajectoryPlot::write(plot, gt, est, rep.alignment, title);
-		written.push_back(plot);
+		catch (const std::exception& e)
+		{
+			// summary.json must not say "ok" when the run exits with an error.
+			stats.ok = false;
+			stats.error = std::string("evaluation: ") + e.what();
+			outputs.summary->finish(stats);
+			throw;
+		}
 	}
-	std::printf("results in %s:\n", outDir.c_str());
-	for (const auto& f : written) std::printf("  %s\n", f.c_str());
+	catch (...)
+	{
+		folder.publish();
+		throw;
+	}
+	folder.publish();
+	std::printf("results in %s:\n", folder.dir().c_str());
+	for (const auto& f : outputs.names)
+		if (std::ifstream(folder.finalFile(f))) std::printf("  %s\n", f.c_str());
+	if (stats.interrupted)
+	{
+		std::printf("interrupted: the results hold the %zu scans processed\n", stats.scans);
+		return 128 + SIGINT;
+	}
 	return 0;
 }
 }  // namespace featloc

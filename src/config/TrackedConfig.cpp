@@ -72,6 +72,9 @@ TrackedConfig::Key TrackedConfig::makeKey(
 
 void TrackedConfig::loadFile(const std::string& path)
 {
+	if (mrpt::system::directoryExists(path))
+		throw ConfigError(
+			"config file '" + path + "' is a directory, not an ini file (see config.ini)");
 	if (!mrpt::system::fileExists(path))
 		throw ConfigError("config file '" + path + "' does not exist");
 	std::ifstream f(path);

@@ -58,6 +58,14 @@ TrajectoryEvaluator::TrajectoryEvaluator(double maxTimeDifference)
 std::vector<std::pair<size_t, size_t>> TrajectoryEvaluator::associate(
 	const Trajectory& reference, const Trajectory& estimate) const
 {
+	if (!reference.timed || !estimate.timed)
+	{
+		// No times on one side: the i-th rows describe the same step.
+		std::vector<std::pair<size_t, size_t>> pairs;
+		for (size_t i = 0; i < std::min(reference.poses.size(), estimate.poses.size()); i++)
+			pairs.emplace_back(i, i);
+		return pairs;
+	}
 	// Candidate pairs (|dt|, ref, est): each estimate with its nearest
 	// reference; then greedily keep the closest pairs with unique indices.
 	std::vector<std::tuple<double, size_t, size_t>> cand;

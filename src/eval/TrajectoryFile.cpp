@@ -33,7 +33,7 @@ void forEachRow(
 		for (auto& ch : line)
 			if (ch == ',' || ch == '\t' || ch == '\r') ch = ' ';
 		const auto first = line.find_first_not_of(' ');
-		if (first == std::string::npos || line[first] == '#') continue;
+		if (first == std::string::npos || line[first] == '#' || line[first] == '%') continue;
 		std::istringstream fields(line);
 		Row row;
 		std::string tok;
@@ -67,6 +67,9 @@ void requireColumns(
 			" columns (" + what + "), found " + std::to_string(row.size()));
 }
 
+/** KITTI's camera frame: every rotation is about the y axis (r22 = 1). */
+bool isCameraConvention(const Row& r) { return std::abs(r[5] - 1.0) < 1e-6; }
+
 bool isUnitQuaternion(const Row& r)
 {
 	const double n2 = r[4] * r[4] + r[5] * r[5] + r[6] * r[6] + r[7] * r[7];
@@ -84,6 +87,10 @@ TrajectoryFile::Format TrajectoryFile::detect(const std::string& path)
 	});
 	switch (columns)
 	{
+		case 6:
+			return Format::MrptRobotPath;
+		case 12:
+			return Format::Kitti;
 		case 4:
 			return Format::TimeXYYaw;
 		case 10:
@@ -101,19 +108,34 @@ TrajectoryFile::Format TrajectoryFile::detect(const std::string& path)
 	}
 }
 
-Trajectory TrajectoryFile::read(const std::string& path, Format format)
+Trajectory TrajectoryFile::read(const std::string& path, Format format, Format* used)
 {
 	if (format == Format::Auto) format = detect(path);
+	if (used) *used = format;
 	if (format == Format::Relations)
 		throw InputError(
 			"file '" + path +
 			"' holds relations (t1 t2 x y z roll pitch yaw), not a trajectory");
 	Trajectory traj;
 	traj.source = path;
+	traj.timed = format != Format::MrptRobotPath && format != Format::Kitti;
 	forEachRow(path, [&](int lineNo, const Row& r) {
 		TimedPose p;
 		switch (format)
 		{
+			case Format::MrptRobotPath:
+				requireColumns(path, lineNo, r, 6, "x y z yaw pitch roll");
+				p.t = static_cast<double>(traj.poses.size());
+				p.pose = {r[0], r[1], mrpt::math::wrapToPi(r[3])};
+				break;
+			case Format::Kitti:
+				requireColumns(path, lineNo, r, 12, "3x4 pose matrix, row by row");
+				p.t = static_cast<double>(traj.poses.size());
+				if (isCameraConvention(r))	// z forward, x right: the ground is x-z
+					p.pose = {r[11], -r[3], std::atan2(-r[2], r[10])};
+				else
+					p.pose = {r[3], r[7], std::atan2(r[4], r[0])};
+				break;
 			case Format::Tum:
 				requireColumns(path, lineNo, r, 8, "t x y z qx qy qz qw");
 				if (!isUnitQuaternion(r))
@@ -178,9 +200,11 @@ TrajectoryFile::Format TrajectoryFile::parseFormat(const std::string& name)
 	if (name == "txyyaw") return Format::TimeXYYaw;
 	if (name == "poses_cov") return Format::PosesCov;
 	if (name == "relations") return Format::Relations;
+	if (name == "mrpt_path") return Format::MrptRobotPath;
+	if (name == "kitti") return Format::Kitti;
 	throw InputError(
 		"unknown trajectory format '" + name +
-		"' (auto, tum, txyyaw, poses_cov, relations)");
+		"' (auto, tum, txyyaw, poses_cov, relations, mrpt_path, kitti)");
 }
 
 std::string TrajectoryFile::formatName(Format f)
@@ -195,6 +219,32 @@ std::string TrajectoryFile::formatName(Format f)
 			return "poses_cov";
 		case Format::Relations:
 			return "relations";
+		case Format::MrptRobotPath:
+			return "mrpt_path";
+		case Format::Kitti:
+			return "kitti";
+		default:
+			return "auto";
+	}
+}
+
+std::string TrajectoryFile::formatDescription(Format f)
+{
+	switch (f)
+	{
+		case Format::Tum:
+			return "TUM 't x y z qx qy qz qw'";
+		case Format::TimeXYYaw:
+			return "'t x y yaw' (MRPT .GT.txt)";
+		case Format::PosesCov:
+			return "featloc poses_cov.txt";
+		case Format::Relations:
+			return "relations 't1 t2 x y z roll pitch yaw'";
+		case Format::MrptRobotPath:
+			return "MRPT robot path 'x y z yaw pitch roll', no times: rows pair with the "
+				   "estimate's in order";
+		case Format::Kitti:
+			return "KITTI 3x4 pose rows, no times: rows pair with the estimate's in order";
 		default:
 			return "auto";
 	}

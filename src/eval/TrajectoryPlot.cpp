@@ -3,6 +3,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "featloc/plot/PlotCanvas.h"
 
@@ -30,6 +31,8 @@ void TrajectoryPlot::write(
 {
 	const auto ref = positions(reference, mrpt::poses::CPose2D());
 	const auto est = positions(estimate, mrpt::poses::CPose2D(alignment));
+	if (ref.empty() && est.empty())
+		throw std::runtime_error("cannot plot '" + pngPath + "': no poses");
 	double minX = 1e300, maxX = -1e300, minY = 1e300, maxY = -1e300;
 	for (const auto* v : {&ref, &est})
 		for (const auto& p : *v)
@@ -46,8 +49,8 @@ void TrajectoryPlot::write(
 	if (!ref.empty()) canvas.marker(ref.front(), refColour);
 	if (!est.empty()) canvas.marker(est.front(), estColour);
 	canvas.title(title);
-	canvas.legend("reference", refColour);
-	canvas.legend("estimate (aligned)", estColour);
+	if (!ref.empty()) canvas.legend("reference", refColour);
+	canvas.legend(ref.empty() ? "estimate" : "estimate (aligned)", estColour);
 	canvas.legend("circle = start", {120, 120, 120});
 	canvas.save(pngPath);
 }

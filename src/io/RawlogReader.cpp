@@ -1,6 +1,5 @@
 #include "featloc/io/RawlogReader.h"
 
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/obs/CSensoryFrame.h>
@@ -10,6 +9,7 @@
 #include <sstream>
 
 #include "featloc/core/InputError.h"
+#include "featloc/io/GzipFileInputStream.h"
 #include "featloc/registerClasses.h"
 
 namespace featloc
@@ -85,7 +85,7 @@ std::string conciseMessage(const std::exception& e)
 
 struct RawlogReader::Impl
 {
-	mrpt::io::CFileGZInputStream file;
+	GzipFileInputStream file;
 	std::unique_ptr<CountingInputStream> counter;
 };
 
@@ -155,11 +155,9 @@ bool RawlogReader::next(RawlogEntry& entry)
 
 double RawlogReader::progress() const
 {
-	const uint64_t total = m_impl->file.getTotalBytesCount();
-	if (total == 0) return 1.0;
-	const double f = static_cast<double>(m_impl->file.getPosition()) /
-		static_cast<double>(total);
-	return f < 0 ? 0 : (f > 1 ? 1 : f);
+	// The position in the file on disk (compressed for .gz) against its
+	// size: both count the same bytes.
+	return m_impl->file.fractionRead();
 }
 
 }  // namespace featloc

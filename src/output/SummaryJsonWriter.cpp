@@ -13,7 +13,7 @@ namespace
 nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs)
 {
 	nlohmann::json j;
-	j["status"] = s.ok ? "ok" : "error";
+	j["status"] = !s.ok ? "error" : (s.interrupted ? "interrupted" : "ok");
 	if (!s.ok) j["error"] = s.error;
 	j["rawlog"] = s.rawlog;
 	j["estimator"] = s.estimator;
@@ -48,6 +48,9 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"count", e.count}, {"mean", e.mean}, {"median", e.median},
 		{"p95", e.p95},		{"max", e.max}};
 	j["wall_time_s"] = s.wallTime;
+	j["log_duration_s"] = s.logSeconds;
+	j["real_time_factor"] = s.wallTime > 0 ? s.logSeconds / s.wallTime : 0.0;
+	j["odometry_covariance_scale"] = s.odometryCovarianceScale;
 	j["outputs"] = outputs;
 	return j;
 }

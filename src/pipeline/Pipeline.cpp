@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "featloc/core/InputError.h"
-#include "featloc/io/RawlogReader.h"
 #include "featloc/pipeline/ScanStepAssembler.h"
 
 namespace featloc
@@ -44,9 +43,10 @@ Pipeline::Pipeline(
 }
 
 RunStats Pipeline::run(
-	const std::string& rawlogPath, const std::vector<RunOutput*>& outputs,
-	ProgressBar* progress)
+	EntrySource& source, const std::vector<RunOutput*>& outputs, ProgressBar* progress,
+	const std::atomic<bool>* stop)
 {
+	const std::string rawlogPath = source.name();
 	const auto t0 = std::chrono::steady_clock::now();
 	RunStats stats;
 	stats.rawlog = rawlogPath;
@@ -62,21 +62,26 @@ RunStats Pipeline::run(
 	};
 	try
 	{
-		RawlogReader reader(rawlogPath);
 		assembler = std::make_unique<ScanStepAssembler>(
 			m_input, m_odometry, rawlogPath);
 		RawlogEntry entry;
 		std::vector<ScanStepAssembler::SelectedScan> selected;
 		std::vector<ScanStep> ready;
-		while (!assembler->full() && reader.next(entry))
+		while (!assembler->full())
 		{
+			if (stop && stop->load())
+			{
+				stats.interrupted = true;
+				break;
+			}
+			if (!source.next(entry)) break;
 			stats.entries++;
 			selected.clear();
 			ready.clear();
 			assembler->push(entry, selected, ready);
 			for (auto* o : outputs) o->onEntry(entry, selected);
 			for (const auto& step : ready) processStep(step, outputs, stats);
-			if (progress) progress->update(reader.progress(), stats.scans);
+			if (progress) progress->update(source.progress(), stats.scans);
 		}
 		ready.clear();
 		assembler->finish(ready);
@@ -84,7 +89,7 @@ RunStats Pipeline::run(
 		if (progress) progress->done(stats.scans);
 		copyAssemblerStats(*assembler, stats);
 
-		if (stats.scans == 0)
+		if (stats.scans == 0 && !stats.interrupted)
 		{
 			std::ostringstream msg;
 			msg << "rawlog '" << rawlogPath << "' (" << stats.entries
@@ -198,6 +203,9 @@ void Pipeline::processStep(
 		stats.keyframes++;
 	}
 	stats.scans++;
+	if (stats.scans == 1) m_firstScanTime = step.timestamp();
+	stats.logSeconds =
+		std::chrono::duration<double>(step.timestamp() - m_firstScanTime).count();
 	const std::vector<EstimatedLandmark> landmarks = m_estimator->landmarks();
 	stats.landmarksInMap = landmarks.size();
 	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch, &landmarks};

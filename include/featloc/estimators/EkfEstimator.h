@@ -28,6 +28,7 @@ class EkfEstimator : public PoseEstimator
 		return m_filter.keyframePose().mean;
 	}
 	const mrpt::poses::CPosePDFGaussian& pose() const override { return m_pose; }
+	bool keepsLandmarks() const override { return true; }
 	std::vector<EstimatedLandmark> landmarks() const override { return m_filter.landmarks(); }
 	std::string lastFallbackReason() const override { return m_reason; }
 

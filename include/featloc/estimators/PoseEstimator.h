@@ -55,6 +55,10 @@ class PoseEstimator
 	/** Current global robot pose with covariance. */
 	virtual const mrpt::poses::CPosePDFGaussian& pose() const = 0;
 
+	/** Whether the estimator keeps point landmarks (the run then writes
+	 * landmarks.txt). */
+	virtual bool keepsLandmarks() const { return false; }
+
 	/** The point landmarks the estimator keeps (none for most). */
 	virtual std::vector<EstimatedLandmark> landmarks() const { return {}; }
 

@@ -21,6 +21,9 @@ struct Trajectory
 {
 	std::string source;	 //!< file it came from
 	std::vector<TimedPose> poses;
+	/** False for formats without times (MRPT robot paths, KITTI): `t` is
+	 * then the row index, and evaluation pairs rows in order. */
+	bool timed = true;
 };
 
 /** A relative pose between two times (Kummerle et al. 2009 relations). */

@@ -8,7 +8,8 @@
 namespace featloc
 {
 /** A PNG picture of a reference trajectory and an estimate (after the
- * evaluation's alignment) on a metric grid, with a legend and a title. */
+ * evaluation's alignment) on a metric grid, with a legend and a title. An
+ * empty reference draws the estimate alone (a run without ground truth). */
 class TrajectoryPlot
 {
    public:

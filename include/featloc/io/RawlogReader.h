@@ -30,7 +30,9 @@ class RawlogReader
 	 * not a rawlog entry (CSensoryFrame, CActionCollection, CObservation). */
 	bool next(RawlogEntry& entry);
 
-	/** Fraction of the (compressed) file read so far, in [0, 1]. */
+	/** Fraction of the file on disk read so far, in [0, 1] (for a .gz
+	 * file: the compressed bytes consumed over the file size; zlib reads
+	 * ahead a few kB, so 1 may come a few entries before the end). */
 	double progress() const;
 
 	const std::string& path() const { return m_path; }

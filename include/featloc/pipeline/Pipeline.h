@@ -1,8 +1,10 @@
 #pragma once
+#include <atomic>
 #include <string>
 #include <vector>
 
 #include "featloc/estimators/PoseEstimator.h"
+#include "featloc/io/EntrySource.h"
 #include "featloc/io/InputOptions.h"
 #include "featloc/matchers/ScanMatcher.h"
 #include "featloc/odometry/OdometryOptions.h"
@@ -13,7 +15,7 @@
 
 namespace featloc
 {
-/** The offline run: rawlog entries -> ScanStepAssembler (scans in time
+/** A run: the source's entries -> ScanStepAssembler (scans in time
  * order with their odometry motion) -> scan matcher (reference scan, this
  * scan, odometry as the initial guess) -> estimator -> outputs.
  *
@@ -23,7 +25,7 @@ namespace featloc
  * increment, seen from the keyframe, with the covariance of the odometry
  * accumulated since the keyframe.
  *
- * The same loop will serve live runs: only the source of entries differs. */
+ * The same loop serves every source (rawlog file, CARMEN log, live). */
 class Pipeline
 {
    public:
@@ -32,12 +34,15 @@ class Pipeline
 		InputOptions input, OdometryOptions odometry, PipelineOptions options,
 		PoseEstimator::Ptr estimator, ScanMatcher::Ptr matcher);
 
-	/** Processes the whole rawlog. Every output receives every entry and
+	/** Processes the whole source. Every output receives every entry and
 	 * step and then finish(), once, also when the run fails; the error is
-	 * then rethrown. Throws InputError when the log yields no scan. */
+	 * then rethrown. Throws InputError when the log yields no scan.
+	 * `stop`: when it becomes true (SIGINT/SIGTERM) reading stops, the
+	 * steps already read are processed and the run ends with
+	 * RunStats::interrupted set. */
 	RunStats run(
-		const std::string& rawlogPath, const std::vector<RunOutput*>& outputs,
-		ProgressBar* progress = nullptr);
+		EntrySource& source, const std::vector<RunOutput*>& outputs,
+		ProgressBar* progress = nullptr, const std::atomic<bool>* stop = nullptr);
 
    private:
 	void processStep(
@@ -56,5 +61,6 @@ class Pipeline
 	mrpt::obs::CObservation2DRangeScan::Ptr m_keyframeScan;
 	mrpt::poses::CPose2D m_keyframePose;
 	mrpt::poses::CPosePDFGaussian m_odometrySinceKeyframe;
+	mrpt::Clock::time_point m_firstScanTime;
 };
 }  // namespace featloc

@@ -40,7 +40,14 @@ struct RunStats
 	std::vector<double> estimatorTimes;
 
 	double wallTime = 0;  //!< [s] whole run, reading and writing included
+	/** [s] from the first processed scan's time to the last's. */
+	double logSeconds = 0;
+	/** Factor the odometry covariance was inflated by after checking it
+	 * against the matches ([Odometry] covariance_check; 1: not inflated). */
+	double odometryCovarianceScale = 1;
 	bool ok = true;
+	/** Stopped early by SIGINT/SIGTERM (the outputs hold what was read). */
+	bool interrupted = false;
 	std::string error;	//!< when !ok
 };
 }  // namespace featloc

@@ -1,0 +1,36 @@
+#pragma once
+#include <vector>
+
+#include "featloc/io/CarmenLogReader.h"
+#include "featloc/io/EntrySource.h"
+
+namespace featloc
+{
+/** A CARMEN log (`.log` or `.log.gz`, e.g. the Radish logs) as an
+ * EntrySource of rawlog format #2: for every FLASER message a
+ * CObservationOdometry (its odom_x odom_y odom_theta) and the
+ * CObservation2DRangeScan, both at its logger time. The log is parsed
+ * whole when the source is made, so a malformed line is an InputError
+ * before the run starts. The corrected poses of the log (x y theta) are
+ * kept as its reference trajectory. */
+class CarmenLogSource : public EntrySource
+{
+   public:
+	explicit CarmenLogSource(const std::string& path);
+
+	/** True for file names ending in .log or .log.gz (any case). */
+	static bool handles(const std::string& path);
+
+	bool next(RawlogEntry& entry) override;
+	double progress() const override;
+	std::string name() const override { return m_path; }
+	std::string description() const override;
+
+	const std::vector<CarmenScan>& scans() const { return m_scans; }
+
+   private:
+	std::string m_path;
+	std::vector<CarmenScan> m_scans;
+	size_t m_next = 0;	//!< next entry: 2 per scan (odometry, then scan)
+};
+}  // namespace featloc

@@ -1,0 +1,13 @@
+#include "featloc/io/EntrySource.h"
+
+#include "featloc/io/CarmenLogSource.h"
+#include "featloc/io/RawlogFileSource.h"
+
+namespace featloc
+{
+EntrySource::Ptr EntrySource::openFile(const std::string& path)
+{
+	if (CarmenLogSource::handles(path)) return std::make_unique<CarmenLogSource>(path);
+	return std::make_unique<RawlogFileSource>(path);
+}
+}  // namespace featloc
