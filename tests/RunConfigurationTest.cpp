@@ -132,3 +132,19 @@ TEST(RunConfiguration, EveryKeyIsInTheConfigReferenceDoc)
 		std::string(FEATLOC_SOURCE_DIR) + "/doc/config-reference.md",
 		[](mrpt::config::CConfigFileBase& c) { RunConfiguration::defaults().save(c); });
 }
+
+TEST(RunConfiguration, ShippedConfigIniIsTheBuiltInDefaults)
+{
+	// One source of truth: config.ini differs from the built-in defaults
+	// (what --write-config writes) only by the bundled data it names.
+	registerClasses();
+	TrackedConfig c;
+	c.loadFile(std::string(FEATLOC_SOURCE_DIR) + "/config.ini");
+	RunConfiguration shipped = RunConfiguration::load(c);
+	c.requireAllKeysRead();
+	EXPECT_FALSE(shipped.input.rawlog.empty());
+	EXPECT_FALSE(shipped.evaluation.ground_truth.empty());
+	shipped.input.rawlog.clear();
+	shipped.evaluation.ground_truth.clear();
+	EXPECT_EQ(saved(shipped), saved(RunConfiguration::defaults()));
+}

@@ -90,6 +90,7 @@ void ScanMatcher::checkAgainstGuess(
 		"guess_gate_chi2 %.1f: moved %.3f m, %.2f deg)",
 		m2, gate, std::hypot(d[0], d[1]), mrpt::RAD2DEG(d[2]));
 	r.success = false;
+	r.rejectedByGuessGate = true;
 	r.failureReason = buf;
 }
 

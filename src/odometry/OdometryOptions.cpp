@@ -13,7 +13,13 @@ void OdometryOptions::loadFromConfigFile(
 	read(c, s, "max_interpolation_gap", max_interpolation_gap);
 	read(c, s, "no_odometry_sigma_xy", no_odometry_sigma_xy);
 	readDegrees(c, s, "no_odometry_sigma_yaw_DEG", no_odometry_sigma_yaw);
+	read(c, s, "covariance_check", covariance_check);
+	read(c, s, "covariance_check_window", covariance_check_window);
+	read(c, s, "covariance_check_quantile", covariance_check_quantile);
+	require(covariance_check_quantile >= 0.5 && covariance_check_quantile <= 0.99, c, s,
+		"covariance_check_quantile", "in [0.5, 0.99]");
 	require(max_interpolation_gap > 0, c, s, "max_interpolation_gap", "> 0");
+	require(covariance_check_window >= 3, c, s, "covariance_check_window", ">= 3");
 	require(no_odometry_sigma_xy > 0, c, s, "no_odometry_sigma_xy", "> 0");
 	require(
 		no_odometry_sigma_yaw > 0, c, s, "no_odometry_sigma_yaw_DEG", "> 0");
@@ -32,5 +38,11 @@ void OdometryOptions::saveToConfigFile(
 		"[m] prior sigma of a step without odometry (zero motion)");
 	writeDegrees(c, s, "no_odometry_sigma_yaw_DEG", no_odometry_sigma_yaw,
 		"[deg] prior yaw sigma of a step without odometry");
+	write(c, s, "covariance_check", covariance_check,
+		"inflate the odometry covariance when the matches show it is too small");
+	write(c, s, "covariance_check_window", covariance_check_window,
+		"covariance_check: the last N converged matches are compared");
+	write(c, s, "covariance_check_quantile", covariance_check_quantile,
+		"covariance_check: this quantile of the matches' Mahalanobis^2 is made consistent");
 }
 }  // namespace featloc

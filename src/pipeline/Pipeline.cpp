@@ -33,7 +33,8 @@ Pipeline::Pipeline(
 	  m_odometry(std::move(odometry)),
 	  m_options(std::move(options)),
 	  m_estimator(std::move(estimator)),
-	  m_matcher(std::move(matcher))
+	  m_matcher(std::move(matcher)),
+	  m_odometryCheck(m_odometry.covariance_check_window, m_odometry.covariance_check_quantile)
 {
 	if (!m_estimator) throw std::invalid_argument("Pipeline: no estimator");
 	if (m_estimator->usesScanMatcher() && !m_matcher)
@@ -53,6 +54,8 @@ RunStats Pipeline::run(
 	stats.estimator = m_estimator->name();
 	if (m_estimator->usesScanMatcher()) stats.matcherClass = m_matcher->className();
 	m_keyframeScan.reset();
+	m_odometryCheck = OdometryCovarianceCheck(
+		m_odometry.covariance_check_window, m_odometry.covariance_check_quantile);
 
 	std::unique_ptr<ScanStepAssembler> assembler;
 	auto elapsed = [&] {
@@ -144,9 +147,13 @@ bool Pipeline::isNewKeyframe(const MatchResult* match) const
 }
 
 void Pipeline::processStep(
-	const ScanStep& step, const std::vector<RunOutput*>& outputs,
+	const ScanStep& logStep, const std::vector<RunOutput*>& outputs,
 	RunStats& stats)
 {
+	// The step as the estimator sees it: the odometry covariance times the
+	// check's factor (1 while the log's covariance agrees with the matches).
+	ScanStep step = logStep;
+	step.odometry.cov *= m_odometryCheck.scale();
 	MatchResult match;
 	const MatchResult* matchPtr = nullptr;
 	bool usedMatch = false;
@@ -158,14 +165,17 @@ void Pipeline::processStep(
 	}
 	else
 	{
-		m_odometrySinceKeyframe += step.odometry;
+		m_odometrySinceKeyframe += logStep.odometry;
 		if (m_estimator->usesScanMatcher())
 		{
 			// Guess: previous estimate (+) odometry, relative to the keyframe.
 			mrpt::poses::CPosePDFGaussian guess = m_odometrySinceKeyframe;
+			guess.cov *= m_odometryCheck.scale();
 			guess.mean = (m_estimator->pose().mean + step.odometry.mean) -
 				m_estimator->currentKeyframePose().value_or(m_keyframePose);
 			match = m_matcher->match(*m_keyframeScan, *step.scan, guess);
+			if (m_odometry.covariance_check && (match.success || match.rejectedByGuessGate))
+				m_odometryCheck.observe(m_odometrySinceKeyframe, match.estimate);
 			matchPtr = &match;
 			stats.matchesAttempted++;
 			stats.matchTimes.push_back(match.timeSeconds);
@@ -203,6 +213,7 @@ void Pipeline::processStep(
 		stats.keyframes++;
 	}
 	stats.scans++;
+	stats.odometryCovarianceScale = m_odometryCheck.maxScale();
 	if (stats.scans == 1) m_firstScanTime = step.timestamp();
 	stats.logSeconds =
 		std::chrono::duration<double>(step.timestamp() - m_firstScanTime).count();

@@ -18,6 +18,10 @@ struct MatchResult
 	bool success = false;
 	std::string failureReason;
 	mrpt::poses::CPosePDFGaussian estimate;
+	/** The matcher converged, but its estimate was too far from the initial
+	 * guess for the guess's covariance (guess_gate_chi2): `estimate` is the
+	 * converged motion. */
+	bool rejectedByGuessGate = false;
 	unsigned int iterations = 0;
 	double timeSeconds = 0;	 //!< wall time of the match, conversions included
 	/** Fraction of current-scan points paired with the reference at the end,

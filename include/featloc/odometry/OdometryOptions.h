@@ -33,6 +33,21 @@ struct OdometryOptions : public mrpt::config::CLoadableOptions
 	double no_odometry_sigma_xy = 1.0;	//!< [m]
 	double no_odometry_sigma_yaw = mrpt::DEG2RAD(30.0);	//!< [rad]
 
+	/** Check the odometry covariance against the scan matches as the run
+	 * goes and inflate it when the log's (or the model's) is too small for
+	 * the disagreements seen (OdometryCovarianceCheck). Logs often store
+	 * over-confident odometry covariances; the EKF's gate and the matchers'
+	 * guess gates then reject good matches. Off by default: where a
+	 * matcher is confidently wrong (ICP along a corridor) the check blames
+	 * odometry and weakens the gate that caught it (doc/benchmarks.md). */
+	bool covariance_check = false;
+	/** The check uses the last this many converged matches. */
+	unsigned int covariance_check_window = 100;
+	/** The check makes this quantile of the matches' Mahalanobis^2 against
+	 * odometry consistent (0.5: the median; higher: also the tails of the
+	 * odometry error, at the cost of robustness to wrong matches). */
+	double covariance_check_quantile = 0.9;
+
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& c,
 		const std::string& s) override;

@@ -7,6 +7,7 @@
 #include "featloc/io/EntrySource.h"
 #include "featloc/io/InputOptions.h"
 #include "featloc/matchers/ScanMatcher.h"
+#include "featloc/odometry/OdometryCovarianceCheck.h"
 #include "featloc/odometry/OdometryOptions.h"
 #include "featloc/output/RunOutput.h"
 #include "featloc/pipeline/PipelineOptions.h"
@@ -46,7 +47,7 @@ class Pipeline
 
    private:
 	void processStep(
-		const ScanStep& step, const std::vector<RunOutput*>& outputs,
+		const ScanStep& logStep, const std::vector<RunOutput*>& outputs,
 		RunStats& stats);
 
 	InputOptions m_input;
@@ -60,7 +61,10 @@ class Pipeline
 	// there, and the odometry since then (its covariance is the guess's).
 	mrpt::obs::CObservation2DRangeScan::Ptr m_keyframeScan;
 	mrpt::poses::CPose2D m_keyframePose;
+	// (with the log's covariances; the guess uses them times the check's
+	// factor, which scales a composed covariance exactly as its parts)
 	mrpt::poses::CPosePDFGaussian m_odometrySinceKeyframe;
+	OdometryCovarianceCheck m_odometryCheck;
 	mrpt::Clock::time_point m_firstScanTime;
 };
 }  // namespace featloc
