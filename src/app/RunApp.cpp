@@ -222,7 +222,8 @@ void evaluateAndPlot(
 	const ResultsFolder& folder, const RunStats& stats, SummaryJsonWriter& summary)
 {
 	if (stats.scans == 0) return;
-	const Trajectory est = TrajectoryFile::read(folder.stagedFile("poses_cov.txt"));
+	Trajectory est = TrajectoryFile::read(folder.stagedFile("poses_cov.txt"));
+	est.source = folder.finalFile("poses_cov.txt");	// where the user will find it
 	char title[160];
 	if (!reference)
 	{
@@ -291,6 +292,8 @@ int RunApp::main(int argc, char** argv)
 			"too many arguments: expected CONFIG [INPUT], got " + std::to_string(files.size()) +
 			" files");
 	const bool inputOnCommandLine = files.size() == 2;
+	// From here Ctrl-C asks to stop: before the run starts, nothing is touched.
+	InterruptSignals signals;
 
 	// 1. The configuration, every key checked.
 	TrackedConfig cfg;
@@ -326,6 +329,11 @@ int RunApp::main(int argc, char** argv)
 		estimator->usesScanMatcher() ? (", matcher " + rc.matcher->className()).c_str() : "",
 		folder.dir().c_str());
 	std::fflush(stdout);
+	if (signals.requested())
+	{
+		std::fprintf(stderr, "featloc-run: interrupted before the run started; nothing was written\n");
+		return 128 + SIGINT;
+	}
 
 	// 4. The run. From here on, whatever happens, the results are published.
 	RunStats stats;
@@ -333,7 +341,6 @@ int RunApp::main(int argc, char** argv)
 	{
 		Pipeline pipeline(rc.input, rc.odometry, rc.pipeline, std::move(estimator), rc.matcher);
 		ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
-		InterruptSignals signals;
 		stats = pipeline.run(
 			*source, outputs.pointers(), config.quiet() ? nullptr : &progress, &signals.flag());
 		printSummary(stats);

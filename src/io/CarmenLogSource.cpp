@@ -8,6 +8,17 @@ namespace featloc
 CarmenLogSource::CarmenLogSource(const std::string& path)
 	: m_path(path), m_scans(CarmenLogReader::read(path, {}))
 {
+	// Some logs carry no usable time (orebro: all 0; belgioioso: 1.01893e+09
+	// on every line, 6 significant digits): number their scans instead, so
+	// they still run; the reference poses get the same times.
+	for (size_t i = 1; i < m_scans.size() && !m_numberedTimes; i++)
+		m_numberedTimes = !(m_scans[i].time > m_scans[i - 1].time);
+	if (m_numberedTimes)
+		for (size_t i = 0; i < m_scans.size(); i++)
+		{
+			m_scans[i].time = static_cast<double>(i) * kNumberedPeriod;
+			m_scans[i].scan->timestamp = mrpt::Clock::fromDouble(m_scans[i].time);
+		}
 }
 
 bool CarmenLogSource::handles(const std::string& path)
@@ -46,6 +57,10 @@ double CarmenLogSource::progress() const
 
 std::string CarmenLogSource::description() const
 {
-	return "CARMEN log, " + std::to_string(m_scans.size()) + " scans";
+	std::string d = "CARMEN log, " + std::to_string(m_scans.size()) + " scans";
+	if (m_numberedTimes)
+		d += "; its times do not increase, so the scans were numbered 1 s apart (the "
+			 "real-time figures of this run mean nothing)";
+	return d;
 }
 }  // namespace featloc

@@ -12,7 +12,9 @@ namespace featloc
  * CObservation2DRangeScan, both at its logger time. The log is parsed
  * whole when the source is made, so a malformed line is an InputError
  * before the run starts. The corrected poses of the log (x y theta) are
- * kept as its reference trajectory. */
+ * kept as its reference trajectory. A log whose times do not strictly
+ * increase (some Radish logs have none) gets its scans numbered
+ * kNumberedPeriod apart, and description() says so. */
 class CarmenLogSource : public EntrySource
 {
    public:
@@ -27,10 +29,15 @@ class CarmenLogSource : public EntrySource
 	std::string description() const override;
 
 	const std::vector<CarmenScan>& scans() const { return m_scans; }
+	/** True when the log's own times were replaced by scan numbers. */
+	bool numberedTimes() const { return m_numberedTimes; }
+
+	static constexpr double kNumberedPeriod = 1.0;	//!< [s]
 
    private:
 	std::string m_path;
 	std::vector<CarmenScan> m_scans;
 	size_t m_next = 0;	//!< next entry: 2 per scan (odometry, then scan)
+	bool m_numberedTimes = false;
 };
 }  // namespace featloc

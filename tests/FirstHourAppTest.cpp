@@ -1,0 +1,259 @@
+// App-level tests of "a new user's first hour": featloc-run never loses
+// results, checks everything before writing, says what it can do.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "featloc/registerClasses.h"
+#include "support/CommandRunner.h"
+#include "support/TempDir.h"
+
+using featloc::test::CommandResult;
+using featloc::test::runCommand;
+using featloc::test::shellQuote;
+using featloc::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kRun = FEATLOC_RUN_EXE;
+const std::string kEval = FEATLOC_EVAL_EXE;
+const std::string kConfig = std::string(FEATLOC_SOURCE_DIR) + "/config.ini";
+const std::string kMalaga =
+	std::string(MRPT_DATASETS_DIR) + "/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
+const std::string kSimul = std::string(MRPT_DATASETS_DIR) +
+	"/graphslam-engine-demos/action_observations_map/simul.rawlog";
+const std::string kLaser2d = std::string(FEATLOC_SOURCE_DIR) + "/../shared/data/laser2d";
+
+CommandResult featlocRun(const std::string& args)
+{
+	return runCommand(shellQuote(kRun) + " " + args + " -q");
+}
+
+/** Every file of a folder with its bytes. */
+std::map<std::string, std::string> contents(const std::string& dir)
+{
+	std::map<std::string, std::string> out;
+	for (const auto& e : fs::directory_iterator(dir))
+	{
+		std::ifstream in(e.path(), std::ios::binary);
+		std::stringstream ss;
+		ss << in.rdbuf();
+		out[e.path().filename().string()] = ss.str();
+	}
+	return out;
+}
+
+std::set<std::string> names(const std::string& dir)
+{
+	std::set<std::string> out;
+	for (const auto& [name, bytes] : contents(dir)) out.insert(name);
+	return out;
+}
+
+nlohmann::json readJson(const std::string& file)
+{
+	std::ifstream in(file);
+	return nlohmann::json::parse(in);
+}
+
+/** Nothing featloc left beside the results (staging or old folders). */
+void expectNoLeftovers(const TempDir& dir)
+{
+	for (const auto& e : fs::directory_iterator(dir.path()))
+		EXPECT_EQ(e.path().filename().string().find(".featloc-"), std::string::npos)
+			<< e.path();
+}
+}  // namespace
+
+TEST(FirstHour, ATypoKeepsThePreviousResultsByteForByte)
+{
+	TempDir dir;
+	const std::string keep = shellQuote(dir.file("keep"));
+	const CommandResult first = featlocRun(shellQuote(kConfig) + " --out " + keep);
+	ASSERT_EQ(first.exitCode, 0) << first.output;
+	const auto before = contents(dir.file("keep"));
+	ASSERT_GE(before.size(), 8u);
+
+	// --verbose is not an option: a usage error, exit 2, nothing touched.
+	const CommandResult typo = featlocRun(shellQuote(kConfig) + " --verbose --out " + keep);
+	EXPECT_EQ(typo.exitCode, 2) << typo.output;
+	EXPECT_NE(typo.output.find("unknown option '--verbose'"), std::string::npos) << typo.output;
+	EXPECT_EQ(contents(dir.file("keep")), before);
+
+	// Every check before the first scan leaves the results as they were.
+	const std::vector<std::string> failedStarts = {
+		shellQuote(kConfig) + " " + shellQuote(dir.file("missing.rawlog")),
+		shellQuote(kConfig) + " --set Evaluation:ground_truth=" + shellQuote(dir.file("no-gt.txt")),
+		shellQuote(kConfig) + " --set Pipeline:estimator=kalman",
+		shellQuote(FEATLOC_SOURCE_DIR),	 // a directory as CONFIG
+	};
+	for (const auto& args : failedStarts)
+	{
+		const CommandResult r = featlocRun(args + " --out " + keep);
+		EXPECT_NE(r.exitCode, 0) << args << "\n" << r.output;
+		EXPECT_EQ(contents(dir.file("keep")), before) << args;
+	}
+	expectNoLeftovers(dir);
+}
+
+TEST(FirstHour, AReusedFolderNeverMixesTwoRuns)
+{
+	TempDir dir;
+	const std::string out = " --out " + shellQuote(dir.file("r"));
+	const std::string common =
+		shellQuote(kConfig) + " " + shellQuote(kMalaga) + " --set Input:max_scans=40";
+	const CommandResult ekf = featlocRun(common + out + " --set Pipeline:estimator=ekf");
+	ASSERT_EQ(ekf.exitCode, 0) << ekf.output;
+	EXPECT_TRUE(fs::exists(dir.file("r/landmarks.txt")));
+	const CommandResult odo = featlocRun(common + out + " --set Pipeline:estimator=odometry");
+	ASSERT_EQ(odo.exitCode, 0) << odo.output;
+	// Only this run's files, and summary.json names exactly them.
+	EXPECT_FALSE(fs::exists(dir.file("r/landmarks.txt")));
+	const auto s = readJson(dir.file("r/summary.json"));
+	EXPECT_EQ(s["estimator"], "odometry");
+	std::set<std::string> listed(s["outputs"].begin(), s["outputs"].end());
+	EXPECT_EQ(listed, names(dir.file("r")));
+	EXPECT_TRUE(listed.count("trajectory.png"));  // drawn without ground truth too
+	expectNoLeftovers(dir);
+}
+
+TEST(FirstHour, AFolderOfOtherFilesOrHoldingTheInputIsRefused)
+{
+	TempDir dir;
+	fs::create_directories(dir.file("mine"));
+	std::ofstream(dir.file("mine/thesis.tex")) << "keep me\n";
+	const CommandResult r =
+		featlocRun(shellQuote(kConfig) + " --out " + shellQuote(dir.file("mine")));
+	EXPECT_EQ(r.exitCode, 2) << r.output;
+	EXPECT_NE(r.output.find("holds other files"), std::string::npos) << r.output;
+	EXPECT_EQ(names(dir.file("mine")), std::set<std::string>{"thesis.tex"});
+
+	// A results folder whose rawlog is the input: replacing it would delete it.
+	ASSERT_EQ(featlocRun(shellQuote(kConfig) + " " + shellQuote(kMalaga) +
+				  " --set Input:max_scans=10 --out " + shellQuote(dir.file("a")))
+				  .exitCode,
+		0);
+	const CommandResult again = featlocRun(shellQuote(kConfig) + " " +
+		shellQuote(dir.file("a/estimated.rawlog")) + " --out " + shellQuote(dir.file("a")));
+	EXPECT_EQ(again.exitCode, 2) << again.output;
+	EXPECT_NE(again.output.find("inside the results folder"), std::string::npos) << again.output;
+	EXPECT_TRUE(fs::exists(dir.file("a/estimated.rawlog")));
+	expectNoLeftovers(dir);
+}
+
+TEST(FirstHour, ErrorsUpFrontNameWhatIsWrong)
+{
+	TempDir dir;
+	const std::string out = " --out " + shellQuote(dir.file("o"));
+	struct Case
+	{
+		std::string args;
+		int exitCode;
+		std::string expected;
+	};
+	const std::vector<Case> cases = {
+		{shellQuote(FEATLOC_SOURCE_DIR) + out, 2, "is a directory, not an ini file"},
+		{shellQuote(kConfig) + " --set Evaluation:ground_truth=/nowhere/gt.txt" + out, 1,
+			"[Evaluation] ground_truth: file '/nowhere/gt.txt' does not exist"},
+		{shellQuote(kConfig) + " -x" + out, 2, "-x"},
+	};
+	for (const auto& c : cases)
+	{
+		const CommandResult r = featlocRun(c.args);
+		EXPECT_EQ(r.exitCode, c.exitCode) << c.args << "\n" << r.output;
+		EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
+		// Failed before the first scan: no results folder at all.
+		EXPECT_FALSE(fs::exists(dir.file("o"))) << c.args;
+	}
+	expectNoLeftovers(dir);
+}
+
+TEST(FirstHour, HelpAndListClassesComeFromTheRegistries)
+{
+	for (const char* opt : {" --help", " --list-classes"})
+	{
+		const CommandResult r = runCommand(shellQuote(kRun) + opt);
+		EXPECT_EQ(r.exitCode, 0) << r.output;
+		for (const char* name : {"featloc::IcpMatcher", "featloc::PcmFeatureMatcher",
+				 "featloc::IdcMatcher", "featloc::CfIdcMatcher", "odometry", "matcher", "ekf"})
+			EXPECT_NE(r.output.find(name), std::string::npos) << opt << " lacks " << name;
+	}
+	// config.ini's comment names every matcher class too.
+	std::ifstream in(kConfig);
+	std::stringstream ini;
+	ini << in.rdbuf();
+	for (const char* name : {"featloc::IcpMatcher", "featloc::PcmFeatureMatcher",
+			 "featloc::IdcMatcher", "featloc::CfIdcMatcher"})
+		EXPECT_NE(ini.str().find(name), std::string::npos) << name;
+}
+
+TEST(FirstHour, CtrlCStopsCleanlyAndKeepsWhatWasDone)
+{
+	TempDir dir;
+	// MRPT's 1733-scan simulated log takes a few seconds: SIGINT once the
+	// first poses are written (in the staging folder), as a user would.
+	const std::string out = dir.file("i");
+	const CommandResult r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
+		shellQuote(kSimul) + " -q --out " + shellQuote(out) +
+		" > /dev/null & pid=$!; for i in $(seq 200); do "
+		"[ -s " + shellQuote(out) + ".featloc-partial-$pid/poses_cov.txt ] && break; sleep 0.05; "
+		"done; sleep 0.3; kill -INT $pid; wait $pid; echo exit=$?");
+	EXPECT_NE(r.output.find("exit=130"), std::string::npos) << r.output;
+	const auto s = readJson(dir.file("i/summary.json"));
+	EXPECT_EQ(s["status"], "interrupted");
+	const size_t scans = s["counts"]["scans"];
+	EXPECT_GT(scans, 0u);
+	EXPECT_LT(scans, 1733u);
+	// Every output is complete up to the last processed scan.
+	std::ifstream tum(dir.file("i/trajectory.tum"));
+	size_t rows = 0;
+	for (std::string line; std::getline(tum, line);) rows += !line.empty() && line[0] != '#';
+	EXPECT_EQ(rows, scans);
+	expectNoLeftovers(dir);
+}
+
+TEST(FirstHour, CarmenLogsRunEndToEndAgainstTheirCorrectedPoses)
+{
+	if (!fs::exists(kLaser2d)) GTEST_SKIP() << "no " << kLaser2d;
+	TempDir dir;
+	// freiburg-101 has times; orebro has none (all 0): numbered, said so.
+	for (const char* log : {"freiburg-101-corrected.log.gz", "orebro-corrected.log.gz"})
+	{
+		const std::string out = dir.file(log);
+		const CommandResult r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
+			shellQuote(kLaser2d + "/" + log) + " --out " + shellQuote(out) + " -q");
+		ASSERT_EQ(r.exitCode, 0) << r.output;
+		const auto s = readJson(out + "/summary.json");
+		EXPECT_GT(s["counts"]["scans"].get<size_t>(), 200u);
+		EXPECT_EQ(s["evaluation"]["associated"], s["counts"]["scans"]);
+		// Relative motion is what a scan matcher gets right: mm, not m.
+		EXPECT_LT(s["evaluation"]["rpe_translation_m"]["mean"].get<double>(), 0.06) << log;
+		EXPECT_NE(r.output.find("corrected poses"), std::string::npos) << r.output;
+	}
+	EXPECT_NE(runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
+				  shellQuote(kLaser2d + "/orebro-corrected.log.gz") + " -q --out " +
+				  shellQuote(dir.file("o2")))
+				  .output.find("numbered 1 s apart"),
+		std::string::npos);
+}
+
+TEST(FirstHour, FeatlocEvalReadsMrptGroundTruthAndPlotsOneTrajectory)
+{
+	TempDir dir;
+	const std::string path =
+		std::string(MRPT_DATASETS_DIR) + "/kf-slam_demo_ground_truth_robot_path.txt";
+	const CommandResult one = runCommand(shellQuote(kEval) + " " + shellQuote(path) +
+		" --plot " + shellQuote(dir.file("path.png")));
+	EXPECT_EQ(one.exitCode, 0) << one.output;
+	EXPECT_NE(one.output.find("250 poses"), std::string::npos) << one.output;
+	EXPECT_NE(one.output.find("MRPT robot path"), std::string::npos) << one.output;
+	EXPECT_GT(fs::file_size(dir.file("path.png")), 1000u);
+	// Without --plot a single file is a usage error.
+	EXPECT_EQ(runCommand(shellQuote(kEval) + " " + shellQuote(path)).exitCode, 2);
+}
