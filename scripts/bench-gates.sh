@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Issue 17's figures: matcher alone vs EKF, the matchers' guess gates on and
+# off, and [Odometry] covariance_check on and off, on the bundled log, the
+# Malaga log (no ground truth: counts only), the shipped simulated scenes and
+# the six Radish CARMEN logs (their corrected poses as reference; never used
+# to choose any setting). ATE in mm (rmse after SE(2) alignment).
+# Usage: scripts/bench-gates.sh [OUTDIR]      (about 2 minutes)
+set -euo pipefail
+source "$(dirname "$0")/bench-common.sh"
+bench_init gates "$@"
+RUN="$BIN/featloc-run"
+MALAGA="/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog"
+LASER2D="$ROOT/../shared/data/laser2d"
+machine_line
+
+# run NAME INPUT GT [--set ...]: prints "ATEmm failures fallbacks"
+run() {
+  local name="$1" input="$2" gt="$3"; shift 3
+  local args=("$ROOT/config.ini")
+  [ -n "$input" ] && args+=("$input")
+  [ -n "$gt" ] && args+=(--set "Evaluation:ground_truth=$gt")
+  "$RUN" "${args[@]}" -q --out "$OUT/$name" "$@" >"$OUT/$name.txt" 2>&1 || { echo "error (see $OUT/$name.txt)"; return; }
+  jq -r '[((.evaluation.ate_m.rmse // -0.001) * 1000 | round), .counts.match_failures, .counts.fallbacks_to_odometry] | map(tostring) | join(" ")' "$OUT/$name/summary.json"
+}
+
+echo
+echo "## Guess gates and the EKF gate (ATE mm, failures, fallbacks); -1 = no ground truth"
+echo "| log | matcher | matcher alone | matcher, guess gate off | EKF | EKF, gate off | EKF + covariance_check |"
+echo "|---|---|---|---|---|---|---|"
+for log in bundled malaga office lab corridor-people; do
+  case $log in
+    bundled) in=""; gt="";;
+    malaga) in="$MALAGA"; gt="";;
+    *) in="$ROOT/rawlogs/sim/$log.rawlog"; gt="$ROOT/rawlogs/sim/$log.gt.txt";;
+  esac
+  for m in IcpMatcher PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
+    c=(--set "ScanMatcher:class=featloc::$m")
+    a=$(run "$log-$m-m" "$in" "$gt" "${c[@]}")
+    b="(no guess gate)"
+    case $m in IdcMatcher|CfIdcMatcher)
+      b=$(run "$log-$m-m0" "$in" "$gt" "${c[@]}" --set "ScanMatcher.$m:guess_gate_chi2=0");; esac
+    e=$(run "$log-$m-e" "$in" "$gt" "${c[@]}" --set Pipeline:estimator=ekf)
+    e0=$(run "$log-$m-e0" "$in" "$gt" "${c[@]}" --set Pipeline:estimator=ekf --set Ekf:matcher_gate_chi2=1e12)
+    ec=$(run "$log-$m-ec" "$in" "$gt" "${c[@]}" --set Pipeline:estimator=ekf --set Odometry:covariance_check=true)
+    echo "| $log | $m | $a | $b | $e | $e0 | $ec |"
+  done
+done
+
+if [ -d "$LASER2D" ]; then
+  echo
+  echo "## Radish CARMEN logs through featloc-run (IcpMatcher; ATE mm against the corrected poses, failures, fallbacks)"
+  echo "| log | matcher alone | EKF | EKF + covariance_check |"
+  echo "|---|---|---|---|"
+  for f in "$LASER2D"/*.log.gz; do
+    n=$(basename "$f" .log.gz)
+    echo "| $n | $(run "$n-m" "$f" "") | $(run "$n-e" "$f" "" --set Pipeline:estimator=ekf) | $(run "$n-ec" "$f" "" --set Pipeline:estimator=ekf --set Odometry:covariance_check=true) |"
+  done
+fi
+echo
+echo "outputs in $OUT"
