@@ -269,3 +269,26 @@ TEST(JointCompatibilityBranchAndBound, PrefersMorePairsThenSmallerDistance)
 	EXPECT_EQ(best[0], 1);
 	EXPECT_EQ(best[1], 0);
 }
+
+// A known identity whose innovation fails the individual gate is not fused,
+// whatever the association mode (issue: nearest neighbour used to fuse it).
+TEST(EkfLocalizer, GatedOutKnownIdentityIsNotFusedInEitherMode)
+{
+	for (const char* mode : {"nearest", "jcbb"})
+	{
+		EkfOptions o;
+		o.data_association = mode;
+		EkfLocalizer f(o);
+		f.reset(gaussian(CPose2D(0, 0, 0), 0, 0, 0));
+		f.updateLandmarks({observation(3, 0, 0.05, 7), observation(0, 4, 0.05, -1)});
+		ASSERT_EQ(f.landmarkCount(), 2u);
+		const Eigen::VectorXd before = f.state();
+		// Landmark 7 seen 2 m from where it is: implausible at 5 cm sigma.
+		const auto u = f.updateLandmarks({observation(5, 0, 0.05, 7)});
+		EXPECT_EQ(u.rejected, 1u) << mode;
+		EXPECT_EQ(u.associated, 0u) << mode;
+		EXPECT_EQ(u.added, 0u) << mode;
+		EXPECT_TRUE(f.state().isApprox(before)) << mode;
+		EXPECT_EQ(f.landmarks()[0].observations, 1u) << mode;
+	}
+}

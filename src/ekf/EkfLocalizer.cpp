@@ -199,6 +199,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 	std::vector<std::vector<size_t>> candidates(n);
 	std::vector<char> unknown(n, 0);
 	std::vector<char> nearSome(n, 0);  //!< within newGate2 of some landmark
+	std::vector<char> knownRejected(n, 0);	//!< known identity, failed its gate
 	for (size_t i = 0; i < n; i++)
 	{
 		if (obs[i].id >= 0)
@@ -211,7 +212,9 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 						pairing[i] = static_cast<int>(j);
 					else
 					{
-						candidates[i].push_back(j);	 // known but implausible: not a new one
+						// Known but implausible: neither fused nor a new landmark,
+						// and out of every association search.
+						knownRejected[i] = 1;
 						out.rejected++;
 					}
 				}
@@ -273,6 +276,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 	for (size_t i = 0; i < n; i++)
 	{
 		if (pairing[i] >= 0) continue;
+		if (knownRejected[i]) continue;
 		if (!candidates[i].empty() || nearSome[i])
 		{
 			if (unknown[i]) out.ambiguous++;
