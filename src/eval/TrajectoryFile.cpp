@@ -70,6 +70,26 @@ void requireColumns(
 /** KITTI's camera frame: every rotation is about the y axis (r22 = 1). */
 bool isCameraConvention(const Row& r) { return std::abs(r[5] - 1.0) < 1e-6; }
 
+/** Every format with its command-line name and its console description:
+ * parseFormat, formatName and formatDescription all read this one list. */
+struct FormatInfo
+{
+	TrajectoryFile::Format format;
+	const char* name;
+	const char* description;
+};
+const FormatInfo kFormats[] = {
+	{TrajectoryFile::Format::Tum, "tum", "TUM 't x y z qx qy qz qw'"},
+	{TrajectoryFile::Format::TimeXYYaw, "txyyaw", "'t x y yaw' (MRPT .GT.txt)"},
+	{TrajectoryFile::Format::PosesCov, "poses_cov", "featloc poses_cov.txt"},
+	{TrajectoryFile::Format::Relations, "relations", "relations 't1 t2 x y z roll pitch yaw'"},
+	{TrajectoryFile::Format::MrptRobotPath, "mrpt_path",
+		"MRPT robot path 'x y z yaw pitch roll', no times: rows pair with the estimate's in "
+		"order"},
+	{TrajectoryFile::Format::Kitti, "kitti",
+		"KITTI 3x4 pose rows, no times: rows pair with the estimate's in order"},
+};
+
 bool isUnitQuaternion(const Row& r)
 {
 	const double n2 = r[4] * r[4] + r[5] * r[5] + r[6] * r[6] + r[7] * r[7];
@@ -196,57 +216,26 @@ std::vector<PoseRelation> TrajectoryFile::readRelations(const std::string& path)
 TrajectoryFile::Format TrajectoryFile::parseFormat(const std::string& name)
 {
 	if (name == "auto") return Format::Auto;
-	if (name == "tum") return Format::Tum;
-	if (name == "txyyaw") return Format::TimeXYYaw;
-	if (name == "poses_cov") return Format::PosesCov;
-	if (name == "relations") return Format::Relations;
-	if (name == "mrpt_path") return Format::MrptRobotPath;
-	if (name == "kitti") return Format::Kitti;
-	throw InputError(
-		"unknown trajectory format '" + name +
-		"' (auto, tum, txyyaw, poses_cov, relations, mrpt_path, kitti)");
+	std::string known = "auto";
+	for (const auto& f : kFormats)
+	{
+		if (name == f.name) return f.format;
+		known += std::string(", ") + f.name;
+	}
+	throw InputError("unknown trajectory format '" + name + "' (" + known + ")");
 }
 
 std::string TrajectoryFile::formatName(Format f)
 {
-	switch (f)
-	{
-		case Format::Tum:
-			return "tum";
-		case Format::TimeXYYaw:
-			return "txyyaw";
-		case Format::PosesCov:
-			return "poses_cov";
-		case Format::Relations:
-			return "relations";
-		case Format::MrptRobotPath:
-			return "mrpt_path";
-		case Format::Kitti:
-			return "kitti";
-		default:
-			return "auto";
-	}
+	for (const auto& k : kFormats)
+		if (k.format == f) return k.name;
+	return "auto";
 }
 
 std::string TrajectoryFile::formatDescription(Format f)
 {
-	switch (f)
-	{
-		case Format::Tum:
-			return "TUM 't x y z qx qy qz qw'";
-		case Format::TimeXYYaw:
-			return "'t x y yaw' (MRPT .GT.txt)";
-		case Format::PosesCov:
-			return "featloc poses_cov.txt";
-		case Format::Relations:
-			return "relations 't1 t2 x y z roll pitch yaw'";
-		case Format::MrptRobotPath:
-			return "MRPT robot path 'x y z yaw pitch roll', no times: rows pair with the "
-				   "estimate's in order";
-		case Format::Kitti:
-			return "KITTI 3x4 pose rows, no times: rows pair with the estimate's in order";
-		default:
-			return "auto";
-	}
+	for (const auto& k : kFormats)
+		if (k.format == f) return k.description;
+	return "auto";
 }
 }  // namespace featloc
