@@ -7,7 +7,6 @@ namespace featloc
 namespace
 {
 std::atomic<bool> g_stop{false};
-volatile std::sig_atomic_t g_signal = 0;
 struct sigaction g_oldInt, g_oldTerm;
 
 void onSignal(int sig)
@@ -19,7 +18,6 @@ void onSignal(int sig)
 		std::raise(sig);
 		return;
 	}
-	g_signal = sig;
 	g_stop.store(true);
 }
 }  // namespace
@@ -27,7 +25,6 @@ void onSignal(int sig)
 InterruptSignals::InterruptSignals()
 {
 	g_stop.store(false);
-	g_signal = 0;
 	struct sigaction sa = {};
 	sa.sa_handler = onSignal;
 	sigemptyset(&sa.sa_mask);
@@ -42,6 +39,4 @@ InterruptSignals::~InterruptSignals()
 }
 
 const std::atomic<bool>& InterruptSignals::flag() const { return g_stop; }
-
-int InterruptSignals::signalNumber() const { return g_signal; }
 }  // namespace featloc

@@ -18,7 +18,5 @@ class InterruptSignals
 
 	const std::atomic<bool>& flag() const;
 	bool requested() const { return flag().load(); }
-	/** The signal that asked to stop (0: none). */
-	int signalNumber() const;
 };
 }  // namespace featloc

@@ -29,8 +29,6 @@ class CarmenLogSource : public EntrySource
 	std::string description() const override;
 
 	const std::vector<CarmenScan>& scans() const { return m_scans; }
-	/** True when the log's own times were replaced by scan numbers. */
-	bool numberedTimes() const { return m_numberedTimes; }
 
 	static constexpr double kNumberedPeriod = 1.0;	//!< [s]
 

@@ -40,7 +40,6 @@ class ResultsFolder
 	void publish();
 
 	const std::string& dir() const { return m_dir; }
-	const std::string& stagingDir() const { return m_staging; }
 
    private:
 	std::string m_dir, m_staging;
