@@ -25,7 +25,8 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	 * Larger values stop small per-scan errors from accumulating on
 	 * high-rate, noisy logs (as icp-slam's localizationLinDistance): 1 m /
 	 * 20 deg is what works on MRPT's logs and featloc's scenes (ATE 0.21 m vs
-	 * 7.2 m on the bundled log, doc/benchmarks.md), so it is the default. */
+	 * 7.2 m with every scan a keyframe on MRPT's simul.rawlog,
+	 * doc/benchmarks.md), so it is the default. */
 	double keyframe_distance = 1.0;
 	double keyframe_angle = 20.0 * M_PI / 180.0;
 
