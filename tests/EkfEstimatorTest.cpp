@@ -87,7 +87,7 @@ TEST(EkfEstimator, TheSameMatchTwiceFromOneKeyframeCountsOnce)
 	// twice, the covariance would halve again; the estimator keeps one.
 	EkfEstimator once(EkfOptions{}), twice(EkfOptions{});
 	for (auto* e : {&once, &twice}) e->initialize(diag(CPose2D(), 0, 0));
-	ScanStep step;
+	EstimationStep step;
 	step.hasOdometry = true;
 	step.odometry = diag(CPose2D(0.5, 0, 0), 0.01, 0.001);
 	MatchResult m;
@@ -95,7 +95,7 @@ TEST(EkfEstimator, TheSameMatchTwiceFromOneKeyframeCountsOnce)
 	m.estimate = diag(CPose2D(0.52, 0, 0), 0.01, 0.001);
 	once.process(step, &m);
 	twice.process(step, &m);
-	ScanStep still = step;
+	EstimationStep still = step;
 	still.odometry = diag(CPose2D(), 1e-12, 1e-14);
 	twice.process(still, &m);
 	EXPECT_NEAR(twice.pose().mean.x(), once.pose().mean.x(), 1e-6);
@@ -107,7 +107,7 @@ TEST(EkfEstimator, FailedOrGatedMatchKeepsThePredictionAndSaysWhy)
 {
 	EkfEstimator e(EkfOptions{});
 	e.initialize(diag(CPose2D(), 0, 0));
-	ScanStep step;
+	EstimationStep step;
 	step.hasOdometry = true;
 	step.odometry = diag(CPose2D(0.5, 0, 0), 0.0001, 1e-6);
 	MatchResult failed;

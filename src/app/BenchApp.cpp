@@ -27,7 +27,7 @@
 #include "featloc/io/RawlogReader.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/pipeline/ProgressBar.h"
-#include "featloc/pipeline/ScanStepAssembler.h"
+#include "featloc/pipeline/StepAssembler.h"
 #include "featloc/registerClasses.h"
 
 namespace featloc
@@ -63,17 +63,23 @@ Sequence loadRawlog(
 {
 	Sequence seq;
 	RawlogReader reader(path);
-	ScanStepAssembler assembler(rc.input, rc.odometry, path);
-	std::vector<ScanStep> steps;
-	std::vector<ScanStepAssembler::SelectedScan> selected;
+	StepAssembler assembler(rc.input, rc.odometry, path);
+	std::vector<EstimationStep> steps;
+	std::vector<StepSource> used;
 	RawlogEntry e;
-	while (!assembler.full() && reader.next(e)) assembler.push(e, selected, steps);
+	while (!assembler.full() && reader.next(e)) assembler.push(e, used, steps);
 	assembler.finish(steps);
+	// Scan pairs: the odometry of steps without a scan (landmark frames)
+	// composes into the next scan's.
+	mrpt::poses::CPosePDFGaussian sinceScan;
 	for (const auto& s : steps)
 	{
+		sinceScan += s.odometry;
+		if (!s.scan) continue;
 		seq.scans.push_back(s.scan);
 		seq.times.push_back(mrpt::Clock::toDouble(s.timestamp()));
-		seq.odometry.push_back(s.odometry);
+		seq.odometry.push_back(seq.scans.size() == 1 ? s.odometry : sinceScan);
+		sinceScan = mrpt::poses::CPosePDFGaussian();
 	}
 	if (!gtPath.empty())
 	{

@@ -174,8 +174,8 @@ void writeUsedConfig(const TrackedConfig& cfg, const std::string& path)
 void printSummary(const RunStats& s)
 {
 	std::printf(
-		"%s %zu scans from %zu entries", s.interrupted ? "interrupted after" : "processed",
-		s.scans, s.entries);
+		"%s %zu steps (%zu with a scan) from %zu entries",
+		s.interrupted ? "interrupted after" : "processed", s.steps, s.scans, s.entries);
 	if (s.invalidatedBeams) std::printf(" (%zu beams invalidated)", s.invalidatedBeams);
 	std::printf("\n");
 	// "N s of log in M s": the whole run, matcher and I/O included.
@@ -191,6 +191,8 @@ void printSummary(const RunStats& s)
 			"  odometry covariance: the log's is too small for the motion the matches "
 			"show; inflated x%.1f (see [Odometry] covariance_check)\n",
 			s.odometryCovarianceScale);
+	for (const auto& [cls, n] : s.ignoredObservations)
+		std::printf("  %zu %s ignored (nothing in featloc uses them)\n", n, cls.c_str());
 	if (s.landmarkObservations || s.landmarksInMap)
 		std::printf(
 			"  %zu range-bearing observations; %zu landmarks in the map at the end\n",
@@ -221,7 +223,7 @@ void evaluateAndPlot(
 	const RunConfiguration& rc, const std::optional<Reference>& reference,
 	const ResultsFolder& folder, const RunStats& stats, SummaryJsonWriter& summary)
 {
-	if (stats.scans == 0) return;
+	if (stats.steps == 0) return;
 	Trajectory est = TrajectoryFile::read(folder.stagedFile("poses_cov.txt"));
 	est.source = folder.finalFile("poses_cov.txt");	// where the user will find it
 	char title[160];
@@ -368,7 +370,7 @@ int RunApp::main(int argc, char** argv)
 		if (std::ifstream(folder.finalFile(f))) std::printf("  %s\n", f.c_str());
 	if (stats.interrupted)
 	{
-		std::printf("interrupted: the results hold the %zu scans processed\n", stats.scans);
+		std::printf("interrupted: the results hold the %zu steps processed\n", stats.steps);
 		return 128 + SIGINT;
 	}
 	return 0;

@@ -10,7 +10,7 @@ void EkfEstimator::initialize(const mrpt::poses::CPosePDFGaussian& initialPose)
 	m_reason.clear();
 }
 
-bool EkfEstimator::process(const ScanStep& step, const MatchResult* match)
+bool EkfEstimator::process(const EstimationStep& step, const MatchResult* match)
 {
 	m_filter.predict(step.odometry);
 	if (m_withMatch) m_withMatch->predict(step.odometry);

@@ -10,7 +10,7 @@ void MatcherChainEstimator::initialize(
 }
 
 bool MatcherChainEstimator::process(
-	const ScanStep& step, const MatchResult* match)
+	const EstimationStep& step, const MatchResult* match)
 {
 	const bool useMatch = match && match->success;
 	if (useMatch)

@@ -8,7 +8,7 @@ void OdometryEstimator::initialize(
 	m_pose = initialPose;
 }
 
-bool OdometryEstimator::process(const ScanStep& step, const MatchResult*)
+bool OdometryEstimator::process(const EstimationStep& step, const MatchResult*)
 {
 	m_pose += step.odometry;  // x_k = x_{k-1} (+) u_k, covariance by Jacobians
 	return false;

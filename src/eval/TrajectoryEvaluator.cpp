@@ -66,6 +66,13 @@ std::vector<std::pair<size_t, size_t>> TrajectoryEvaluator::associate(
 			pairs.emplace_back(i, i);
 		return pairs;
 	}
+	for (const Trajectory* t : {&reference, &estimate})
+		if (t->repeatedTimes)
+			throw InputError(
+				"'" + t->source +
+				"' has rows that share a time, so they cannot be paired by time; compare it "
+				"with an untimed reference (MRPT robot path or KITTI file: rows are paired in "
+				"order)");
 	// Candidate pairs (|dt|, ref, est): each estimate with its nearest
 	// reference; then greedily keep the closest pairs with unique indices.
 	std::vector<std::tuple<double, size_t, size_t>> cand;

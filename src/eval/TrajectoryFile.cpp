@@ -186,11 +186,11 @@ Trajectory TrajectoryFile::read(const std::string& path, Format format, Format* 
 				p.cov(2, 2) = r[9];
 				break;
 		}
-		if (!traj.poses.empty() && p.t <= traj.poses.back().t)
+		if (!traj.poses.empty() && p.t < traj.poses.back().t)
 			throw InputError(
 				at(path, lineNo) + ": time " + std::to_string(p.t) +
-				" is not after the previous row's; rows must be in increasing "
-				"time");
+				" is before the previous row's; rows must be in time order");
+		if (!traj.poses.empty() && p.t == traj.poses.back().t) traj.repeatedTimes = true;
 		traj.poses.push_back(p);
 	});
 	if (traj.poses.empty())

@@ -27,17 +27,15 @@ EstimatedRawlogWriter::EstimatedRawlogWriter(
 
 EstimatedRawlogWriter::~EstimatedRawlogWriter() = default;
 
-void EstimatedRawlogWriter::onEntry(
-	const RawlogEntry& entry,
-	const std::vector<ScanStepAssembler::SelectedScan>& selected)
+void EstimatedRawlogWriter::onEntry(const RawlogEntry& entry, const std::vector<StepSource>& used)
 {
-	m_pending.push_back({entry, selected});
+	m_pending.push_back({entry, used});
 	flush(false);
 }
 
 void EstimatedRawlogWriter::onStep(const StepRecord& r)
 {
-	m_poses[r.step.scanIndex] = r.pose;
+	m_poses[r.step.index] = {r.pose, r.step.source, r.step.time};
 	flush(false);
 }
 
@@ -53,29 +51,38 @@ void EstimatedRawlogWriter::flush(bool all)
 	{
 		const Pending& p = m_pending.front();
 		bool complete = true;
-		for (const auto& s : p.scans)
-			complete = complete && m_poses.count(s.scanIndex);
+		for (const auto& s : p.used) complete = complete && m_poses.count(s.stepIndex);
 		if (!complete && !all) break;
 		write(p);
-		for (const auto& s : p.scans) m_poses.erase(s.scanIndex);
+		const std::vector<StepSource> done = p.used;
 		m_pending.pop_front();
+		// A step can feed several entries (format #2 observations that
+		// share a time): keep its pose until the last of them is written.
+		for (const auto& s : done)
+		{
+			bool needed = false;
+			for (const auto& q : m_pending)
+				for (const auto& u : q.used) needed = needed || u.stepIndex == s.stepIndex;
+			if (!needed) m_poses.erase(s.stepIndex);
+		}
 	}
 }
 
 void EstimatedRawlogWriter::write(const Pending& p)
 {
 	using namespace mrpt::obs;
-	// The pose observation of a scan, if its pose is known.
+	// The pose observation of the step whose primary observation is
+	// `source`, if its pose is known.
 	auto poseOf = [&](const CObservation* source) -> CObservation::Ptr {
-		for (const auto& s : p.scans)
+		for (const auto& s : p.used)
 		{
-			if (s.source != source) continue;
-			const auto it = m_poses.find(s.scanIndex);
-			if (it == m_poses.end()) return nullptr;
+			if (s.observation != source) continue;
+			const auto it = m_poses.find(s.stepIndex);
+			if (it == m_poses.end() || it->second.source != source) return nullptr;
 			auto obs = std::make_shared<CObservationRobotPose>();
 			obs->sensorLabel = m_poseLabel;
-			obs->timestamp = source->timestamp;
-			obs->pose = mrpt::poses::CPose3DPDFGaussian(it->second);
+			obs->timestamp = it->second.time;
+			obs->pose = mrpt::poses::CPose3DPDFGaussian(it->second.pose);
 			return obs;
 		}
 		return nullptr;

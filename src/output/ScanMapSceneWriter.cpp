@@ -47,13 +47,13 @@ void ScanMapSceneWriter::onStep(const StepRecord& r)
 	const mrpt::poses::CPose2D robot = r.pose.mean;
 	m_path3d.push_back(mrpt::poses::CPose3D(robot).asTPose());
 	if (r.landmarks) m_landmarks = *r.landmarks;
-	if (m_ellipseEvery > 0 && r.step.scanIndex % m_ellipseEvery == 0)
+	if (m_ellipseEvery > 0 && r.step.index % m_ellipseEvery == 0)
 	{
 		Eigen::Matrix2d c;
 		c << r.pose.cov(0, 0), r.pose.cov(0, 1), r.pose.cov(1, 0), r.pose.cov(1, 1);
 		m_robotEllipses.emplace_back(Eigen::Vector2d(robot.x(), robot.y()), c);
 	}
-	if (r.step.scanIndex % m_decimation != 0) return;
+	if (!r.step.scan || r.step.scanIndex % m_decimation != 0) return;
 	// Points in the sensor frame -> robot frame (sensorPose) -> world.
 	const mrpt::poses::CPose2D sensor =
 		robot + mrpt::poses::CPose2D(r.step.scan->sensorPose);

@@ -21,6 +21,7 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 	j["laser_label"] = s.laserLabel;
 	j["counts"] = {
 		{"entries", s.entries},
+		{"steps", s.steps},
 		{"scans", s.scans},
 		{"scans_per_label", s.scansPerLabel},
 		{"odometry_readings", s.odometryReadings},
@@ -32,7 +33,8 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"keyframes", s.keyframes},
 		{"matches", s.matchesAttempted},
 		{"match_failures", s.matchFailures},
-		{"fallbacks_to_odometry", s.fallbacks}};
+		{"fallbacks_to_odometry", s.fallbacks},
+		{"ignored_observations", s.ignoredObservations}};
 	j["failure_examples"] = s.failureExamples;
 	j["rejection_examples"] = s.rejectionExamples;
 	const ErrorStats t = ErrorStats::of(s.matchTimes);

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "featloc/core/InputError.h"
-#include "featloc/pipeline/ScanStepAssembler.h"
+#include "featloc/pipeline/StepAssembler.h"
 
 namespace featloc
 {
@@ -14,7 +14,7 @@ namespace
 {
 constexpr size_t kMaxFailureExamples = 10;
 
-void copyAssemblerStats(const ScanStepAssembler& a, RunStats& s)
+void copyAssemblerStats(const StepAssembler& a, RunStats& s)
 {
 	s.laserLabel = a.selector().label();
 	s.scansPerLabel = a.selector().scansPerLabel();
@@ -23,6 +23,16 @@ void copyAssemblerStats(const ScanStepAssembler& a, RunStats& s)
 	s.odometryActions = a.odometryActions();
 	s.stepsWithoutOdometry = a.stepsWithoutOdometry();
 	s.landmarkObservations = a.landmarkObservations();
+	s.ignoredObservations = a.ignoredObservations();
+}
+
+/** "5 CObservationBearingRange, 3 CObservationImage": what the log holds. */
+std::string describeContents(const std::map<std::string, size_t>& perClass)
+{
+	std::string out;
+	for (const auto& [cls, n] : perClass)
+		out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + cls;
+	return out.empty() ? "no observations" : out;
 }
 }  // namespace
 
@@ -57,7 +67,7 @@ RunStats Pipeline::run(
 	m_odometryCheck = OdometryCovarianceCheck(
 		m_odometry.covariance_check_window, m_odometry.covariance_check_quantile);
 
-	std::unique_ptr<ScanStepAssembler> assembler;
+	std::unique_ptr<StepAssembler> assembler;
 	auto elapsed = [&] {
 		return std::chrono::duration<double>(
 				   std::chrono::steady_clock::now() - t0)
@@ -65,11 +75,11 @@ RunStats Pipeline::run(
 	};
 	try
 	{
-		assembler = std::make_unique<ScanStepAssembler>(
+		assembler = std::make_unique<StepAssembler>(
 			m_input, m_odometry, rawlogPath);
 		RawlogEntry entry;
-		std::vector<ScanStepAssembler::SelectedScan> selected;
-		std::vector<ScanStep> ready;
+		std::vector<StepSource> used;
+		std::vector<EstimationStep> ready;
 		while (!assembler->full())
 		{
 			if (stop && stop->load())
@@ -79,33 +89,35 @@ RunStats Pipeline::run(
 			}
 			if (!source.next(entry)) break;
 			stats.entries++;
-			selected.clear();
+			used.clear();
 			ready.clear();
-			assembler->push(entry, selected, ready);
-			for (auto* o : outputs) o->onEntry(entry, selected);
+			assembler->push(entry, used, ready);
+			for (auto* o : outputs) o->onEntry(entry, used);
 			for (const auto& step : ready) processStep(step, outputs, stats);
-			if (progress) progress->update(source.progress(), stats.scans);
+			if (progress) progress->update(source.progress(), stats.steps);
 		}
 		ready.clear();
 		assembler->finish(ready);
 		for (const auto& step : ready) processStep(step, outputs, stats);
-		if (progress) progress->done(stats.scans);
+		if (progress) progress->done(stats.steps);
 		copyAssemblerStats(*assembler, stats);
 
-		if (stats.scans == 0 && !stats.interrupted)
+		if (stats.steps == 0 && !stats.interrupted)
 		{
 			std::ostringstream msg;
 			msg << "rawlog '" << rawlogPath << "' (" << stats.entries
-				<< " entries) has no 2-D laser scan";
+				<< " entries) has nothing featloc can use: no 2-D laser scan";
 			if (!m_input.laser_label.empty())
 				msg << " with sensor label '" << m_input.laser_label << "'";
+			msg << " and no range-bearing observation (it holds "
+				<< describeContents(assembler->objectsPerClass());
 			if (!stats.scansPerLabel.empty())
 			{
-				msg << " (2-D scans seen per label:";
+				msg << "; 2-D scans per label:";
 				for (const auto& [label, n] : stats.scansPerLabel)
 					msg << " '" << label << "': " << n;
-				msg << ")";
 			}
+			msg << ")";
 			throw InputError(msg.str());
 		}
 		stats.wallTime = elapsed();
@@ -113,7 +125,7 @@ RunStats Pipeline::run(
 	}
 	catch (const std::exception& e)
 	{
-		if (progress) progress->done(stats.scans);
+		if (progress) progress->done(stats.steps);
 		if (assembler) copyAssemblerStats(*assembler, stats);
 		stats.ok = false;
 		stats.error = e.what();
@@ -147,35 +159,29 @@ bool Pipeline::isNewKeyframe(const MatchResult* match) const
 }
 
 void Pipeline::processStep(
-	const ScanStep& logStep, const std::vector<RunOutput*>& outputs,
-	RunStats& stats)
+	const EstimationStep& logStep, const std::vector<RunOutput*>& outputs, RunStats& stats)
 {
 	// The step as the estimator sees it: the odometry covariance times the
 	// check's factor (1 while the log's covariance agrees with the matches).
-	ScanStep step = logStep;
+	EstimationStep step = logStep;
 	step.odometry.cov *= m_odometryCheck.scale();
 	MatchResult match;
 	const MatchResult* matchPtr = nullptr;
 	bool usedMatch = false;
-	if (step.scanIndex == 0 || !m_keyframeScan)
+	if (step.index == 0)
 	{
 		const auto& p = m_options.initial_pose;
-		m_estimator->initialize(mrpt::poses::CPosePDFGaussian(
-			mrpt::poses::CPose2D(p[0], p[1], p[2])));
+		m_estimator->initialize(
+			mrpt::poses::CPosePDFGaussian(mrpt::poses::CPose2D(p[0], p[1], p[2])));
+		// What the first frame saw (landmarks) is fused at the initial pose.
+		if (!step.landmarks.empty()) m_estimator->process(step, nullptr);
 	}
 	else
 	{
 		m_odometrySinceKeyframe += logStep.odometry;
-		if (m_estimator->usesScanMatcher())
+		if (m_estimator->usesScanMatcher() && step.scan && m_keyframeScan)
 		{
-			// Guess: previous estimate (+) odometry, relative to the keyframe.
-			mrpt::poses::CPosePDFGaussian guess = m_odometrySinceKeyframe;
-			guess.cov *= m_odometryCheck.scale();
-			guess.mean = (m_estimator->pose().mean + step.odometry.mean) -
-				m_estimator->currentKeyframePose().value_or(m_keyframePose);
-			match = m_matcher->match(*m_keyframeScan, *step.scan, guess);
-			if (m_odometry.covariance_check && (match.success || match.rejectedByGuessGate))
-				m_odometryCheck.observe(m_odometrySinceKeyframe, match.estimate);
+			match = matchToKeyframe(step);
 			matchPtr = &match;
 			stats.matchesAttempted++;
 			stats.matchTimes.push_back(match.timeSeconds);
@@ -186,8 +192,7 @@ void Pipeline::processStep(
 				if (stats.failureExamples.size() < kMaxFailureExamples)
 					stats.failureExamples.push_back(
 						"scan " + std::to_string(step.scanIndex) + " (entry #" +
-						std::to_string(step.entryIndex) +
-						"): " + match.failureReason);
+						std::to_string(step.entryIndex) + "): " + match.failureReason);
 			}
 		}
 		const auto e0 = std::chrono::steady_clock::now();
@@ -200,11 +205,10 @@ void Pipeline::processStep(
 			if (match.success && stats.rejectionExamples.size() < kMaxFailureExamples)
 				stats.rejectionExamples.push_back(
 					"scan " + std::to_string(step.scanIndex) + " (entry #" +
-					std::to_string(step.entryIndex) +
-					"): " + m_estimator->lastFallbackReason());
+					std::to_string(step.entryIndex) + "): " + m_estimator->lastFallbackReason());
 		}
 	}
-	if (!m_keyframeScan || isNewKeyframe(matchPtr))
+	if (step.scan && (!m_keyframeScan || isNewKeyframe(matchPtr)))
 	{
 		m_keyframeScan = step.scan;
 		m_keyframePose = m_estimator->pose().mean;
@@ -212,14 +216,27 @@ void Pipeline::processStep(
 		m_estimator->markKeyframe();
 		stats.keyframes++;
 	}
-	stats.scans++;
+	stats.steps++;
+	if (step.scan) stats.scans++;
 	stats.odometryCovarianceScale = m_odometryCheck.maxScale();
-	if (stats.scans == 1) m_firstScanTime = step.timestamp();
-	stats.logSeconds =
-		std::chrono::duration<double>(step.timestamp() - m_firstScanTime).count();
+	if (stats.steps == 1) m_firstStepTime = step.time;
+	stats.logSeconds = std::chrono::duration<double>(step.time - m_firstStepTime).count();
 	const std::vector<EstimatedLandmark> landmarks = m_estimator->landmarks();
 	stats.landmarksInMap = landmarks.size();
 	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch, &landmarks};
 	for (auto* o : outputs) o->onStep(record);
+}
+
+MatchResult Pipeline::matchToKeyframe(const EstimationStep& step)
+{
+	// Guess: previous estimate (+) odometry, relative to the keyframe.
+	mrpt::poses::CPosePDFGaussian guess = m_odometrySinceKeyframe;
+	guess.cov *= m_odometryCheck.scale();
+	guess.mean = (m_estimator->pose().mean + step.odometry.mean) -
+		m_estimator->currentKeyframePose().value_or(m_keyframePose);
+	MatchResult match = m_matcher->match(*m_keyframeScan, *step.scan, guess);
+	if (m_odometry.covariance_check && (match.success || match.rejectedByGuessGate))
+		m_odometryCheck.observe(m_odometrySinceKeyframe, match.estimate);
+	return match;
 }
 }  // namespace featloc

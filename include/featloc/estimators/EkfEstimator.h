@@ -21,7 +21,7 @@ class EkfEstimator : public PoseEstimator
 	std::string name() const override { return "ekf"; }
 	bool usesScanMatcher() const override { return true; }
 	void initialize(const mrpt::poses::CPosePDFGaussian& initialPose) override;
-	bool process(const ScanStep& step, const MatchResult* match) override;
+	bool process(const EstimationStep& step, const MatchResult* match) override;
 	void markKeyframe() override;
 	std::optional<mrpt::poses::CPose2D> currentKeyframePose() const override
 	{

@@ -15,7 +15,7 @@ class MatcherChainEstimator : public PoseEstimator
 	std::string name() const override { return "matcher"; }
 	bool usesScanMatcher() const override { return true; }
 	void initialize(const mrpt::poses::CPosePDFGaussian& initialPose) override;
-	bool process(const ScanStep& step, const MatchResult* match) override;
+	bool process(const EstimationStep& step, const MatchResult* match) override;
 	void markKeyframe() override { m_keyframePose = m_pose; }
 	const mrpt::poses::CPosePDFGaussian& pose() const override { return m_pose; }
 

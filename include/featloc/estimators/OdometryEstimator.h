@@ -11,7 +11,7 @@ class OdometryEstimator : public PoseEstimator
 	std::string name() const override { return "odometry"; }
 	bool usesScanMatcher() const override { return false; }
 	void initialize(const mrpt::poses::CPosePDFGaussian& initialPose) override;
-	bool process(const ScanStep& step, const MatchResult* match) override;
+	bool process(const EstimationStep& step, const MatchResult* match) override;
 	const mrpt::poses::CPosePDFGaussian& pose() const override { return m_pose; }
 
    private:

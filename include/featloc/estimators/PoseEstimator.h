@@ -9,7 +9,7 @@
 
 #include "featloc/ekf/EstimatedLandmark.h"
 #include "featloc/matchers/MatchResult.h"
-#include "featloc/pipeline/ScanStep.h"
+#include "featloc/estimators/EstimationStep.h"
 
 namespace featloc
 {
@@ -39,7 +39,7 @@ class PoseEstimator
 	 * from the current reference (keyframe) scan to this one, or nullptr
 	 * when no matcher ran. Returns true when the estimate used the match,
 	 * false when it fell back to odometry. */
-	virtual bool process(const ScanStep& step, const MatchResult* match) = 0;
+	virtual bool process(const EstimationStep& step, const MatchResult* match) = 0;
 
 	/** The scan just processed becomes the reference of the next matches
 	 * (the pipeline calls it after initialize() and after every keyframe

@@ -24,6 +24,10 @@ struct Trajectory
 	/** False for formats without times (MRPT robot paths, KITTI): `t` is
 	 * then the row index, and evaluation pairs rows in order. */
 	bool timed = true;
+	/** Some consecutive rows share a time (a format #1 log whose frames
+	 * all carry one timestamp, as MRPT's kf-slam_demo.rawlog): the rows
+	 * can only be paired in order, with an untimed reference. */
+	bool repeatedTimes = false;
 };
 
 /** A relative pose between two times (Kummerle et al. 2009 relations). */

@@ -11,16 +11,17 @@
 namespace featloc
 {
 /** estimated.rawlog: every input entry, in the input's own format, plus the
- * estimated robot pose of each processed scan as an
+ * estimated robot pose of each processed step as an
  * mrpt::obs::CObservationRobotPose (sensor label from [Output] pose_label,
- * the scan's timestamp, pose with covariance) placed right after the scan:
- * inside the scan's sensory frame (format #1), or as the next entry
+ * the step's timestamp, pose with covariance) placed right after the step's
+ * primary observation (its scan, else its first landmark observation):
+ * inside that observation's sensory frame (format #1), or as the next entry
  * (format #2). RawLogViewer and rawlog-edit open it.
  *
- * An entry is written once the poses of all its scans are known (format #2
- * scans can wait for the next odometry reading), so the file grows during
- * the run; finish() writes what remains, without poses for scans that were
- * never processed. Compressed with gzip. */
+ * An entry is written once the poses of all the steps it fed are known
+ * (format #2 steps can wait for the next odometry reading), so the file
+ * grows during the run; finish() writes what remains, without poses for
+ * steps that were never processed. Compressed with gzip. */
 class EstimatedRawlogWriter : public RunOutput
 {
    public:
@@ -28,8 +29,7 @@ class EstimatedRawlogWriter : public RunOutput
 	~EstimatedRawlogWriter() override;
 
 	void onEntry(
-		const RawlogEntry& entry,
-		const std::vector<ScanStepAssembler::SelectedScan>& selected) override;
+		const RawlogEntry& entry, const std::vector<StepSource>& used) override;
 	void onStep(const StepRecord& record) override;
 	void finish(const RunStats& stats) override;
 	std::string path() const override { return m_path; }
@@ -40,7 +40,7 @@ class EstimatedRawlogWriter : public RunOutput
 	struct Pending
 	{
 		RawlogEntry entry;
-		std::vector<ScanStepAssembler::SelectedScan> scans;
+		std::vector<StepSource> used;
 	};
 	void flush(bool all);
 	void write(const Pending& p);
@@ -50,7 +50,13 @@ class EstimatedRawlogWriter : public RunOutput
 	struct Impl;
 	std::unique_ptr<Impl> m_impl;
 	std::deque<Pending> m_pending;
-	std::map<size_t, mrpt::poses::CPosePDFGaussian> m_poses;  // by scanIndex
+	struct StepPose
+	{
+		mrpt::poses::CPosePDFGaussian pose;
+		const mrpt::obs::CObservation* source = nullptr;
+		mrpt::Clock::time_point time{};
+	};
+	std::map<size_t, StepPose> m_poses;	 // by step index
 	size_t m_written = 0;
 };
 }  // namespace featloc

@@ -3,9 +3,9 @@
 #include <vector>
 
 #include "featloc/io/RawlogEntry.h"
-#include "featloc/pipeline/RunStats.h"
-#include "featloc/pipeline/ScanStepAssembler.h"
-#include "featloc/pipeline/StepRecord.h"
+#include "featloc/output/RunStats.h"
+#include "featloc/output/StepRecord.h"
+#include "featloc/output/StepSource.h"
 
 namespace featloc
 {
@@ -17,13 +17,10 @@ class RunOutput
    public:
 	virtual ~RunOutput() = default;
 
-	/** Every rawlog entry, in file order, with the scans in it that will
-	 * produce steps. */
-	virtual void onEntry(
-		const RawlogEntry&, const std::vector<ScanStepAssembler::SelectedScan>&)
-	{
-	}
-	/** Every processed scan, in time order. */
+	/** Every rawlog entry, in file order, with the observations in it that
+	 * went into steps. */
+	virtual void onEntry(const RawlogEntry&, const std::vector<StepSource>&) {}
+	/** Every processed step, in time order. */
 	virtual void onStep(const StepRecord& record) = 0;
 	/** End of the run (normal or after an error: stats.ok tells). */
 	virtual void finish(const RunStats& stats) = 0;

@@ -12,11 +12,11 @@
 #include "featloc/output/RunOutput.h"
 #include "featloc/pipeline/PipelineOptions.h"
 #include "featloc/pipeline/ProgressBar.h"
-#include "featloc/pipeline/RunStats.h"
+#include "featloc/output/RunStats.h"
 
 namespace featloc
 {
-/** A run: the source's entries -> ScanStepAssembler (scans in time
+/** A run: the source's entries -> StepAssembler (scans in time
  * order with their odometry motion) -> scan matcher (reference scan, this
  * scan, odometry as the initial guess) -> estimator -> outputs.
  *
@@ -47,8 +47,9 @@ class Pipeline
 
    private:
 	void processStep(
-		const ScanStep& logStep, const std::vector<RunOutput*>& outputs,
-		RunStats& stats);
+		const EstimationStep& logStep, const std::vector<RunOutput*>& outputs, RunStats& stats);
+	/** The matcher's motion from the keyframe scan to this step's scan. */
+	MatchResult matchToKeyframe(const EstimationStep& step);
 
 	InputOptions m_input;
 	OdometryOptions m_odometry;
@@ -65,6 +66,6 @@ class Pipeline
 	// factor, which scales a composed covariance exactly as its parts)
 	mrpt::poses::CPosePDFGaussian m_odometrySinceKeyframe;
 	OdometryCovarianceCheck m_odometryCheck;
-	mrpt::Clock::time_point m_firstScanTime;
+	mrpt::Clock::time_point m_firstStepTime;
 };
 }  // namespace featloc

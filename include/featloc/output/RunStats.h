@@ -15,12 +15,15 @@ struct RunStats
 	std::string laserLabel;
 
 	size_t entries = 0;	 //!< rawlog entries read
-	size_t scans = 0;  //!< scans processed (= trajectory rows)
+	size_t steps = 0;  //!< observation frames processed (= trajectory rows)
+	size_t scans = 0;  //!< steps that held a 2-D scan
 	std::map<std::string, size_t> scansPerLabel;  //!< every 2-D scan seen
 	size_t odometryReadings = 0;  //!< CObservationOdometry (format #2)
 	size_t odometryActions = 0;	 //!< CActionRobotMovement2D (format #1)
 	size_t stepsWithoutOdometry = 0;
 	size_t landmarkObservations = 0;  //!< CObservationBearingRange read
+	/** Observations (and actions) of classes no handler takes, per class. */
+	std::map<std::string, size_t> ignoredObservations;
 	size_t landmarksInMap = 0;	//!< the estimator's landmarks at the end
 	size_t invalidatedBeams = 0;
 
@@ -40,7 +43,7 @@ struct RunStats
 	std::vector<double> estimatorTimes;
 
 	double wallTime = 0;  //!< [s] whole run, reading and writing included
-	/** [s] from the first processed scan's time to the last's. */
+	/** [s] from the first processed step's time to the last's. */
 	double logSeconds = 0;
 	/** Factor the odometry covariance was inflated by after checking it
 	 * against the matches ([Odometry] covariance_check; 1: not inflated). */

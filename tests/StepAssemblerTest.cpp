@@ -6,7 +6,7 @@
 
 #include "featloc/core/InputError.h"
 #include "featloc/io/RawlogReader.h"
-#include "featloc/pipeline/ScanStepAssembler.h"
+#include "featloc/pipeline/StepAssembler.h"
 #include "featloc/registerClasses.h"
 #include "support/ErrorMessage.h"
 #include "support/TempDir.h"
@@ -20,15 +20,15 @@ using mrpt::poses::CPose2D;
 
 namespace
 {
-std::vector<ScanStep> stepsOf(
+std::vector<EstimationStep> stepsOf(
 	const std::string& file, InputOptions in = {}, OdometryOptions odo = {},
-	ScanStepAssembler* keep = nullptr)
+	StepAssembler* keep = nullptr)
 {
 	RawlogReader reader(file);
-	ScanStepAssembler local(in, odo, file);
-	ScanStepAssembler& a = keep ? *keep : local;
-	std::vector<ScanStep> steps;
-	std::vector<ScanStepAssembler::SelectedScan> sel;
+	StepAssembler local(in, odo, file);
+	StepAssembler& a = keep ? *keep : local;
+	std::vector<EstimationStep> steps;
+	std::vector<StepSource> sel;
 	RawlogEntry e;
 	while (!a.full() && reader.next(e)) a.push(e, sel, steps);
 	a.finish(steps);
@@ -36,7 +36,7 @@ std::vector<ScanStep> stepsOf(
 }
 
 
-void expectIncrement(const ScanStep& s, const CPose2D& truth, double tol)
+void expectIncrement(const EstimationStep& s, const CPose2D& truth, double tol)
 {
 	const CPose2D& m = s.odometry.mean;
 	EXPECT_NEAR(m.x(), truth.x(), tol) << "scan " << s.scanIndex;
@@ -46,7 +46,7 @@ void expectIncrement(const ScanStep& s, const CPose2D& truth, double tol)
 }
 }  // namespace
 
-TEST(ScanStepAssembler, Format1IncrementsAreTheActions)
+TEST(StepAssembler, Format1IncrementsAreTheActions)
 {
 	registerClasses();
 	TempDir dir;
@@ -68,7 +68,7 @@ TEST(ScanStepAssembler, Format1IncrementsAreTheActions)
 	}
 }
 
-TEST(ScanStepAssembler, Format2OdometryIsInterpolatedAtScanTimes)
+TEST(StepAssembler, Format2OdometryIsInterpolatedAtScanTimes)
 {
 	registerClasses();
 	TempDir dir;
@@ -77,7 +77,7 @@ TEST(ScanStepAssembler, Format2OdometryIsInterpolatedAtScanTimes)
 	log.observationsOnly = true;
 	log.odometryPerScan = 3;  // readings never at the scan times
 	log.write(dir.file("b.rawlog"));
-	ScanStepAssembler a(InputOptions{}, OdometryOptions{}, "b");
+	StepAssembler a(InputOptions{}, OdometryOptions{}, "b");
 	const auto steps = stepsOf(dir.file("b.rawlog"), {}, {}, &a);
 	ASSERT_EQ(steps.size(), 12u);
 	EXPECT_EQ(a.stepsWithoutOdometry(), 0u);
@@ -91,7 +91,7 @@ TEST(ScanStepAssembler, Format2OdometryIsInterpolatedAtScanTimes)
 	}
 }
 
-TEST(ScanStepAssembler, ModelCovarianceGrowsWithMotion)
+TEST(StepAssembler, ModelCovarianceGrowsWithMotion)
 {
 	registerClasses();
 	TempDir dir;
@@ -109,7 +109,7 @@ TEST(ScanStepAssembler, ModelCovarianceGrowsWithMotion)
 		odo.model.sigma_xy_min + odo.model.sigma_xy_per_m * 1.0, 1e-9);
 }
 
-TEST(ScanStepAssembler, SeveralLasersNeedALabel)
+TEST(StepAssembler, SeveralLasersNeedALabel)
 {
 	registerClasses();
 	TempDir dir;
@@ -131,7 +131,7 @@ TEST(ScanStepAssembler, SeveralLasersNeedALabel)
 	for (const auto& s : steps) EXPECT_EQ(s.scan->sensorLabel, "REAR");
 }
 
-TEST(ScanStepAssembler, ScanWithoutTimestampIsAnError)
+TEST(StepAssembler, ScanWithoutTimestampIsAnError)
 {
 	registerClasses();
 	TempDir dir;
@@ -146,7 +146,7 @@ TEST(ScanStepAssembler, ScanWithoutTimestampIsAnError)
 	EXPECT_NE(msg.find("no valid timestamp"), std::string::npos) << msg;
 }
 
-TEST(ScanStepAssembler, RepeatedTimestampsAreAnErrorWithTheCarmenHint)
+TEST(StepAssembler, RepeatedTimestampsAreAnErrorWithTheCarmenHint)
 {
 	registerClasses();
 	TempDir dir;
@@ -161,7 +161,7 @@ TEST(ScanStepAssembler, RepeatedTimestampsAreAnErrorWithTheCarmenHint)
 	EXPECT_NE(msg.find("carmen2rawlog"), std::string::npos) << msg;
 }
 
-TEST(ScanStepAssembler, BadRangesFailOrAreInvalidated)
+TEST(StepAssembler, BadRangesFailOrAreInvalidated)
 {
 	registerClasses();
 	TempDir dir;
@@ -182,7 +182,7 @@ TEST(ScanStepAssembler, BadRangesFailOrAreInvalidated)
 
 	InputOptions in;
 	in.invalid_range_policy = "invalidate";
-	ScanStepAssembler a(in, OdometryOptions{}, "nan");
+	StepAssembler a(in, OdometryOptions{}, "nan");
 	const auto steps = stepsOf(dir.file("nan.rawlog"), in, {}, &a);
 	ASSERT_EQ(steps.size(), 3u);
 	EXPECT_EQ(a.selector().invalidatedBeams(), 3u);
@@ -191,7 +191,7 @@ TEST(ScanStepAssembler, BadRangesFailOrAreInvalidated)
 	EXPECT_TRUE(steps[1].scan->getScanRangeValidity(13));
 }
 
-TEST(ScanStepAssembler, ImpossibleScanGeometryIsAnError)
+TEST(StepAssembler, ImpossibleScanGeometryIsAnError)
 {
 	registerClasses();
 	TempDir dir;
@@ -207,7 +207,7 @@ TEST(ScanStepAssembler, ImpossibleScanGeometryIsAnError)
 	EXPECT_NE(msg.find("impossible geometry"), std::string::npos) << msg;
 }
 
-TEST(ScanStepAssembler, MaxScansStopsEarly)
+TEST(StepAssembler, MaxScansStopsEarly)
 {
 	registerClasses();
 	TempDir dir;
@@ -219,7 +219,7 @@ TEST(ScanStepAssembler, MaxScansStopsEarly)
 	EXPECT_EQ(stepsOf(dir.file("m.rawlog"), in).size(), 4u);
 }
 
-TEST(ScanStepAssembler, LogWithoutOdometryGivesTheNoOdometryPrior)
+TEST(StepAssembler, LogWithoutOdometryGivesTheNoOdometryPrior)
 {
 	registerClasses();
 	TempDir dir;
@@ -232,9 +232,9 @@ TEST(ScanStepAssembler, LogWithoutOdometryGivesTheNoOdometryPrior)
 	// possible, so read and filter here.
 	RawlogReader reader(dir.file("o.rawlog"));
 	OdometryOptions odo;
-	ScanStepAssembler a(InputOptions{}, odo, "o");
-	std::vector<ScanStep> steps;
-	std::vector<ScanStepAssembler::SelectedScan> sel;
+	StepAssembler a(InputOptions{}, odo, "o");
+	std::vector<EstimationStep> steps;
+	std::vector<StepSource> sel;
 	RawlogEntry e;
 	while (reader.next(e))
 		if (std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(e.object))

@@ -5,18 +5,18 @@
 
 #include "featloc/ekf/EstimatedLandmark.h"
 #include "featloc/matchers/MatchResult.h"
-#include "featloc/pipeline/ScanStep.h"
+#include "featloc/estimators/EstimationStep.h"
 
 namespace featloc
 {
-/** What the pipeline produced for one scan, handed to every output. */
+/** What the pipeline produced for one step, handed to every output. */
 struct StepRecord
 {
-	const ScanStep& step;
-	/** Estimated global robot pose at the scan's time, with covariance. */
+	const EstimationStep& step;
+	/** Estimated global robot pose at the step's time, with covariance. */
 	const mrpt::poses::CPosePDFGaussian& pose;
-	/** The scan matcher's result for this step, or nullptr (first scan, or
-	 * an estimator without matcher). */
+	/** The scan matcher's result for this step, or nullptr (first scan, a
+	 * step without scan, or an estimator without matcher). */
 	const MatchResult* match = nullptr;
 	/** The estimator used the match (false: odometry or first scan). */
 	bool usedMatch = false;

@@ -1,0 +1,46 @@
+#pragma once
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+
+#include <cstddef>
+#include <vector>
+
+#include "featloc/ekf/LandmarkObservation.h"
+
+namespace featloc
+{
+/** One observation frame to process: what the sensors saw at one time (a
+ * 2-D scan, point landmarks, or both), with the robot motion since the
+ * previous step as measured by odometry. Steps come in time order; every
+ * step gives one row of every output.
+ *
+ * A frame is a rawlog sensory frame of a format #1 log (its observations
+ * were taken at one robot pose, the action before it is the motion), or the
+ * observations that share one timestamp (format #2, or frames without
+ * actions, where odometry is interpolated at each frame's own time). */
+struct EstimationStep
+{
+	size_t index = 0;  //!< 0-based among the steps of the run
+	/** 0-based among the steps that hold a scan (valid when scan). */
+	size_t scanIndex = 0;
+	size_t entryIndex = 0;	//!< rawlog entry holding the primary observation
+	mrpt::Clock::time_point time{};
+	/** The scan to use (a cleaned copy when beams were invalidated), or
+	 * null when the frame has no selected scan. */
+	mrpt::obs::CObservation2DRangeScan::Ptr scan;
+	/** The observation the outputs attach the estimated pose to (the scan
+	 * if there is one, else the frame's first used observation). */
+	const mrpt::obs::CObservation* source = nullptr;
+	/** False for the first step, and when no odometry covers this step:
+	 * then `odometry` is zero motion with the [Odometry] no_odometry_*
+	 * sigmas (identity with zero covariance for the first step). */
+	bool hasOdometry = false;
+	/** Robot motion from the previous step to this one (robot frame of the
+	 * previous step), with covariance. */
+	mrpt::poses::CPosePDFGaussian odometry;
+	/** Point landmarks observed in this frame (robot frame). */
+	std::vector<LandmarkObservation> landmarks;
+
+	mrpt::Clock::time_point timestamp() const { return time; }
+};
+}  // namespace featloc
