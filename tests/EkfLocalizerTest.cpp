@@ -118,7 +118,7 @@ TEST(EkfLocalizer, ObservationJacobiansMatchFiniteDifferences)
 	const Eigen::VectorXd x = f.state();
 	auto observe = [&](const Eigen::VectorXd& s) {
 		const double c = std::cos(s[2]), sn = std::sin(s[2]);
-		const Eigen::Vector2d d = s.segment<2>(6) - s.segment<2>(0);
+		const Eigen::Vector2d d = s.segment<2>(EkfLocalizer::landmarkIndex(0)) - s.segment<2>(0);
 		return Eigen::Vector2d(c * d.x() + sn * d.y(), -sn * d.x() + c * d.y());
 	};
 	EXPECT_LT((observe(x) - h0).norm(), 1e-12);
@@ -132,7 +132,7 @@ TEST(EkfLocalizer, ObservationJacobiansMatchFiniteDifferences)
 	for (int k = 0; k < 2; k++)
 	{
 		Eigen::VectorXd xp = x;
-		xp[6 + k] += eps;
+		xp[EkfLocalizer::landmarkIndex(0) + k] += eps;
 		EXPECT_LT(((observe(xp) - h0) / eps - Hl.col(k)).norm(), 1e-5) << "landmark " << k;
 	}
 }
@@ -197,8 +197,8 @@ TEST(EkfLocalizer, LandmarkSeenOnceIsRemovedAfterProbation)
 	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
 	ASSERT_EQ(f.landmarkCount(), 1u);
 	EXPECT_NEAR(f.landmarks()[0].mean.x(), 2, 1e-3);
-	EXPECT_EQ(f.state().size(), 8);
-	EXPECT_EQ(f.covariance().rows(), 8);
+	EXPECT_EQ(f.state().size(), EkfLocalizer::landmarkIndex(1));
+	EXPECT_EQ(f.covariance().rows(), EkfLocalizer::landmarkIndex(1));
 }
 
 TEST(EkfLocalizer, KnownIdentityPairsEvenWhenAnotherLandmarkIsNearer)

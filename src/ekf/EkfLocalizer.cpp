@@ -6,11 +6,13 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "featloc/ekf/JointCompatibilityBranchAndBound.h"
+#include "featloc/ekf/LandmarkJointInnovation.h"
 
 namespace featloc
 {
@@ -30,7 +32,7 @@ Eigen::Vector2d dRtTimes(double th, const Eigen::Vector2d& d)
 	return {-s * d.x() + c * d.y(), -c * d.x() - s * d.y()};
 }
 
-mrpt::poses::CPosePDFGaussian poseAt(const Eigen::VectorXd& x, const Eigen::MatrixXd& P, int k)
+mrpt::poses::CPosePDFGaussian poseAt(const Eigen::VectorXd& x, const Eigen::MatrixXd& P, Eigen::Index k)
 {
 	mrpt::math::CMatrixDouble33 cov;
 	for (int r = 0; r < 3; r++)
@@ -46,8 +48,10 @@ void EkfLocalizer::reset(const mrpt::poses::CPosePDFGaussian& initial)
 	m_x.segment<3>(kRobot) << initial.mean.x(), initial.mean.y(), initial.mean.phi();
 	m_P.block<3, 3>(kRobot, kRobot) = initial.cov.asEigen();
 	m_info.clear();
+	m_held.reset();
 	m_step = 0;
-	cloneKeyframe();
+	clonePose(kClone);
+	clonePose(kMatchClone);
 }
 
 void EkfLocalizer::predict(const mrpt::poses::CPosePDFGaussian& u)
@@ -70,52 +74,89 @@ void EkfLocalizer::predict(const mrpt::poses::CPosePDFGaussian& u)
 	pruneLandmarks();
 }
 
-void EkfLocalizer::cloneKeyframe()
+void EkfLocalizer::clonePose(Eigen::Index to)
 {
 	const Eigen::Index n = m_x.size();
-	m_x.segment<3>(kClone) = m_x.segment<3>(kRobot);
-	m_P.block(kClone, 0, 3, n) = m_P.block(kRobot, 0, 3, n);
-	m_P.block(0, kClone, n, 3) = m_P.block(0, kRobot, n, 3);
-	m_P.block<3, 3>(kClone, kClone) = m_P.block<3, 3>(kRobot, kRobot);
+	m_x.segment<3>(to) = m_x.segment<3>(kRobot);
+	m_P.block(to, 0, 3, n) = m_P.block(kRobot, 0, 3, n);
+	m_P.block(0, to, n, 3) = m_P.block(0, kRobot, n, 3);
+	m_P.block<3, 3>(to, to) = m_P.block<3, 3>(kRobot, kRobot);
+}
+
+void EkfLocalizer::cloneKeyframe()
+{
+	// A held match measures from the old keyframe clone: fuse it before the
+	// clone is overwritten, or it would be lost.
+	commitHeldMotion();
+	clonePose(kClone);
 }
 
 void EkfLocalizer::update(
-	const Eigen::MatrixXd& H, const Eigen::VectorXd& nu, const Eigen::MatrixXd& R)
+	const std::vector<Eigen::Index>& cols, const Eigen::MatrixXd& Hc, const Eigen::VectorXd& nu,
+	const Eigen::MatrixXd& R)
 {
-	const Eigen::MatrixXd PHt = m_P * H.transpose();
-	const Eigen::MatrixXd S = H * PHt + R;
+	// H is zero outside `cols`: P H^T = P(:, cols) Hc^T, H P H^T = Hc P(cols, cols) Hc^T.
+	const Eigen::MatrixXd PHt = m_P(Eigen::all, cols) * Hc.transpose();
+	const Eigen::MatrixXd S = Hc * m_P(cols, cols) * Hc.transpose() + R;
 	const Eigen::LDLT<Eigen::MatrixXd> ldlt(S);
 	const Eigen::MatrixXd K = ldlt.solve(PHt.transpose()).transpose();
 	m_x += K * nu;
-	m_P -= K * S * K.transpose();
+	// K S K^T = P H^T S^-1 H P = K (P H^T)^T
+	m_P.noalias() -= K * PHt.transpose();
 	m_P = 0.5 * (m_P + m_P.transpose()).eval();
-	m_x[kRobot + 2] = mrpt::math::wrapToPi(m_x[kRobot + 2]);
-	m_x[kClone + 2] = mrpt::math::wrapToPi(m_x[kClone + 2]);
+	for (Eigen::Index k : {kRobot, kClone, kMatchClone})
+		m_x[k + 2] = mrpt::math::wrapToPi(m_x[k + 2]);
 }
 
-EkfLocalizer::MotionUpdate EkfLocalizer::updateRelativeMotion(
-	const mrpt::poses::CPosePDFGaussian& z)
+Eigen::Vector3d EkfLocalizer::predictRelativeMotion(
+	Eigen::Index from, Eigen::Matrix3d* Ha, Eigen::Matrix3d* Hc) const
 {
-	// h = x_c^-1 (+) x_r = (R_c^T (t_r - t_c), th_r - th_c).
+	// h = x_c^-1 (+) x_a = (R_c^T (t_a - t_c), th_a - th_c).
 	const double thc = m_x[kClone + 2];
-	const Eigen::Vector2d d = m_x.segment<2>(kRobot) - m_x.segment<2>(kClone);
+	const Eigen::Vector2d d = m_x.segment<2>(from) - m_x.segment<2>(kClone);
 	const Eigen::Matrix2d Rct = rotation(thc).transpose();
-	const Eigen::Vector2d ht = Rct * d;
-	const double hth = mrpt::math::wrapToPi(m_x[kRobot + 2] - thc);
-	Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, m_x.size());
-	H.block<2, 2>(0, kRobot) = Rct;
-	H(2, kRobot + 2) = 1;
-	H.block<2, 2>(0, kClone) = -Rct;
-	H.block<2, 1>(0, kClone + 2) = dRtTimes(thc, d);
-	H(2, kClone + 2) = -1;
-	Eigen::VectorXd nu(3);
-	nu << z.mean.x() - ht.x(), z.mean.y() - ht.y(), mrpt::math::wrapToPi(z.mean.phi() - hth);
-	const Eigen::MatrixXd R = z.cov.asEigen();
-	const Eigen::MatrixXd S = H * m_P * H.transpose() + R;
+	if (Ha)
+	{
+		Ha->setZero();
+		Ha->block<2, 2>(0, 0) = Rct;
+		(*Ha)(2, 2) = 1;
+	}
+	if (Hc)
+	{
+		Hc->setZero();
+		Hc->block<2, 2>(0, 0) = -Rct;
+		Hc->block<2, 1>(0, 2) = dRtTimes(thc, d);
+		(*Hc)(2, 2) = -1;
+	}
+	const Eigen::Vector2d t = Rct * d;
+	return {t.x(), t.y(), mrpt::math::wrapToPi(m_x[from + 2] - thc)};
+}
 
+void EkfLocalizer::relativeMotionTerms(
+	Eigen::Index from, const mrpt::poses::CPosePDFGaussian& z, std::vector<Eigen::Index>& cols,
+	Eigen::MatrixXd& H, Eigen::VectorXd& nu) const
+{
+	Eigen::Matrix3d Ha, Hc;
+	const Eigen::Vector3d h = predictRelativeMotion(from, &Ha, &Hc);
+	cols = {from, from + 1, from + 2, kClone, kClone + 1, kClone + 2};
+	H.resize(3, 6);
+	H << Ha, Hc;
+	nu.resize(3);
+	nu << z.mean.x() - h.x(), z.mean.y() - h.y(), mrpt::math::wrapToPi(z.mean.phi() - h.z());
+}
+
+EkfLocalizer::MotionUpdate EkfLocalizer::testRelativeMotion(
+	const mrpt::poses::CPosePDFGaussian& z) const
+{
+	std::vector<Eigen::Index> cols;
+	Eigen::MatrixXd H;
+	Eigen::VectorXd nu;
+	relativeMotionTerms(kRobot, z, cols, H, nu);
+	const Eigen::MatrixXd S = H * m_P(cols, cols) * H.transpose() + z.cov.asEigen();
 	MotionUpdate out;
 	out.mahalanobis2 = nu.dot(S.ldlt().solve(nu));
-	if (!(out.mahalanobis2 <= options.matcher_gate_chi2))
+	out.used = out.mahalanobis2 <= options.matcher_gate_chi2;
+	if (!out.used)
 	{
 		char buf[200];
 		std::snprintf(buf, sizeof(buf),
@@ -124,17 +165,60 @@ EkfLocalizer::MotionUpdate EkfLocalizer::updateRelativeMotion(
 			out.mahalanobis2, options.matcher_gate_chi2, std::hypot(nu[0], nu[1]),
 			mrpt::RAD2DEG(nu[2]));
 		out.reason = buf;
-		return out;
 	}
-	update(H, nu, R);
-	out.used = true;
 	return out;
+}
+
+EkfLocalizer::MotionUpdate EkfLocalizer::updateRelativeMotion(
+	const mrpt::poses::CPosePDFGaussian& z)
+{
+	const MotionUpdate out = testRelativeMotion(z);
+	if (!out.used) return out;
+	std::vector<Eigen::Index> cols;
+	Eigen::MatrixXd H;
+	Eigen::VectorXd nu;
+	relativeMotionTerms(kRobot, z, cols, H, nu);
+	update(cols, H, nu, z.cov.asEigen());
+	return out;
+}
+
+void EkfLocalizer::holdRelativeMotion(const mrpt::poses::CPosePDFGaussian& z)
+{
+	clonePose(kMatchClone);
+	m_held = z;
+}
+
+void EkfLocalizer::commitHeldMotion()
+{
+	if (!m_held) return;
+	std::vector<Eigen::Index> cols;
+	Eigen::MatrixXd H;
+	Eigen::VectorXd nu;
+	relativeMotionTerms(kMatchClone, *m_held, cols, H, nu);
+	const Eigen::MatrixXd R = m_held->cov.asEigen();
+	m_held.reset();
+	update(cols, H, nu, R);
+}
+
+std::optional<EkfLocalizer::HeldCorrection> EkfLocalizer::heldCorrection() const
+{
+	if (!m_held) return std::nullopt;
+	std::vector<Eigen::Index> cols;
+	Eigen::MatrixXd H;
+	Eigen::VectorXd nu;
+	relativeMotionTerms(kMatchClone, *m_held, cols, H, nu);
+	HeldCorrection c;
+	c.nu = nu;
+	c.S = H * m_P(cols, cols) * H.transpose() + m_held->cov.asEigen();
+	const Eigen::MatrixXd PHt = m_P(Eigen::all, cols) * H.transpose();
+	c.K = c.S.ldlt().solve(PHt.transpose()).transpose();
+	return c;
 }
 
 Eigen::Vector2d EkfLocalizer::predictObservation(
 	size_t j, Eigen::Matrix<double, 2, 3>* Hr, Eigen::Matrix2d* Hl) const
 {
-	const Eigen::Index k = kLandmarks + 2 * static_cast<Eigen::Index>(j);
+	const Eigen::Index k = landmarkIndex(j);
 	const double th = m_x[kRobot + 2];
 	const Eigen::Vector2d d = m_x.segment<2>(k) - m_x.segment<2>(kRobot);
 	const Eigen::Matrix2d Rt = rotation(th).transpose();
@@ -147,36 +231,16 @@ Eigen::Vector2d EkfLocalizer::predictObservation(
 	return Rt * d;
 }
 
-void EkfLocalizer::stack(
-	const std::vector<LandmarkObservation>& obs, const std::vector<std::pair<size_t, size_t>>& pairs,
-	Eigen::MatrixXd& H, Eigen::VectorXd& nu, Eigen::MatrixXd& R) const
+double EkfLocalizer::individualDistance2(const LandmarkObservation& o, size_t j) const
 {
-	const Eigen::Index m = 2 * static_cast<Eigen::Index>(pairs.size());
-	H = Eigen::MatrixXd::Zero(m, m_x.size());
-	nu.resize(m);
-	R = Eigen::MatrixXd::Zero(m, m);
-	for (size_t a = 0; a < pairs.size(); a++)
-	{
-		const auto [i, j] = pairs[a];
-		Eigen::Matrix<double, 2, 3> Hr;
-		Eigen::Matrix2d Hl;
-		const Eigen::Vector2d h = predictObservation(j, &Hr, &Hl);
-		const Eigen::Index row = 2 * static_cast<Eigen::Index>(a);
-		H.block<2, 3>(row, kRobot) = Hr;
-		H.block<2, 2>(row, kLandmarks + 2 * static_cast<Eigen::Index>(j)) = Hl;
-		nu.segment<2>(row) = obs[i].position - h;
-		R.block<2, 2>(row, row) = obs[i].covariance;
-	}
-}
-
-double EkfLocalizer::jointMahalanobis2(
-	const std::vector<LandmarkObservation>& obs,
-	const std::vector<std::pair<size_t, size_t>>& pairs) const
-{
-	Eigen::MatrixXd H, R;
-	Eigen::VectorXd nu;
-	stack(obs, pairs, H, nu, R);
-	const Eigen::MatrixXd S = H * m_P * H.transpose() + R;
+	Eigen::Matrix<double, 2, 3> Hr;
+	Eigen::Matrix2d Hl;
+	const Eigen::Vector2d nu = o.position - predictObservation(j, &Hr, &Hl);
+	const Eigen::Index k = landmarkIndex(j);
+	const std::array<Eigen::Index, 5> idx{kRobot, kRobot + 1, kRobot + 2, k, k + 1};
+	Eigen::Matrix<double, 2, 5> H;
+	H << Hr, Hl;
+	const Eigen::Matrix2d S = H * m_P(idx, idx) * H.transpose() + o.covariance;
 	return nu.dot(S.ldlt().solve(nu));
 }
 
@@ -193,23 +257,26 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 	// observations of known landmarks would each start a duplicate.
 	const double newGate2 = mrpt::math::chi2inv(options.landmark_new_probability, 2);
 
-	// Pairs: known identities directly; the others by gating, then
-	// joint compatibility (or nearest neighbour).
+	// Pairs: known identities directly (when plausible); the others by
+	// individual gating, then joint compatibility (or nearest neighbour).
 	std::vector<int> pairing(n, -1);
-	std::vector<std::vector<size_t>> candidates(n);
+	std::vector<std::vector<std::pair<double, size_t>>> scored(n);
 	std::vector<char> unknown(n, 0);
 	std::vector<char> nearSome(n, 0);  //!< within newGate2 of some landmark
 	std::vector<char> knownRejected(n, 0);	//!< known identity, failed its gate
+	std::vector<std::pair<size_t, size_t>> knownPairs;
 	for (size_t i = 0; i < n; i++)
 	{
 		if (obs[i].id >= 0)
 		{
-			// Known identity: its landmark, if the innovation is plausible.
 			for (size_t j = 0; j < L; j++)
 				if (m_info[j].id == obs[i].id)
 				{
-					if (jointMahalanobis2(obs, {{i, j}}) <= gate2)
+					if (individualDistance2(obs[i], j) <= gate2)
+					{
 						pairing[i] = static_cast<int>(j);
+						knownPairs.emplace_back(i, j);
+					}
 					else
 					{
 						// Known but implausible: neither fused nor a new landmark,
@@ -221,24 +288,26 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 			continue;
 		}
 		unknown[i] = 1;
-		std::vector<std::pair<double, size_t>> scored;
 		for (size_t j = 0; j < L; j++)
 		{
 			if (m_info[j].id >= 0) continue;  // identified landmarks pair by id only
-			const double d2 = jointMahalanobis2(obs, {{i, j}});
-			if (d2 <= gate2) scored.emplace_back(d2, j);
+			const double d2 = individualDistance2(obs[i], j);
+			if (d2 <= gate2) scored[i].emplace_back(d2, j);
 			if (d2 <= newGate2) nearSome[i] = 1;
 		}
-		std::sort(scored.begin(), scored.end());
-		for (const auto& [d2, j] : scored) candidates[i].push_back(j);
+		std::sort(scored[i].begin(), scored[i].end());
 	}
+	std::vector<std::vector<size_t>> candidates(n);
+	for (size_t i = 0; i < n; i++)
+		for (const auto& [d2, j] : scored[i]) candidates[i].push_back(j);
+
 	if (options.data_association == "jcbb")
 	{
+		// The known identities are the base every hypothesis extends.
+		LandmarkJointInnovation joint(*this, obs);
+		for (const auto& [i, j] : knownPairs) joint.push(i, j);
 		const auto best = JointCompatibilityBranchAndBound::solve(
-			candidates,
-			[&](const std::vector<std::pair<size_t, size_t>>& pairs) {
-				return jointMahalanobis2(obs, pairs);
-			},
+			candidates, joint,
 			[&](size_t k) { return mrpt::math::chi2inv(p, static_cast<unsigned>(2 * k)); });
 		for (size_t i = 0; i < n; i++)
 			if (unknown[i]) pairing[i] = best[i];
@@ -248,7 +317,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 		// Nearest neighbour, the most certain pairs first, each landmark once.
 		std::vector<std::tuple<double, size_t, size_t>> all;
 		for (size_t i = 0; i < n; i++)
-			for (size_t j : candidates[i]) all.emplace_back(jointMahalanobis2(obs, {{i, j}}), i, j);
+			for (const auto& [d2, j] : scored[i]) all.emplace_back(d2, i, j);
 		std::sort(all.begin(), all.end());
 		std::vector<char> used(L, 0);
 		for (const auto& [d2, i, j] : all)
@@ -264,11 +333,29 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 		if (pairing[i] >= 0) pairs.emplace_back(i, static_cast<size_t>(pairing[i]));
 	if (!pairs.empty())
 	{
-		Eigen::MatrixXd H, R;
-		Eigen::VectorXd nu;
-		stack(obs, pairs, H, nu, R);
-		out.jointMahalanobis2 = nu.dot((H * m_P * H.transpose() + R).ldlt().solve(nu));
-		update(H, nu, R);
+		// H on [robot; landmark of pair 1; ...]: 2 rows per pair.
+		const Eigen::Index m = 2 * static_cast<Eigen::Index>(pairs.size());
+		std::vector<Eigen::Index> cols{kRobot, kRobot + 1, kRobot + 2};
+		Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m, 3 + m);
+		Eigen::VectorXd nu(m);
+		Eigen::MatrixXd R = Eigen::MatrixXd::Zero(m, m);
+		for (size_t a = 0; a < pairs.size(); a++)
+		{
+			const auto [i, j] = pairs[a];
+			Eigen::Matrix<double, 2, 3> Hr;
+			Eigen::Matrix2d Hl;
+			const Eigen::Vector2d h = predictObservation(j, &Hr, &Hl);
+			const Eigen::Index row = 2 * static_cast<Eigen::Index>(a);
+			H.block<2, 3>(row, 0) = Hr;
+			H.block<2, 2>(row, 3 + row) = Hl;
+			cols.push_back(landmarkIndex(j));
+			cols.push_back(landmarkIndex(j) + 1);
+			nu.segment<2>(row) = obs[i].position - h;
+			R.block<2, 2>(row, row) = obs[i].covariance;
+		}
+		const Eigen::MatrixXd S = H * m_P(cols, cols) * H.transpose() + R;
+		out.jointMahalanobis2 = nu.dot(S.ldlt().solve(nu));
+		update(cols, H, nu, R);
 		for (const auto& [i, j] : pairs) m_info[j].observations++;
 		out.associated = pairs.size();
 	}
@@ -331,23 +418,49 @@ void EkfLocalizer::pruneLandmarks()
 			removeLandmark(j);
 }
 
-mrpt::poses::CPosePDFGaussian EkfLocalizer::robotPose() const { return poseAt(m_x, m_P, kRobot); }
+void EkfLocalizer::applyCorrection(
+	const HeldCorrection& c, Eigen::Index k, mrpt::poses::CPosePDFGaussian& pose)
+{
+	const Eigen::Matrix3d Kk = c.K.block<3, 3>(k, 0);
+	const Eigen::Vector3d dx = Kk * c.nu;
+	pose.mean = mrpt::poses::CPose2D(
+		pose.mean.x() + dx.x(), pose.mean.y() + dx.y(),
+		mrpt::math::wrapToPi(pose.mean.phi() + dx.z()));
+	const Eigen::Matrix3d cov = pose.cov.asEigen() - Kk * c.S * Kk.transpose();
+	pose.cov = mrpt::math::CMatrixDouble33(0.5 * (cov + cov.transpose()));
+}
+
+mrpt::poses::CPosePDFGaussian EkfLocalizer::robotPose() const
+{
+	auto p = poseAt(m_x, m_P, kRobot);
+	if (const auto c = heldCorrection()) applyCorrection(*c, kRobot, p);
+	return p;
+}
 
 mrpt::poses::CPosePDFGaussian EkfLocalizer::keyframePose() const
 {
-	return poseAt(m_x, m_P, kClone);
+	auto p = poseAt(m_x, m_P, kClone);
+	if (const auto c = heldCorrection()) applyCorrection(*c, kClone, p);
+	return p;
 }
 
 std::vector<EstimatedLandmark> EkfLocalizer::landmarks() const
 {
+	const auto c = heldCorrection();
 	std::vector<EstimatedLandmark> out;
 	for (size_t j = 0; j < m_info.size(); j++)
 	{
-		const Eigen::Index k = kLandmarks + 2 * static_cast<Eigen::Index>(j);
+		const Eigen::Index k = landmarkIndex(j);
 		EstimatedLandmark l;
 		l.id = m_info[j].id;
 		l.mean = m_x.segment<2>(k);
 		l.covariance = m_P.block<2, 2>(k, k);
+		if (c)
+		{
+			const Eigen::Matrix<double, 2, 3> Kj = c->K.block<2, 3>(k, 0);
+			l.mean += Kj * c->nu;
+			l.covariance -= Kj * c->S * Kj.transpose();
+		}
 		l.observations = m_info[j].observations;
 		out.push_back(l);
 	}

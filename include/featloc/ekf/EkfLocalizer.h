@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,40 +14,51 @@
 namespace featloc
 {
 /** The EKF front end: the robot pose, a clone of the pose at the current
- * keyframe scan, and 2-D point landmarks, with their joint covariance.
+ * keyframe scan, a clone of the pose of the held match, and 2-D point
+ * landmarks, with their joint covariance: one state, one covariance.
  *
- * State x = [robot (x, y, yaw); keyframe clone (x, y, yaw); landmark 1 (x,
- * y); ...], all in the world frame. Plain Eigen rather than MRPT's
- * CKalmanFilterCapable: that template has one observation-noise matrix for
- * all observations of a step (ours each bring their own covariance) and no
- * place for a cloned pose, which is neither vehicle nor feature.
+ * State x = [robot (x, y, yaw); keyframe clone (x, y, yaw); match clone
+ * (x, y, yaw); landmark 1 (x, y); ...], all in the world frame. Plain Eigen
+ * rather than MRPT's CKalmanFilterCapable: that template has one
+ * observation-noise matrix for all observations of a step (ours each bring
+ * their own covariance) and no place for cloned poses, which are neither
+ * vehicle nor feature.
  *
  * - predict(u): x_r <- x_r (+) u with the odometry increment u (SE(2)
  *   composition, MRPT's Jacobians J_x, J_u): P_rr <- J_x P_rr J_x^T +
- *   J_u Q J_u^T, the robot's cross-covariances <- J_x P_r*.
- * - updateRelativeMotion(z): the scan matcher measured the motion from the
- *   keyframe scan to this one, z = x_c^-1 (+) x_r (stochastic cloning,
- *   Roumeliotis & Burdick 2002). The clone is correlated with the robot, so
- *   the update corrects both, and the odometry, which only gave the matcher
- *   its starting point, is not counted twice: prediction and match are two
- *   independent measurements of the same motion. A match whose
- *   Mahalanobis^2 against the prediction exceeds matcher_gate_chi2 is not
- *   used (the reason says by how much).
+ *   J_u Q J_u^T, the robot's cross-covariances <- J_x P_r*. O(n).
+ * - Scan matches measure the motion from the keyframe scan to the current
+ *   one, z = x_c^-1 (+) x_r (stochastic cloning, Roumeliotis & Burdick
+ *   2002): the clone is correlated with the robot, so an update corrects
+ *   both, and the odometry, which only gave the matcher its starting
+ *   point, is not counted twice. Successive matches from one keyframe share
+ *   the keyframe scan and nearly all their error, so only one of them may
+ *   be fused: holdRelativeMotion() keeps the latest accepted one pending
+ *   (the robot pose at that time is cloned into the match clone, so the
+ *   measurement stays exact however far the robot moves on), and
+ *   commitHeldMotion() fuses it when the keyframe changes. The views
+ *   (robotPose, keyframePose, landmarks) include the held match: they are
+ *   the posterior of everything seen so far, computed in O(n) from the
+ *   state without it. A match whose Mahalanobis^2 against the prediction
+ *   exceeds matcher_gate_chi2 is not used (the reason says by how much).
  * - cloneKeyframe(): the clone becomes a copy of the robot pose (with its
  *   covariance and correlations), when the pipeline starts a new keyframe.
  * - updateLandmarks(observations): each observation is a point in the robot
- *   frame with its own covariance, with or without identity. Known
- *   identities pair with their landmark; the others are associated by
- *   joint compatibility (JointCompatibilityBranchAndBound) or nearest
- *   neighbour, after individual Mahalanobis gating. Paired observations
- *   update the state together; observations compatible with no landmark
- *   start new ones (inverse observation model with its Jacobians);
- *   observations compatible with some landmark but left unpaired by the
- *   joint test are ambiguous and ignored; so are observations of a known
- *   identity whose innovation fails the individual gate. A landmark seen
- *   only once is removed landmark_probation_steps steps later.
+ *   frame with its own covariance, with or without identity. Individual
+ *   gating uses the robot and landmark blocks only (O(1) per pair). Known
+ *   identities pair with their landmark when individually plausible and
+ *   form the base hypothesis; the others are associated by joint
+ *   compatibility with it (JointCompatibilityBranchAndBound, incremental
+ *   joint innovation) or by nearest neighbour. Paired observations update
+ *   the state together; observations compatible with no landmark start new
+ *   ones (inverse observation model with its Jacobians); observations
+ *   compatible with some landmark but left unpaired are ambiguous and
+ *   ignored; so are known identities whose innovation fails the gate. A
+ *   landmark seen only once is removed landmark_probation_steps steps
+ *   later.
  *
- * Updates use P <- P - K S K^T (symmetrised); angles are wrapped. */
+ * Updates use P <- P - K S K^T (symmetrised) with H restricted to the
+ * columns it touches; angles are wrapped. */
 class EkfLocalizer
 {
    public:
@@ -55,11 +67,13 @@ class EkfLocalizer
 
 	EkfOptions options;
 
-	/** Robot and clone at `initial`, no landmarks. */
+	/** Robot and clones at `initial`, no landmarks, no held match. */
 	void reset(const mrpt::poses::CPosePDFGaussian& initial);
 
 	void predict(const mrpt::poses::CPosePDFGaussian& increment);
 
+	/** Commits nothing: the caller commits a held match first if it wants
+	 * it (EkfEstimator does, at every new keyframe). */
 	void cloneKeyframe();
 
 	struct MotionUpdate
@@ -68,9 +82,18 @@ class EkfLocalizer
 		double mahalanobis2 = 0;  //!< of the innovation
 		std::string reason;	 //!< why not used
 	};
-	/** `motion`: the robot's motion from the keyframe scan to the current
-	 * one, with its covariance (already scaled as the caller wants). */
+	/** The gate alone: is `motion` (keyframe -> robot, with its covariance
+	 * already scaled as the caller wants) plausible against the state
+	 * without any held match? O(1). */
+	MotionUpdate testRelativeMotion(const mrpt::poses::CPosePDFGaussian& motion) const;
+	/** Gate and fuse at once. */
 	MotionUpdate updateRelativeMotion(const mrpt::poses::CPosePDFGaussian& motion);
+	/** Keeps `motion` (which passed testRelativeMotion) as the keyframe
+	 * interval's match, replacing any held one. */
+	void holdRelativeMotion(const mrpt::poses::CPosePDFGaussian& motion);
+	/** Fuses the held match, if any (match clone vs keyframe clone). */
+	void commitHeldMotion();
+	bool hasHeldMotion() const { return m_held.has_value(); }
 
 	struct LandmarkUpdate
 	{
@@ -81,34 +104,59 @@ class EkfLocalizer
 	};
 	LandmarkUpdate updateLandmarks(const std::vector<LandmarkObservation>& observations);
 
+	/** Posterior views: the held match included. */
 	mrpt::poses::CPosePDFGaussian robotPose() const;
 	mrpt::poses::CPosePDFGaussian keyframePose() const;
 	std::vector<EstimatedLandmark> landmarks() const;
+
 	size_t landmarkCount() const { return m_info.size(); }
+	/** The state and covariance without the held match. */
 	const Eigen::VectorXd& state() const { return m_x; }
 	const Eigen::MatrixXd& covariance() const { return m_P; }
+	/** Index of landmark j's x in the state. */
+	static Eigen::Index landmarkIndex(size_t j)
+	{
+		return kLandmarks + 2 * static_cast<Eigen::Index>(j);
+	}
+	static constexpr Eigen::Index kRobot = 0, kClone = 3, kMatchClone = 6, kLandmarks = 9;
 
 	/** Predicted observation of landmark j from the current state, and its
 	 * Jacobians in the robot pose (2x3) and the landmark (2x2). */
 	Eigen::Vector2d predictObservation(
 		size_t j, Eigen::Matrix<double, 2, 3>* Hr = nullptr, Eigen::Matrix2d* Hl = nullptr) const;
 
-   private:
-	static constexpr int kRobot = 0, kClone = 3, kLandmarks = 6;
+	/** Predicted relative motion from the keyframe clone to the pose at
+	 * `from` (kRobot or kMatchClone), and its Jacobians in that pose (Ha)
+	 * and the keyframe clone (Hc). */
+	Eigen::Vector3d predictRelativeMotion(
+		Eigen::Index from, Eigen::Matrix3d* Ha = nullptr, Eigen::Matrix3d* Hc = nullptr) const;
 
-	/** x <- x + K nu, P <- P - K S K^T for H (m x n), innovation nu, noise R. */
-	void update(const Eigen::MatrixXd& H, const Eigen::VectorXd& nu, const Eigen::MatrixXd& R);
-	/** The observation rows of pairs (observation i, landmark j): H, nu, R. */
-	void stack(
-		const std::vector<LandmarkObservation>& obs,
-		const std::vector<std::pair<size_t, size_t>>& pairs, Eigen::MatrixXd& H,
-		Eigen::VectorXd& nu, Eigen::MatrixXd& R) const;
-	double jointMahalanobis2(
-		const std::vector<LandmarkObservation>& obs,
-		const std::vector<std::pair<size_t, size_t>>& pairs) const;
+   private:
+	/** x <- x + K nu, P <- P - K S K^T for an observation whose Jacobian is
+	 * `Hc` (m x cols.size()) on the state entries `cols` (zero elsewhere). */
+	void update(
+		const std::vector<Eigen::Index>& cols, const Eigen::MatrixXd& Hc,
+		const Eigen::VectorXd& nu, const Eigen::MatrixXd& R);
+	/** The held match as a correction of the state: K (n x 3), nu. */
+	struct HeldCorrection
+	{
+		Eigen::MatrixXd K;
+		Eigen::Vector3d nu;
+		Eigen::Matrix3d S;
+	};
+	std::optional<HeldCorrection> heldCorrection() const;
+	/** The pose at state index k with the held correction applied. */
+	static void applyCorrection(
+		const HeldCorrection& c, Eigen::Index k, mrpt::poses::CPosePDFGaussian& pose);
+	void relativeMotionTerms(
+		Eigen::Index from, const mrpt::poses::CPosePDFGaussian& z, std::vector<Eigen::Index>& cols,
+		Eigen::MatrixXd& H, Eigen::VectorXd& nu) const;
+	/** Individual squared distance of observation o to landmark j: O(1). */
+	double individualDistance2(const LandmarkObservation& o, size_t j) const;
 	void addLandmark(const LandmarkObservation& o);
 	void removeLandmark(size_t j);
 	void pruneLandmarks();
+	void clonePose(Eigen::Index to);
 
 	struct LandmarkInfo
 	{
@@ -119,6 +167,9 @@ class EkfLocalizer
 	Eigen::VectorXd m_x;
 	Eigen::MatrixXd m_P;
 	std::vector<LandmarkInfo> m_info;
+	std::optional<mrpt::poses::CPosePDFGaussian> m_held;
 	uint64_t m_step = 0;  //!< predictions so far
+
+	friend class LandmarkJointInnovation;
 };
 }  // namespace featloc

@@ -7,12 +7,13 @@
 namespace featloc
 {
 /** `[Pipeline] estimator = ekf`: the EKF front end (EkfLocalizer) fed by
- * the pipeline. Each step: predict with the odometry increment, fuse the
- * scan matcher's motion from the keyframe scan (when it succeeded and
- * passes the gate; otherwise the prediction stands and
- * lastFallbackReason() says why), then the step's landmark observations;
- * a new keyframe re-clones the pose. The matcher's covariance is scaled by
- * [Ekf] matcher_covariance_scale first. */
+ * the pipeline. Each step: predict with the odometry increment; hold the
+ * scan matcher's motion from the keyframe scan when it succeeded and
+ * passes the gate (otherwise the prediction stands and
+ * lastFallbackReason() says why); update with the step's landmark
+ * observations; a new keyframe fuses the held match and re-clones the
+ * pose. The pose reported includes the held match. The matcher's
+ * covariance is scaled by [Ekf] matcher_covariance_scale first. */
 class EkfEstimator : public PoseEstimator
 {
    public:
@@ -35,12 +36,9 @@ class EkfEstimator : public PoseEstimator
 	const EkfLocalizer& filter() const { return m_filter; }
 
    private:
-	/** Odometry and landmarks since the keyframe, matches of earlier
-	 * keyframe intervals. */
+	/** The one state: odometry, landmarks, the matches of earlier keyframe
+	 * intervals, and the latest accepted match of this one held. */
 	EkfLocalizer m_filter;
-	/** m_filter plus the latest accepted match from the keyframe, carried
-	 * forward; it becomes m_filter at the next keyframe. */
-	std::optional<EkfLocalizer> m_withMatch;
 	mrpt::poses::CPosePDFGaussian m_pose;
 	std::string m_reason;
 };
