@@ -8,6 +8,10 @@
 
 #include <mutex>
 
+#include "featloc/estimators/EkfEstimator.h"
+#include "featloc/estimators/MatcherChainEstimator.h"
+#include "featloc/estimators/OdometryEstimator.h"
+#include "featloc/estimators/PoseEstimator.h"
 #include "featloc/matchers/CfIdcMatcher.h"
 #include "featloc/matchers/IcpMatcher.h"
 #include "featloc/matchers/IdcMatcher.h"
@@ -30,6 +34,11 @@ void registerClasses()
 		mrpt::rtti::registerClass(CLASS_ID(PcmFeatureMatcher));
 		mrpt::rtti::registerClass(CLASS_ID(IdcMatcher));
 		mrpt::rtti::registerClass(CLASS_ID(CfIdcMatcher));
+
+		mrpt::rtti::registerClass(CLASS_ID(PoseEstimator));
+		mrpt::rtti::registerClass(CLASS_ID(OdometryEstimator));
+		mrpt::rtti::registerClass(CLASS_ID(MatcherChainEstimator));
+		mrpt::rtti::registerClass(CLASS_ID(EkfEstimator));
 	});
 }
 }  // namespace featloc

@@ -181,11 +181,12 @@ TEST(FirstHour, HelpAndListClassesComeFromTheRegistries)
 		const CommandResult r = runCommand(shellQuote(kRun) + opt);
 		EXPECT_EQ(r.exitCode, 0) << r.output;
 		// The estimators as one list (the bare words also occur in prose).
-		EXPECT_NE(r.output.find("estimators ([Pipeline] estimator): ekf, matcher, odometry"),
+		EXPECT_NE(r.output.find("estimators ([Pipeline] estimator): odometry, matcher, ekf"),
 			std::string::npos)
 			<< opt << ":\n" << r.output;
 		for (const char* name : {"featloc::IcpMatcher", "featloc::PcmFeatureMatcher",
-				 "featloc::IdcMatcher", "featloc::CfIdcMatcher"})
+				 "featloc::IdcMatcher", "featloc::CfIdcMatcher", "featloc::EkfEstimator",
+				 "featloc::OdometryEstimator", "featloc::MatcherChainEstimator"})
 			EXPECT_NE(r.output.find(name), std::string::npos) << opt << " lacks " << name;
 	}
 	// config.ini's comment names every matcher class too.

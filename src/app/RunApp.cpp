@@ -49,8 +49,14 @@ std::string joinedNames(const std::vector<std::string>& names, const char* sep)
 /** The classes a user can choose, from the registries (not a hand list). */
 std::string classesText()
 {
-	return "estimators ([Pipeline] estimator): " +
-		joinedNames(PoseEstimatorFactory::knownNames(), ", ") +
+	std::vector<std::string> aliases, classes;
+	for (const auto& [alias, cls] : PoseEstimatorFactory::aliases())
+	{
+		aliases.push_back(alias);
+		classes.push_back(cls);
+	}
+	return "estimators ([Pipeline] estimator): " + joinedNames(aliases, ", ") +
+		" (short for " + joinedNames(classes, ", ") + ")" +
 		"\nscan matchers ([ScanMatcher] class): " +
 		joinedNames(ScanMatcherFactory::knownClassNames(), ", ") + "\n";
 }
@@ -302,7 +308,7 @@ int RunApp::main(int argc, char** argv)
 	config.load(cfg, files[0]);
 	const RunConfiguration rc = RunConfiguration::load(cfg);
 	cfg.requireAllKeysRead();
-	auto estimator = PoseEstimatorFactory::create(rc.pipeline.estimator, rc.ekf);
+	PoseEstimator::Ptr estimator = rc.estimator;
 
 	// 2. The input and the ground truth, read before anything is written.
 	const std::string inputPath = inputOnCommandLine

@@ -1,6 +1,7 @@
 #include "featloc/app/RunConfiguration.h"
 
 #include "featloc/config/ConfigValues.h"
+#include "featloc/estimators/PoseEstimatorFactory.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 
 namespace featloc
@@ -11,7 +12,7 @@ RunConfiguration RunConfiguration::load(const mrpt::config::CConfigFileBase& cfg
 	rc.input.loadFromConfigFile(cfg, InputOptions::kSection);
 	rc.odometry.loadFromConfigFile(cfg, OdometryOptions::kSection);
 	rc.pipeline.loadFromConfigFile(cfg, PipelineOptions::kSection);
-	rc.ekf.loadFromConfigFile(cfg, EkfOptions::kSection);
+	rc.estimator = PoseEstimatorFactory::createFromConfig(cfg, rc.pipeline.estimator);
 	rc.output.loadFromConfigFile(cfg, OutputOptions::kSection);
 	rc.evaluation.loadFromConfigFile(cfg, EvaluationOptions::kSection);
 	rc.matcher = ScanMatcherFactory::createFromConfig(cfg);
@@ -21,6 +22,7 @@ RunConfiguration RunConfiguration::load(const mrpt::config::CConfigFileBase& cfg
 RunConfiguration RunConfiguration::defaults()
 {
 	RunConfiguration rc;
+	rc.estimator = PoseEstimatorFactory::create(rc.pipeline.estimator);
 	rc.matcher = ScanMatcherFactory::create(ScanMatcherFactory::kDefaultClass);
 	return rc;
 }
@@ -30,7 +32,15 @@ void RunConfiguration::save(mrpt::config::CConfigFileBase& cfg) const
 	input.saveToConfigFile(cfg, InputOptions::kSection);
 	odometry.saveToConfigFile(cfg, OdometryOptions::kSection);
 	pipeline.saveToConfigFile(cfg, PipelineOptions::kSection);
-	ekf.saveToConfigFile(cfg, EkfOptions::kSection);
+	// Every estimator's section: the selected one's values, the others'
+	// defaults (one reference ini documents every key).
+	for (const auto& name : PoseEstimatorFactory::knownClassNames())
+	{
+		if (name == estimator->className())
+			estimator->saveParams(cfg);
+		else
+			PoseEstimatorFactory::create(name)->saveParams(cfg);
+	}
 	config::write(
 		cfg, ScanMatcherFactory::kSection, "class", matcher->className(),
 		"scan matcher class; parameters in [ScanMatcher.<ClassName>]");

@@ -2,6 +2,18 @@
 
 namespace featloc
 {
+IMPLEMENTS_MRPT_OBJECT(EkfEstimator, PoseEstimator, featloc)
+
+void EkfEstimator::loadParams(const mrpt::config::CConfigFileBase& cfg)
+{
+	m_filter.options.loadFromConfigFile(cfg, paramsSection());
+}
+
+void EkfEstimator::saveParams(mrpt::config::CConfigFileBase& cfg) const
+{
+	m_filter.options.saveToConfigFile(cfg, paramsSection());
+}
+
 void EkfEstimator::initialize(const mrpt::poses::CPosePDFGaussian& initialPose)
 {
 	m_filter.reset(initialPose);

@@ -2,6 +2,8 @@
 
 namespace featloc
 {
+IMPLEMENTS_MRPT_OBJECT(MatcherChainEstimator, PoseEstimator, featloc)
+
 void MatcherChainEstimator::initialize(
 	const mrpt::poses::CPosePDFGaussian& initialPose)
 {

@@ -2,6 +2,8 @@
 
 namespace featloc
 {
+IMPLEMENTS_MRPT_OBJECT(OdometryEstimator, PoseEstimator, featloc)
+
 void OdometryEstimator::initialize(
 	const mrpt::poses::CPosePDFGaussian& initialPose)
 {

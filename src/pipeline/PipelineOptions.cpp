@@ -37,7 +37,8 @@ void PipelineOptions::saveToConfigFile(
 {
 	using namespace featloc::config;
 	write(c, s, "estimator", estimator,
-		"odometry | matcher | ekf: how poses are estimated (ekf: [Ekf])");
+		"odometry | matcher | ekf, or a class (featloc::EkfEstimator): how poses are "
+		"estimated (ekf parameters: [Ekf])");
 	write(c, s, "initial_pose",
 		std::vector<double>{
 			initial_pose[0], initial_pose[1], mrpt::RAD2DEG(initial_pose[2])},

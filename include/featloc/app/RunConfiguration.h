@@ -1,7 +1,7 @@
 #pragma once
 #include <mrpt/config/CConfigFileBase.h>
 
-#include "featloc/ekf/EkfOptions.h"
+#include "featloc/estimators/PoseEstimator.h"
 #include "featloc/eval/EvaluationOptions.h"
 #include "featloc/io/InputOptions.h"
 #include "featloc/matchers/ScanMatcher.h"
@@ -21,7 +21,8 @@ struct RunConfiguration
 	PipelineOptions pipeline;
 	OutputOptions output;
 	EvaluationOptions evaluation;
-	EkfOptions ekf;
+	/** The estimator named by [Pipeline] estimator, its parameters loaded. */
+	PoseEstimator::Ptr estimator;
 	ScanMatcher::Ptr matcher;  //!< always created (keys are validated)
 
 	/** Loads every section. Throws ConfigError on a bad value. (Unknown keys

@@ -16,10 +16,16 @@ namespace featloc
  * covariance is scaled by [Ekf] matcher_covariance_scale first. */
 class EkfEstimator : public PoseEstimator
 {
+	DEFINE_MRPT_OBJECT(EkfEstimator, featloc)
+
    public:
+	EkfEstimator() = default;
 	explicit EkfEstimator(const EkfOptions& options) : m_filter(options) {}
 
 	std::string name() const override { return "ekf"; }
+	std::string paramsSection() const override { return EkfOptions::kSection; }
+	void loadParams(const mrpt::config::CConfigFileBase& cfg) override;
+	void saveParams(mrpt::config::CConfigFileBase& cfg) const override;
 	bool usesScanMatcher() const override { return true; }
 	void initialize(const mrpt::poses::CPosePDFGaussian& initialPose) override;
 	bool process(const EstimationStep& step, const MatchResult* match) override;

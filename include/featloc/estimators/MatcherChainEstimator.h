@@ -11,6 +11,8 @@ namespace featloc
  * Covariances compose the same way (SE(2) Jacobians). */
 class MatcherChainEstimator : public PoseEstimator
 {
+	DEFINE_MRPT_OBJECT(MatcherChainEstimator, featloc)
+
    public:
 	std::string name() const override { return "matcher"; }
 	bool usesScanMatcher() const override { return true; }

@@ -7,6 +7,8 @@ namespace featloc
  * on SE(2)). The baseline every other estimator must beat. */
 class OdometryEstimator : public PoseEstimator
 {
+	DEFINE_MRPT_OBJECT(OdometryEstimator, featloc)
+
    public:
 	std::string name() const override { return "odometry"; }
 	bool usesScanMatcher() const override { return false; }

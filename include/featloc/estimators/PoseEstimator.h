@@ -1,6 +1,7 @@
 #pragma once
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
+#include <mrpt/rtti/CObject.h>
 
 #include <memory>
 #include <optional>
@@ -13,29 +14,44 @@
 
 namespace featloc
 {
-/** Turns the per-scan inputs (odometry motion, scan-matcher result) into
- * the robot's global pose with covariance. One instance per run; chosen by
- * `[Pipeline] estimator` (see PoseEstimatorFactory). The pipeline feeds every
- * step in order; for the first step it sets the initial pose instead. */
-class PoseEstimator
+/** Turns the per-step inputs (odometry motion, scan-matcher result,
+ * landmark observations) into the robot's global pose with covariance.
+ *
+ * Estimators are MRPT RTTI classes like the scan matchers, created by name
+ * through the class registry (`[Pipeline] estimator = featloc::EkfEstimator`,
+ * or the short aliases odometry | matcher | ekf; see PoseEstimatorFactory),
+ * each reading its parameters from its own section. One instance per run.
+ * The pipeline feeds every step in order; at the first step it sets the
+ * initial pose (and then processes that step's landmarks, if any). */
+class PoseEstimator : public mrpt::rtti::CObject
 {
-   public:
-	using Ptr = std::unique_ptr<PoseEstimator>;
-	virtual ~PoseEstimator() = default;
+	DEFINE_VIRTUAL_MRPT_OBJECT(PoseEstimator)
 
-	/** Name used in the configuration ("odometry", "matcher", ...). */
+   public:
+	~PoseEstimator() override = default;
+
+	/** Short name shown to the user and in summary.json ("odometry",
+	 * "matcher", "ekf"): the alias the configuration may use. */
 	virtual std::string name() const = 0;
+
+	/** The registered class name, e.g. "featloc::EkfEstimator". */
+	std::string className() const { return GetRuntimeClass()->className; }
 
 	/** Whether the pipeline must run the scan matcher for this estimator. */
 	virtual bool usesScanMatcher() const = 0;
 
-	/** Reads the estimator's own section, if it has one. */
+	/** Section of this estimator's parameters ("": it has none). */
+	virtual std::string paramsSection() const { return ""; }
+	/** Reads paramsSection(); unspecified keys keep their defaults. Throws
+	 * ConfigError on a bad value. */
 	virtual void loadParams(const mrpt::config::CConfigFileBase&) {}
+	/** Writes every parameter with its unit and meaning as a comment. */
+	virtual void saveParams(mrpt::config::CConfigFileBase&) const {}
 
-	/** Pose at the first scan. */
+	/** Pose at the first step. */
 	virtual void initialize(const mrpt::poses::CPosePDFGaussian& initialPose) = 0;
 
-	/** Advances to the step's scan. `match` is the scan matcher's motion
+	/** Advances to the step's time. `match` is the scan matcher's motion
 	 * from the current reference (keyframe) scan to this one, or nullptr
 	 * when no matcher ran. Returns true when the estimate used the match,
 	 * false when it fell back to odometry. */
