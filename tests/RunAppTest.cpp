@@ -274,7 +274,7 @@ TEST(FeatlocRun, BadInputGivesAClearMessageAndNonZeroExit)
 		{shellQuote(kConfig) + " " + shellQuote(dir.file("garbage.rawlog")) + out, 1,
 			{"garbage.rawlog", "entry #0", "corrupt"}},
 		{shellQuote(kConfig) + " --set Pipeline:estimator=kalman" + out, 2,
-			{"--set Pipeline:estimator=kalman", "known: ekf, matcher, odometry"}},
+			{"--set Pipeline:estimator=kalman", "known: odometry, matcher, ekf, featloc::EkfEstimator"}},
 		{shellQuote(kConfig) + " --set Pipelineestimator=odometry" + out, 2,
 			{"SECTION:KEY=VALUE"}},
 		{"", 2, {"missing CONFIG"}},
