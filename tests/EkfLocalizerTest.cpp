@@ -10,6 +10,7 @@
 
 #include "featloc/ekf/EkfLocalizer.h"
 #include "featloc/ekf/JointCompatibilityBranchAndBound.h"
+#include "featloc/ekf/LandmarkJointInnovation.h"
 #include "featloc/math/DiagonalPoseGaussian.h"
 
 using namespace featloc;
@@ -291,4 +292,157 @@ TEST(EkfLocalizer, GatedOutKnownIdentityIsNotFusedInEitherMode)
 		EXPECT_TRUE(f.state().isApprox(before)) << mode;
 		EXPECT_EQ(f.landmarks()[0].observations, 1u) << mode;
 	}
+}
+
+// Removing a landmark from the middle of the state (probation) shifts the
+// others without touching their variances or their correlations with each
+// other and with the robot.
+TEST(EkfLocalizer, RemovingALandmarkInTheMiddleKeepsTheOthersCovariances)
+{
+	EkfLocalizer f;
+	f.options.landmark_probation_steps = 2;
+	f.reset(gaussian(CPose2D(0, 0, 0), 0.01, 0.01, 0.001));
+	f.updateLandmarks({observation(2, 0, 0.05, 0), observation(0, 3, 0.05, 1),
+		observation(-2, 1, 0.05, 2)});
+	ASSERT_EQ(f.landmarkCount(), 3u);
+	// Landmarks 0 and 2 seen again (correlated through the robot), 1 not.
+	f.predict(gaussian(CPose2D(0.1, 0, 0), 1e-4, 1e-4, 1e-5));
+	f.updateLandmarks({observation(1.9, 0, 0.05, 0), observation(-2.1, 1, 0.05, 2)});
+	f.predict(gaussian(CPose2D(0, 0, 0), 0, 0, 0));
+	ASSERT_EQ(f.landmarkCount(), 3u);
+	const Eigen::MatrixXd before = f.covariance();
+	const Eigen::VectorXd xBefore = f.state();
+	f.predict(gaussian(CPose2D(0, 0, 0), 0, 0, 0));  // probation of landmark 1 ends
+	ASSERT_EQ(f.landmarkCount(), 2u);
+	const Eigen::MatrixXd after = f.covariance();
+	// Old indices of the kept rows: robot, clones, landmark 0, landmark 2.
+	std::vector<Eigen::Index> keep;
+	for (Eigen::Index i = 0; i < EkfLocalizer::landmarkIndex(1); i++) keep.push_back(i);
+	keep.push_back(EkfLocalizer::landmarkIndex(2));
+	keep.push_back(EkfLocalizer::landmarkIndex(2) + 1);
+	ASSERT_EQ(static_cast<Eigen::Index>(keep.size()), after.rows());
+	EXPECT_LT((after - before(keep, keep)).cwiseAbs().maxCoeff(), 1e-15);
+	EXPECT_LT((f.state() - xBefore(keep)).cwiseAbs().maxCoeff(), 1e-15);
+	EXPECT_EQ(f.landmarks()[1].id, 2);
+	EXPECT_NE(before(EkfLocalizer::landmarkIndex(0), EkfLocalizer::landmarkIndex(2)), 0.0);
+}
+
+// The scan-match measurement h = x_c^-1 (+) x_a: its Jacobians in the
+// measured pose and in the keyframe clone against finite differences.
+TEST(EkfLocalizer, RelativeMotionJacobiansMatchFiniteDifferences)
+{
+	EkfLocalizer f;
+	f.reset(gaussian(CPose2D(0.3, -0.2, 0.7), 0.01, 0.01, 0.001));
+	f.predict(gaussian(CPose2D(0.8, 0.3, -0.4), 0.01, 0.01, 0.001));
+	Eigen::Matrix3d Ha, Hc;
+	const Eigen::Vector3d h0 = f.predictRelativeMotion(EkfLocalizer::kRobot, &Ha, &Hc);
+	const Eigen::VectorXd x = f.state();
+	auto relative = [](const Eigen::VectorXd& s) {
+		const CPose2D c(s[3], s[4], s[5]), a(s[0], s[1], s[2]);
+		const CPose2D d = a - c;
+		return Eigen::Vector3d(d.x(), d.y(), d.phi());
+	};
+	EXPECT_LT((relative(x) - h0).norm(), 1e-12);
+	EXPECT_NEAR(h0.x(), 0.8, 1e-12);
+	EXPECT_NEAR(h0.z(), -0.4, 1e-12);
+	const double eps = 1e-7;
+	for (int k = 0; k < 3; k++)
+	{
+		Eigen::VectorXd xa = x, xc = x;
+		xa[EkfLocalizer::kRobot + k] += eps;
+		xc[EkfLocalizer::kClone + k] += eps;
+		EXPECT_LT(((relative(xa) - h0) / eps - Ha.col(k)).norm(), 1e-5) << "pose " << k;
+		EXPECT_LT(((relative(xc) - h0) / eps - Hc.col(k)).norm(), 1e-5) << "clone " << k;
+	}
+}
+
+// A held match is the same information as the match fused at once: the
+// views equal the immediate update, and committing it later (after more
+// motion and landmarks) gives the filter that fused it at its own time.
+TEST(EkfLocalizer, HeldMatchEqualsTheMatchFusedAtItsTime)
+{
+	const auto z = gaussian(CPose2D(1.05, 0.02, 0.01), 1e-4, 1e-4, 1e-5);
+	EkfLocalizer held, now;
+	for (EkfLocalizer* f : {&held, &now})
+	{
+		f->reset(gaussian(CPose2D(0, 0, 0), 0.01, 0.01, 0.001));
+		f->updateLandmarks({observation(2, 1, 0.05, 4)});
+		f->predict(gaussian(CPose2D(1, 0, 0), 0.01, 0.01, 0.001));
+	}
+	ASSERT_TRUE(held.testRelativeMotion(z).used);
+	held.holdRelativeMotion(z);
+	ASSERT_TRUE(now.updateRelativeMotion(z).used);
+	auto near = [](const CPosePDFGaussian& a, const CPosePDFGaussian& b) {
+		return (a.mean.asVectorVal() - b.mean.asVectorVal()).norm() < 1e-9 &&
+			(a.cov.asEigen() - b.cov.asEigen()).cwiseAbs().maxCoeff() < 1e-12;
+	};
+	EXPECT_TRUE(near(held.robotPose(), now.robotPose()));
+	EXPECT_TRUE(near(held.keyframePose(), now.keyframePose()));
+	EXPECT_LT((held.landmarks()[0].mean - now.landmarks()[0].mean).norm(), 1e-9);
+	EXPECT_LT((held.landmarks()[0].covariance - now.landmarks()[0].covariance).norm(), 1e-12);
+	// Time passes (uncertainty grows, no motion: a linear prediction, so
+	// the order of prediction and update cannot matter), then the keyframe
+	// changes: the held match is fused against the pose it measured,
+	// exactly as if fused at its time.
+	for (EkfLocalizer* f : {&held, &now})
+		for (int k = 0; k < 3; k++) f->predict(gaussian(CPose2D(0, 0, 0), 0.01, 0.01, 0.001));
+	held.cloneKeyframe();
+	now.cloneKeyframe();
+	EXPECT_FALSE(held.hasHeldMotion());
+	// (The match clone's slot is scratch space and differs.)
+	std::vector<Eigen::Index> idx{0, 1, 2, 3, 4, 5};
+	for (Eigen::Index i = EkfLocalizer::landmarkIndex(0); i < held.state().size(); i++)
+		idx.push_back(i);
+	const Eigen::MatrixXd Ph = held.covariance(), Pn = now.covariance();
+	EXPECT_LT((held.state()(idx) - now.state()(idx)).cwiseAbs().maxCoeff(), 1e-9);
+	EXPECT_LT((Ph(idx, idx) - Pn(idx, idx)).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// JCBB's incremental joint distance equals the one computed from the whole
+// stacked innovation, for growing and shrinking hypotheses.
+TEST(EkfLocalizer, IncrementalJointDistanceEqualsTheStackedOne)
+{
+	EkfLocalizer f;
+	f.reset(gaussian(CPose2D(0, 0, 0), 0.02, 0.02, 0.002));
+	std::vector<LandmarkObservation> first;
+	for (int k = 0; k < 5; k++) first.push_back(observation(1 + k, 0.5 * k - 1, 0.05));
+	f.updateLandmarks(first);
+	ASSERT_EQ(f.landmarkCount(), 5u);
+	f.predict(gaussian(CPose2D(0.3, 0.1, 0.05), 0.01, 0.01, 0.001));
+	std::vector<LandmarkObservation> obs;
+	for (int k = 0; k < 5; k++) obs.push_back(observation(0.75 + k, 0.5 * k - 1.1, 0.05));
+	// The stacked distance, computed densely.
+	auto dense = [&](const std::vector<std::pair<size_t, size_t>>& pairs) {
+		const Eigen::Index m = 2 * static_cast<Eigen::Index>(pairs.size());
+		const Eigen::Index n = f.state().size();
+		Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m, n), R = Eigen::MatrixXd::Zero(m, m);
+		Eigen::VectorXd nu(m);
+		for (size_t a = 0; a < pairs.size(); a++)
+		{
+			Eigen::Matrix<double, 2, 3> Hr;
+			Eigen::Matrix2d Hl;
+			const auto h = f.predictObservation(pairs[a].second, &Hr, &Hl);
+			const Eigen::Index r = 2 * static_cast<Eigen::Index>(a);
+			H.block<2, 3>(r, 0) = Hr;
+			H.block<2, 2>(r, EkfLocalizer::landmarkIndex(pairs[a].second)) = Hl;
+			nu.segment<2>(r) = obs[pairs[a].first].position - h;
+			R.block<2, 2>(r, r) = obs[pairs[a].first].covariance;
+		}
+		const Eigen::MatrixXd S = H * f.covariance() * H.transpose() + R;
+		return nu.dot(S.ldlt().solve(nu));
+	};
+	LandmarkJointInnovation joint(f, obs);
+	std::vector<std::pair<size_t, size_t>> pairs;
+	const std::vector<std::pair<size_t, size_t>> order{{0, 0}, {1, 1}, {2, 3}, {3, 3}, {4, 4}};
+	for (const auto& [i, j] : order)
+	{
+		pairs.emplace_back(i, j);
+		const double d = joint.push(i, j);
+		EXPECT_NEAR(d, dense(pairs), 1e-8 * (1 + d)) << pairs.size() << " pairs";
+	}
+	joint.pop();
+	joint.pop();
+	pairs.resize(3);
+	EXPECT_NEAR(joint.distance(), dense(pairs), 1e-8);
+	EXPECT_NEAR(joint.push(4, 2), (pairs.emplace_back(4, 2), dense(pairs)), 1e-8);
 }

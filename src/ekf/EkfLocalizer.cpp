@@ -32,26 +32,36 @@ Eigen::Vector2d dRtTimes(double th, const Eigen::Vector2d& d)
 	return {-s * d.x() + c * d.y(), -c * d.x() - s * d.y()};
 }
 
-mrpt::poses::CPosePDFGaussian poseAt(const Eigen::VectorXd& x, const Eigen::MatrixXd& P, Eigen::Index k)
+mrpt::poses::CPosePDFGaussian poseAt(const Eigen::VectorXd& x, const Eigen::Matrix3d& P, Eigen::Index k)
 {
-	mrpt::math::CMatrixDouble33 cov;
-	for (int r = 0; r < 3; r++)
-		for (int c = 0; c < 3; c++) cov(r, c) = P(k + r, k + c);
-	return mrpt::poses::CPosePDFGaussian(mrpt::poses::CPose2D(x[k], x[k + 1], x[k + 2]), cov);
+	const Eigen::Matrix3d sym = 0.5 * (P + P.transpose());
+	return mrpt::poses::CPosePDFGaussian(
+		mrpt::poses::CPose2D(x[k], x[k + 1], x[k + 2]), mrpt::math::CMatrixDouble33(sym));
 }
 }  // namespace
 
 void EkfLocalizer::reset(const mrpt::poses::CPosePDFGaussian& initial)
 {
 	m_x = Eigen::VectorXd::Zero(kLandmarks);
-	m_P = Eigen::MatrixXd::Zero(kLandmarks, kLandmarks);
+	m_Pbuf = Eigen::MatrixXd::Zero(kLandmarks + 2 * 32, kLandmarks + 2 * 32);
 	m_x.segment<3>(kRobot) << initial.mean.x(), initial.mean.y(), initial.mean.phi();
-	m_P.block<3, 3>(kRobot, kRobot) = initial.cov.asEigen();
+	P().block<3, 3>(kRobot, kRobot) = initial.cov.asEigen();
 	m_info.clear();
 	m_held.reset();
 	m_step = 0;
 	clonePose(kClone);
 	clonePose(kMatchClone);
+}
+
+void EkfLocalizer::reserve(Eigen::Index n)
+{
+	if (m_Pbuf.rows() >= n) return;
+	// Doubling: adding a landmark copies O(n) entries, not the whole matrix.
+	const Eigen::Index cap = std::max(n, 2 * m_Pbuf.rows());
+	Eigen::MatrixXd grown = Eigen::MatrixXd::Zero(cap, cap);
+	const Eigen::Index used = m_x.size();
+	grown.topLeftCorner(used, used) = m_Pbuf.topLeftCorner(used, used);
+	m_Pbuf.swap(grown);
 }
 
 void EkfLocalizer::predict(const mrpt::poses::CPosePDFGaussian& u)
@@ -64,12 +74,12 @@ void EkfLocalizer::predict(const mrpt::poses::CPosePDFGaussian& u)
 	const Eigen::Matrix3d A = Jx.asEigen(), B = Ju.asEigen();
 	const Eigen::Index n = m_x.size();
 	// The robot's rows and columns: P_rr and its correlations with the rest.
-	const Eigen::Matrix3d Prr = A * m_P.block<3, 3>(0, 0) * A.transpose() +
+	const Eigen::Matrix3d Prr = A * P().block<3, 3>(0, 0) * A.transpose() +
 		B * u.cov.asEigen() * B.transpose();
-	const Eigen::MatrixXd Prest = A * m_P.block(0, 3, 3, n - 3);
-	m_P.block<3, 3>(0, 0) = 0.5 * (Prr + Prr.transpose());
-	m_P.block(0, 3, 3, n - 3) = Prest;
-	m_P.block(3, 0, n - 3, 3) = Prest.transpose();
+	const Eigen::MatrixXd Prest = A * P().block(0, 3, 3, n - 3);
+	P().block<3, 3>(0, 0) = 0.5 * (Prr + Prr.transpose());
+	P().block(0, 3, 3, n - 3) = Prest;
+	P().block(3, 0, n - 3, 3) = Prest.transpose();
 	m_step++;
 	pruneLandmarks();
 }
@@ -78,9 +88,9 @@ void EkfLocalizer::clonePose(Eigen::Index to)
 {
 	const Eigen::Index n = m_x.size();
 	m_x.segment<3>(to) = m_x.segment<3>(kRobot);
-	m_P.block(to, 0, 3, n) = m_P.block(kRobot, 0, 3, n);
-	m_P.block(0, to, n, 3) = m_P.block(0, kRobot, n, 3);
-	m_P.block<3, 3>(to, to) = m_P.block<3, 3>(kRobot, kRobot);
+	P().block(to, 0, 3, n) = P().block(kRobot, 0, 3, n);
+	P().block(0, to, n, 3) = P().block(0, kRobot, n, 3);
+	P().block<3, 3>(to, to) = P().block<3, 3>(kRobot, kRobot);
 }
 
 void EkfLocalizer::cloneKeyframe()
@@ -96,14 +106,16 @@ void EkfLocalizer::update(
 	const Eigen::MatrixXd& R)
 {
 	// H is zero outside `cols`: P H^T = P(:, cols) Hc^T, H P H^T = Hc P(cols, cols) Hc^T.
-	const Eigen::MatrixXd PHt = m_P(Eigen::all, cols) * Hc.transpose();
-	const Eigen::MatrixXd S = Hc * m_P(cols, cols) * Hc.transpose() + R;
-	const Eigen::LDLT<Eigen::MatrixXd> ldlt(S);
-	const Eigen::MatrixXd K = ldlt.solve(PHt.transpose()).transpose();
-	m_x += K * nu;
-	// K S K^T = P H^T S^-1 H P = K (P H^T)^T
-	m_P.noalias() -= K * PHt.transpose();
-	m_P = 0.5 * (m_P + m_P.transpose()).eval();
+	auto Pn = P();
+	const Eigen::MatrixXd PHt = Pn(Eigen::all, cols) * Hc.transpose();
+	const Eigen::MatrixXd S = Hc * Pn(cols, cols) * Hc.transpose() + R;
+	// S = L L^T: K nu = P H^T S^-1 nu, and K S K^T = U U^T with
+	// U = P H^T L^-T, one product that is symmetric by construction (no
+	// n x n symmetrising pass, which costs as much as the update).
+	const Eigen::LLT<Eigen::MatrixXd> llt(S);
+	m_x += PHt * llt.solve(nu);
+	const Eigen::MatrixXd U = llt.matrixL().solve(PHt.transpose()).transpose();
+	Pn.noalias() -= U * U.transpose();
 	for (Eigen::Index k : {kRobot, kClone, kMatchClone})
 		m_x[k + 2] = mrpt::math::wrapToPi(m_x[k + 2]);
 }
@@ -152,7 +164,7 @@ EkfLocalizer::MotionUpdate EkfLocalizer::testRelativeMotion(
 	Eigen::MatrixXd H;
 	Eigen::VectorXd nu;
 	relativeMotionTerms(kRobot, z, cols, H, nu);
-	const Eigen::MatrixXd S = H * m_P(cols, cols) * H.transpose() + z.cov.asEigen();
+	const Eigen::MatrixXd S = H * P()(cols, cols) * H.transpose() + z.cov.asEigen();
 	MotionUpdate out;
 	out.mahalanobis2 = nu.dot(S.ldlt().solve(nu));
 	out.used = out.mahalanobis2 <= options.matcher_gate_chi2;
@@ -209,8 +221,8 @@ std::optional<EkfLocalizer::HeldCorrection> EkfLocalizer::heldCorrection() const
 	relativeMotionTerms(kMatchClone, *m_held, cols, H, nu);
 	HeldCorrection c;
 	c.nu = nu;
-	c.S = H * m_P(cols, cols) * H.transpose() + m_held->cov.asEigen();
-	const Eigen::MatrixXd PHt = m_P(Eigen::all, cols) * H.transpose();
+	c.S = H * P()(cols, cols) * H.transpose() + m_held->cov.asEigen();
+	const Eigen::MatrixXd PHt = P()(Eigen::all, cols) * H.transpose();
 	c.K = c.S.ldlt().solve(PHt.transpose()).transpose();
 	return c;
 }
@@ -240,7 +252,7 @@ double EkfLocalizer::individualDistance2(const LandmarkObservation& o, size_t j)
 	const std::array<Eigen::Index, 5> idx{kRobot, kRobot + 1, kRobot + 2, k, k + 1};
 	Eigen::Matrix<double, 2, 5> H;
 	H << Hr, Hl;
-	const Eigen::Matrix2d S = H * m_P(idx, idx) * H.transpose() + o.covariance;
+	const Eigen::Matrix2d S = H * P()(idx, idx) * H.transpose() + o.covariance;
 	return nu.dot(S.ldlt().solve(nu));
 }
 
@@ -353,7 +365,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 			nu.segment<2>(row) = obs[i].position - h;
 			R.block<2, 2>(row, row) = obs[i].covariance;
 		}
-		const Eigen::MatrixXd S = H * m_P(cols, cols) * H.transpose() + R;
+		const Eigen::MatrixXd S = H * P()(cols, cols) * H.transpose() + R;
 		out.jointMahalanobis2 = nu.dot(S.ldlt().solve(nu));
 		update(cols, H, nu, R);
 		for (const auto& [i, j] : pairs) m_info[j].observations++;
@@ -386,15 +398,15 @@ void EkfLocalizer::addLandmark(const LandmarkObservation& o)
 	Gr.block<2, 2>(0, 0).setIdentity();
 	Gr.col(2) << -s * o.position.x() - c * o.position.y(), c * o.position.x() - s * o.position.y();
 	const Eigen::Index n = m_x.size();
-	const Eigen::MatrixXd cross = Gr * m_P.block(kRobot, 0, 3, n);	 // 2 x n
-	const Eigen::Matrix2d Pll = Gr * m_P.block<3, 3>(kRobot, kRobot) * Gr.transpose() +
+	const Eigen::MatrixXd cross = Gr * P().block(kRobot, 0, 3, n);	 // 2 x n
+	const Eigen::Matrix2d Pll = Gr * P().block<3, 3>(kRobot, kRobot) * Gr.transpose() +
 		Rr * o.covariance * Rr.transpose();
+	reserve(n + 2);
 	m_x.conservativeResize(n + 2);
 	m_x.segment<2>(n) = l;
-	m_P.conservativeResize(n + 2, n + 2);
-	m_P.block(n, 0, 2, n) = cross;
-	m_P.block(0, n, n, 2) = cross.transpose();
-	m_P.block<2, 2>(n, n) = 0.5 * (Pll + Pll.transpose());
+	P().block(n, 0, 2, n) = cross;
+	P().block(0, n, n, 2) = cross.transpose();
+	P().block<2, 2>(n, n) = 0.5 * (Pll + Pll.transpose());
 	m_info.push_back({o.id, 1, m_step});
 }
 
@@ -404,10 +416,11 @@ void EkfLocalizer::removeLandmark(size_t j)
 	const Eigen::Index n = m_x.size(), tail = n - k - 2;
 	m_x.segment(k, tail) = m_x.tail(tail).eval();
 	m_x.conservativeResize(n - 2);
-	// Rows, then columns, shifted over the removed pair.
-	m_P.block(k, 0, tail, n) = m_P.block(k + 2, 0, tail, n).eval();
-	m_P.block(0, k, n, tail) = m_P.block(0, k + 2, n, tail).eval();
-	m_P.conservativeResize(n - 2, n - 2);
+	// Rows, then columns, shifted over the removed pair (in the buffer,
+	// front to back: each source lies after its destination).
+	for (Eigen::Index c = 0; c < n; c++)
+		for (Eigen::Index r = k; r < n - 2; r++) m_Pbuf(r, c) = m_Pbuf(r + 2, c);
+	for (Eigen::Index c = k; c < n - 2; c++) m_Pbuf.col(c).head(n - 2) = m_Pbuf.col(c + 2).head(n - 2);
 	m_info.erase(m_info.begin() + static_cast<long>(j));
 }
 
@@ -432,14 +445,14 @@ void EkfLocalizer::applyCorrection(
 
 mrpt::poses::CPosePDFGaussian EkfLocalizer::robotPose() const
 {
-	auto p = poseAt(m_x, m_P, kRobot);
+	auto p = poseAt(m_x, covariance().block<3, 3>(kRobot, kRobot), kRobot);
 	if (const auto c = heldCorrection()) applyCorrection(*c, kRobot, p);
 	return p;
 }
 
 mrpt::poses::CPosePDFGaussian EkfLocalizer::keyframePose() const
 {
-	auto p = poseAt(m_x, m_P, kClone);
+	auto p = poseAt(m_x, covariance().block<3, 3>(kClone, kClone), kClone);
 	if (const auto c = heldCorrection()) applyCorrection(*c, kClone, p);
 	return p;
 }
@@ -454,7 +467,7 @@ std::vector<EstimatedLandmark> EkfLocalizer::landmarks() const
 		EstimatedLandmark l;
 		l.id = m_info[j].id;
 		l.mean = m_x.segment<2>(k);
-		l.covariance = m_P.block<2, 2>(k, k);
+		l.covariance = P().block<2, 2>(k, k);
 		if (c)
 		{
 			const Eigen::Matrix<double, 2, 3> Kj = c->K.block<2, 3>(k, 0);

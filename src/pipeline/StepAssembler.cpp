@@ -2,6 +2,7 @@
 
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
 #include <algorithm>
@@ -73,8 +74,12 @@ void StepAssembler::push(
 	}
 	else if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(entry.object))
 	{
-		// With actions, the frame is one robot pose: one step.
-		const bool wholeFrame = m_actions > 0;
+		// A sensory frame is one robot pose (MRPT's meaning): one step,
+		// unless the log gives odometry readings to interpolate at each
+		// observation's own time.
+		bool readings = m_odometryReadings > 0;
+		for (const auto& o : *sf) readings = readings || IS_CLASS(*o, CObservationOdometry);
+		const bool wholeFrame = !readings;
 		if (wholeFrame) closeFrame();
 		std::vector<CObservation::Ptr> obs(sf->begin(), sf->end());
 		std::stable_sort(

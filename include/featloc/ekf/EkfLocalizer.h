@@ -112,7 +112,10 @@ class EkfLocalizer
 	size_t landmarkCount() const { return m_info.size(); }
 	/** The state and covariance without the held match. */
 	const Eigen::VectorXd& state() const { return m_x; }
-	const Eigen::MatrixXd& covariance() const { return m_P; }
+	Eigen::Block<const Eigen::MatrixXd> covariance() const
+	{
+		return m_Pbuf.topLeftCorner(m_x.size(), m_x.size());
+	}
 	/** Index of landmark j's x in the state. */
 	static Eigen::Index landmarkIndex(size_t j)
 	{
@@ -165,7 +168,12 @@ class EkfLocalizer
 		uint64_t firstStep = 0;
 	};
 	Eigen::VectorXd m_x;
-	Eigen::MatrixXd m_P;
+	/** The covariance is the top-left n x n corner of this buffer, which
+	 * grows by doubling. */
+	Eigen::MatrixXd m_Pbuf;
+	Eigen::Block<Eigen::MatrixXd> P() { return m_Pbuf.topLeftCorner(m_x.size(), m_x.size()); }
+	Eigen::Block<const Eigen::MatrixXd> P() const { return covariance(); }
+	void reserve(Eigen::Index n);
 	std::vector<LandmarkInfo> m_info;
 	std::optional<mrpt::poses::CPosePDFGaussian> m_held;
 	uint64_t m_step = 0;  //!< predictions so far

@@ -29,12 +29,12 @@ class BearingRangeHandler;
  * addHandler); a class nobody handles is counted (ignoredObservations) and
  * skipped.
  *
- * Frames: the observations of a format #1 sensory frame make one step
- * when the log's motion comes from actions (MRPT's sensory frame is one
- * robot pose, the action before it the motion to it); otherwise
- * (format #2, or sensory frames with odometry readings or no odometry)
- * observations that share a timestamp make one step, each step at its own
- * time. A step stays open until an observation with a later time (or the
+ * Frames: the observations of a sensory frame make one step (MRPT's
+ * sensory frame is one robot pose; in format #1 the action before it is
+ * the motion to it), unless the log gives odometry readings
+ * (CObservationOdometry), which can be interpolated at each observation's
+ * own time: then, as in format #2, observations that share a timestamp
+ * make one step, each step at its own time. A step stays open until an observation with a later time (or the
  * next action or frame) arrives.
  *
  * Odometry, either format:
