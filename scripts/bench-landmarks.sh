@@ -65,7 +65,9 @@ for N in 100 500 2000; do
   # A 10 m x 10 m room, beacons uniformly at random (fixed seed); range for
   # ~10 in view; lawnmower lanes 1.5 ranges apart so that every beacon is seen.
   R=$(awk -v n=$N 'BEGIN{printf "%.3f", sqrt(10*100/(3.14159265*n))}')
-  PTS=$(awk -v n=$N 'BEGIN{srand(42); printf "["; for(i=0;i<n;i++) printf "%s%.3f %.3f", (i?"; ":""), 10*rand(), 10*rand(); printf "]"}')
+  # The beacons, also as a kf-slam ground-truth file (x y z - - - id).
+  awk -v n=$N 'BEGIN{srand(42); for(i=0;i<n;i++) printf "%.3f %.3f 0 0 0 0 %d\n", 10*rand(), 10*rand(), i}' > "$OUT/beacons$N.truth.txt"
+  PTS="[$(awk '{printf "%s%s %s", (NR>1?"; ":""), $1, $2}' "$OUT/beacons$N.truth.txt")]"
   WP=$(awk -v r="$R" 'BEGIN{d=1.5*r; y=r/2; k=0; printf "["; while (y < 10) {x1=(k%2)?9.8:0.2; x2=(k%2)?0.2:9.8; printf "%s%.3f %.3f; %.3f %.3f", (k?"; ":""), x1, y, x2, y; y+=d; k++} printf "]"}')
   cat > "$OUT/beacons$N.ini" <<EOF
 [Simulation]
@@ -100,8 +102,15 @@ range_noise = 0.03
 bearing_noise_DEG = 1
 EOF
   "$BIN/featloc-sim" "$OUT/beacons$N.ini" --out "$OUT/beacons$N" -q > /dev/null
+  # Both filters start at the origin: the true beacons in the frame of the
+  # robot's true first pose (first row of the TUM ground truth).
+  read -r x0 y0 qz qw < <(awk '!/^#/{print $2, $3, $7, $8; exit}' "$OUT/beacons$N.gt.txt")
+  awk -v x0="$x0" -v y0="$y0" -v qz="$qz" -v qw="$qw" 'BEGIN{th=2*atan2(qz,qw); c=cos(th); s=sin(th)}
+    {dx=$1-x0; dy=$2-y0; printf "%.4f %.4f 0 0 0 0 %d\n", c*dx+s*dy, -s*dx+c*dy, $7}' \
+    "$OUT/beacons$N.truth.txt" > "$OUT/beacons$N.truth-local.txt"
   "$BIN/featloc-bench-landmarks" "$ROOT/config.ini" "$OUT/beacons$N.rawlog" \
-    --mrpt-config "$OUT/mrpt-sim.ini" --mrpt-max-seconds 120 --name "$N beacons" $first -o "$OUT/bench-$N"
+    --mrpt-config "$OUT/mrpt-sim.ini" --mrpt-max-seconds 120 --landmarks-truth "$OUT/beacons$N.truth-local.txt" \
+    --name "$N beacons" $first -o "$OUT/bench-$N"
   first=
 done
 echo

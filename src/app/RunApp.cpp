@@ -250,92 +250,156 @@ void evaluateAndPlot(
 	TrajectoryPlot::write(
 		folder.stagedFile("trajectory.png"), reference->trajectory, est, rep.alignment, title);
 }
-}  // namespace
 
-int RunApp::main(int argc, char** argv)
+/** featloc-run's command line: CONFIG [INPUT], --out, --list-classes and
+ * the config options every app shares. */
+struct RunCommandLine
 {
-	registerClasses();
-	TCLAP::CmdLine cmd(
+	TCLAP::CmdLine cmd{
 		"featloc-run: estimate a robot trajectory from a rawlog or a CARMEN log "
 		"(odometry, 2-D laser scans, range-bearing landmarks). Relative paths inside "
 		"the ini are relative to the ini file's folder. The results folder is "
 		"replaced as a whole when the run ends; a run that cannot start leaves it "
 		"untouched.\n" +
 			classesText(),
-		' ', "0.1");
+		' ', "0.1"};
 	// TCLAP allows only one optional unlabeled argument: CONFIG [INPUT] are
-	// taken together and counted below.
-	TCLAP::UnlabeledMultiArg<std::string> argFiles("files",
+	// taken together and counted in files().
+	TCLAP::UnlabeledMultiArg<std::string> argFiles{"files",
 		"CONFIG: the INI configuration file (see config.ini); INPUT (optional): "
 		"the rawlog (.rawlog, .rawlog.gz) or CARMEN log (.log, .log.gz) to "
 		"process, overriding [Input] rawlog",
-		false, "CONFIG [INPUT]", cmd);
-	TCLAP::ValueArg<std::string> argOut(
-		"o", "out", "Results folder; overrides [Output] dir", false, "", "DIR", cmd);
-	TCLAP::SwitchArg argList("", "list-classes",
-		"List the estimators and scan-matcher classes that can be chosen, and exit", cmd);
-	ConfigCommandLine config(cmd,
+		false, "CONFIG [INPUT]", cmd};
+	TCLAP::ValueArg<std::string> argOut{
+		"o", "out", "Results folder; overrides [Output] dir", false, "", "DIR", cmd};
+	TCLAP::SwitchArg argList{"", "list-classes",
+		"List the estimators and scan-matcher classes that can be chosen, and exit", cmd};
+	ConfigCommandLine config{cmd,
 		"ScanMatcher:class=featloc::IcpMatcher or --set "
 		"ScanMatcher.IcpMatcher:maxIterations=50",
-		"the full reference configuration (every section and key, defaults, units)");
-	int exitCode = 0;
-	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
+		"the full reference configuration (every section and key, defaults, units)"};
 
-	if (argList.getValue())
+	/** CONFIG and, if given, INPUT; anything else is a UsageError. */
+	std::vector<std::string> files()
+	{
+		const auto& files = argFiles.getValue();
+		for (const auto& f : files)
+			if (f.size() > 1 && f[0] == '-') throw UsageError("unknown option '" + f + "'");
+		if (files.empty()) throw UsageError("missing CONFIG (the ini file)");
+		if (files.size() > 2)
+			throw UsageError(
+				"too many arguments: expected CONFIG [INPUT], got " +
+				std::to_string(files.size()) + " files");
+		return files;
+	}
+};
+
+/** Everything a run needs, checked before anything is written. */
+struct PreparedRun
+{
+	TrackedConfig cfg;
+	RunConfiguration rc;
+	std::string inputPath;
+	EntrySource::Ptr source;
+	std::optional<Reference> reference;
+	std::unique_ptr<ResultsFolder> folder;
+	RunOutputs outputs;
+};
+
+/** 1. The configuration, every key checked. 2. The input and the ground
+ * truth, read before anything is written. 3. The results folder (the run
+ * writes into its staging folder) and the outputs. */
+void prepare(RunCommandLine& cl, const std::vector<std::string>& files, PreparedRun& run)
+{
+	cl.config.load(run.cfg, files[0]);
+	run.rc = RunConfiguration::load(run.cfg);
+	run.cfg.requireAllKeysRead();
+
+	const bool inputOnCommandLine = files.size() == 2;
+	run.inputPath = inputOnCommandLine
+		? files[1]
+		: run.cfg.resolvePath(InputOptions::kSection, "rawlog", run.rc.input.rawlog);
+	if (run.inputPath.empty())
+		throw ConfigError(
+			run.cfg.sourceName() +
+			": no rawlog: give one on the command line or set [Input] rawlog");
+	run.source = EntrySource::openFile(run.inputPath);
+	run.reference = loadReference(run.cfg, run.rc, inputOnCommandLine, *run.source);
+
+	run.folder = std::make_unique<ResultsFolder>(cl.argOut.isSet()
+			? cl.argOut.getValue()
+			: run.cfg.resolvePath(OutputOptions::kSection, "dir", run.rc.output.dir));
+	run.folder->requireOutside(run.inputPath, "input");
+	if (run.reference && run.reference->trajectory.source != run.inputPath)
+		run.folder->requireOutside(run.reference->trajectory.source, "ground truth");
+	run.outputs = makeOutputs(
+		run.rc, *run.folder, run.rc.estimator->keepsLandmarks(), run.reference.has_value());
+	writeUsedConfig(run.cfg, run.folder->stagedFile("config_used.ini"));
+}
+
+/** 4. The run, then the evaluation. Whatever happens, the results are
+ * published (the staging folder takes the old folder's place). */
+RunStats execute(PreparedRun& run, bool quiet, InterruptSignals& signals)
+{
+	RunStats stats;
+	try
+	{
+		Pipeline pipeline(
+			run.rc.input, run.rc.odometry, run.rc.pipeline, run.rc.estimator, run.rc.matcher);
+		ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
+		stats = pipeline.run(
+			*run.source, run.outputs.pointers(), quiet ? nullptr : &progress, &signals.flag());
+		printSummary(stats);
+		try
+		{
+			evaluateAndPlot(run.rc, run.reference, *run.folder, stats, *run.outputs.summary);
+		}
+		catch (const std::exception& e)
+		{
+			// summary.json must not say "ok" when the run exits with an error.
+			stats.ok = false;
+			stats.error = std::string("evaluation: ") + e.what();
+			run.outputs.summary->finish(stats);
+			throw;
+		}
+	}
+	catch (...)
+	{
+		run.folder->publish();
+		throw;
+	}
+	run.folder->publish();
+	return stats;
+}
+}  // namespace
+
+int RunApp::main(int argc, char** argv)
+{
+	registerClasses();
+	RunCommandLine cl;
+	int exitCode = 0;
+	if (!parseCommandLine(cl.cmd, argc, argv, exitCode)) return exitCode;
+	if (cl.argList.getValue())
 	{
 		std::printf("%s", classesText().c_str());
 		return 0;
 	}
-	if (config.writeConfigIfAsked(
+	if (cl.config.writeConfigIfAsked(
 			"# featloc reference configuration: every key with its default.\n",
 			[](mrpt::config::CConfigFileBase& c) { RunConfiguration::defaults().save(c); }))
 		return 0;
-	const auto& files = argFiles.getValue();
-	for (const auto& f : files)
-		if (f.size() > 1 && f[0] == '-')
-			throw UsageError("unknown option '" + f + "'");
-	if (files.empty()) throw UsageError("missing CONFIG (the ini file)");
-	if (files.size() > 2)
-		throw UsageError(
-			"too many arguments: expected CONFIG [INPUT], got " + std::to_string(files.size()) +
-			" files");
-	const bool inputOnCommandLine = files.size() == 2;
+	const std::vector<std::string> files = cl.files();
 	// From here Ctrl-C asks to stop: before the run starts, nothing is touched.
 	InterruptSignals signals;
 
-	// 1. The configuration, every key checked.
-	TrackedConfig cfg;
-	config.load(cfg, files[0]);
-	const RunConfiguration rc = RunConfiguration::load(cfg);
-	cfg.requireAllKeysRead();
-	PoseEstimator::Ptr estimator = rc.estimator;
-
-	// 2. The input and the ground truth, read before anything is written.
-	const std::string inputPath = inputOnCommandLine
-		? files[1]
-		: cfg.resolvePath(InputOptions::kSection, "rawlog", rc.input.rawlog);
-	if (inputPath.empty())
-		throw ConfigError(
-			cfg.sourceName() + ": no rawlog: give one on the command line or set [Input] rawlog");
-	EntrySource::Ptr source = EntrySource::openFile(inputPath);
-	const std::optional<Reference> reference =
-		loadReference(cfg, rc, inputOnCommandLine, *source);
-
-	// 3. The results folder; the run writes into its staging folder.
-	ResultsFolder folder(argOut.isSet()
-			? argOut.getValue()
-			: cfg.resolvePath(OutputOptions::kSection, "dir", rc.output.dir));
-	folder.requireOutside(inputPath, "input");
-	if (reference && reference->trajectory.source != inputPath)
-		folder.requireOutside(reference->trajectory.source, "ground truth");
-	RunOutputs outputs =
-		makeOutputs(rc, folder, estimator->keepsLandmarks(), reference.has_value());
-	writeUsedConfig(cfg, folder.stagedFile("config_used.ini"));
-
+	PreparedRun run;
+	prepare(cl, files, run);
 	std::printf("featloc-run: %s (%s)\n  estimator: %s%s\n  results:   %s\n",
-		inputPath.c_str(), source->description().c_str(), estimator->name().c_str(),
-		estimator->usesScanMatcher() ? (", matcher " + rc.matcher->className()).c_str() : "",
-		folder.dir().c_str());
+		run.inputPath.c_str(), run.source->description().c_str(),
+		run.rc.estimator->name().c_str(),
+		run.rc.estimator->usesScanMatcher() ? (", matcher " + run.rc.matcher->className()).c_str()
+											: "",
+		run.folder->dir().c_str());
 	std::fflush(stdout);
 	if (signals.requested())
 	{
@@ -343,37 +407,10 @@ int RunApp::main(int argc, char** argv)
 		return 128 + SIGINT;
 	}
 
-	// 4. The run. From here on, whatever happens, the results are published.
-	RunStats stats;
-	try
-	{
-		Pipeline pipeline(rc.input, rc.odometry, rc.pipeline, std::move(estimator), rc.matcher);
-		ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
-		stats = pipeline.run(
-			*source, outputs.pointers(), config.quiet() ? nullptr : &progress, &signals.flag());
-		printSummary(stats);
-		try
-		{
-			evaluateAndPlot(rc, reference, folder, stats, *outputs.summary);
-		}
-		catch (const std::exception& e)
-		{
-			// summary.json must not say "ok" when the run exits with an error.
-			stats.ok = false;
-			stats.error = std::string("evaluation: ") + e.what();
-			outputs.summary->finish(stats);
-			throw;
-		}
-	}
-	catch (...)
-	{
-		folder.publish();
-		throw;
-	}
-	folder.publish();
-	std::printf("results in %s:\n", folder.dir().c_str());
-	for (const auto& f : outputs.names)
-		if (std::ifstream(folder.finalFile(f))) std::printf("  %s\n", f.c_str());
+	const RunStats stats = execute(run, cl.config.quiet(), signals);
+	std::printf("results in %s:\n", run.folder->dir().c_str());
+	for (const auto& f : run.outputs.names)
+		if (std::ifstream(run.folder->finalFile(f))) std::printf("  %s\n", f.c_str());
 	if (stats.interrupted)
 	{
 		std::printf("interrupted: the results hold the %zu steps processed\n", stats.steps);

@@ -150,12 +150,14 @@ bool Pipeline::isNewKeyframe(const MatchResult* match) const
 {
 	if (m_options.keyframe_distance <= 0 && m_options.keyframe_angle <= 0)
 		return true;
+	// The raw match's motion decides even when the EKF gated the match out:
+	// counting a gated match as failed (new keyframe), or using the
+	// estimate's motion instead, were both measured worse on most logs
+	// (doc/benchmarks.md, "Keyframe decision after a gated match").
 	if (!match || !match->success) return true;
 	const auto& m = match->estimate.mean;
-	return (m_options.keyframe_distance > 0 &&
-			m.norm() >= m_options.keyframe_distance) ||
-		(m_options.keyframe_angle > 0 &&
-		 std::abs(m.phi()) >= m_options.keyframe_angle);
+	return (m_options.keyframe_distance > 0 && m.norm() >= m_options.keyframe_distance) ||
+		(m_options.keyframe_angle > 0 && std::abs(m.phi()) >= m_options.keyframe_angle);
 }
 
 void Pipeline::processStep(

@@ -60,7 +60,7 @@ size_t StepAssembler::landmarkObservations() const { return m_bearingRange->obse
 
 bool StepAssembler::full() const
 {
-	return m_input.max_scans > 0 && m_nextStepIndex >= m_input.max_scans;
+	return m_input.max_scans > 0 && m_nextScanIndex >= m_input.max_scans;
 }
 
 void StepAssembler::push(

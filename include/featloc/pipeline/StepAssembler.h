@@ -69,7 +69,8 @@ class StepAssembler
 	/** End of the log: every pending step is released. */
 	void finish(std::vector<EstimationStep>& ready);
 
-	/** True once max_scans steps were opened (reading can stop). */
+	/** True once max_scans scans were taken (reading can stop; no step
+	 * opens after that). */
 	bool full() const;
 
 	const LaserScanSelector& selector() const;
