@@ -9,6 +9,7 @@
 #include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRobotPose.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -264,6 +265,21 @@ TEST(ObservationFrames, MrptKfSlamDemoRunsAndMatchesMrptsKfSlam)
 	std::ifstream in(dir.file("o/summary.json"));
 	const auto j = nlohmann::json::parse(in);
 	EXPECT_LT(j["evaluation"]["ate_m"]["rmse"].get<double>(), 0.0052) << j.dump(2);
+	// estimated.rawlog: every step's pose, in the frame it was estimated for.
+	{
+		RawlogReader reader(dir.file("o/estimated.rawlog"));
+		RawlogEntry e;
+		size_t poses = 0, frames = 0;
+		while (reader.next(e))
+			if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(e.object))
+			{
+				frames++;
+				for (const auto& o : *sf)
+					if (IS_CLASS(*o, mrpt::obs::CObservationRobotPose)) poses++;
+			}
+		EXPECT_EQ(poses, est.poses.size());
+		EXPECT_EQ(frames, est.poses.size());
+	}
 
 	std::map<int64_t, std::pair<double, double>> truth;
 	{

@@ -52,11 +52,13 @@ std::string EvaluationReport::toText() const
 		std::snprintf(
 			buf, sizeof(buf),
 			"reference %s (%zu poses), estimate %s (%zu poses): %zu "
-			"associated within %.3f s\n"
+			"associated %s\n"
 			"alignment applied to the estimate: x %.4f m, y %.4f m, yaw %.3f "
 			"deg\n",
-			reference.c_str(), referencePoses, estimate.c_str(), estimatePoses,
-			associated, maxTimeDifference, alignment.x, alignment.y,
+			reference.c_str(), referencePoses, estimate.c_str(), estimatePoses, associated,
+			pairedByIndex ? "row by row (no times on one side)"
+						  : ("within " + std::to_string(maxTimeDifference).substr(0, 5) + " s").c_str(),
+			alignment.x, alignment.y,
 			mrpt::RAD2DEG(alignment.phi));
 		out << buf << header;
 		out << row("ATE translation", ate, 1, "m");
@@ -100,6 +102,7 @@ std::string EvaluationReport::toJson() const
 {
 	nlohmann::json j;
 	j["max_time_difference_s"] = maxTimeDifference;
+	j["paired_by_index"] = pairedByIndex;
 	j["estimate"] = estimate;
 	if (hasTrajectoryMetrics)
 	{

@@ -105,6 +105,7 @@ EvaluationReport TrajectoryEvaluator::evaluate(
 	rep.reference = reference.source;
 	rep.estimate = estimate.source;
 	rep.maxTimeDifference = m_maxDt;
+	rep.pairedByIndex = !reference.timed || !estimate.timed;
 	rep.hasTrajectoryMetrics = true;
 	rep.referencePoses = reference.poses.size();
 	rep.estimatePoses = estimate.poses.size();

@@ -179,6 +179,8 @@ void StepAssembler::onObservation(
 		s.entryIndex = entryIndex;
 		s.time = t;
 	}
+	else if (!s.source)
+		s.source = obs.get();  // the outputs attach the pose after it
 	s.landmarks.insert(s.landmarks.end(), c.landmarks.begin(), c.landmarks.end());
 	used.push_back({s.index, obs.get()});
 }

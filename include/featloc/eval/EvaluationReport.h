@@ -16,6 +16,8 @@ struct EvaluationReport
 {
 	std::string reference, estimate;  //!< file names
 	double maxTimeDifference = 0;  //!< [s] used for association
+	/** One side has no times: rows were paired in order. */
+	bool pairedByIndex = false;
 
 	// Trajectory against trajectory.
 	bool hasTrajectoryMetrics = false;
