@@ -8,6 +8,8 @@ BUILD_TYPE="${FEATLOC_BUILD_TYPE:-Release}"
 JOBS="${FEATLOC_JOBS:-$(nproc)}"
 
 if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
-  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$BUILD_TYPE"
+  # FEATLOC_CMAKE_ARGS: extra configure options (scripts/test.sh --sanitize).
+  # shellcheck disable=SC2086
+  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" ${FEATLOC_CMAKE_ARGS:-}
 fi
 cmake --build "$BUILD_DIR" -j "$JOBS"

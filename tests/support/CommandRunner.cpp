@@ -11,7 +11,11 @@ namespace featloc::test
 CommandResult runCommand(const std::string& command)
 {
 	CommandResult r;
-	FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+	// A command that hangs is killed (exit code 124 or 137), so the test
+	// fails with its output instead of stalling until ctest's timeout.
+	const std::string bounded = "timeout -k 10 " + std::to_string(kCommandTimeoutSeconds) +
+		" sh -c " + shellQuote(command + " 2>&1");
+	FILE* pipe = popen(bounded.c_str(), "r");
 	if (!pipe) throw std::runtime_error("popen failed: " + command);
 	std::array<char, 4096> buf{};
 	size_t n = 0;
@@ -19,6 +23,9 @@ CommandResult runCommand(const std::string& command)
 		r.output.append(buf.data(), n);
 	const int status = pclose(pipe);
 	r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+	if (r.exitCode == 124 || r.exitCode == 137)
+		r.output += "\n[timed out after " + std::to_string(kCommandTimeoutSeconds) + " s: " +
+			command + "]\n";
 	return r;
 }
 
