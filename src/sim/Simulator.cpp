@@ -337,7 +337,7 @@ Simulator::Result Simulator::run(
 		prevTruth = truth;
 
 		const SimulatedScan scan = makeScan(k, t);
-		// Beacons first: the pipeline applies them with the next scan.
+		// Beacons first, at the scan's time: the pipeline makes one step of both.
 		if (scan.beacons) res.beaconMeasurements += scan.beacons->sensedData.size();
 		if (m_sim.format == 1)
 		{
