@@ -309,3 +309,45 @@ TEST(ObservationFrames, MrptKfSlamDemoRunsAndMatchesMrptsKfSlam)
 	EXPECT_LT(sum / static_cast<double>(n), 0.00368);
 	EXPECT_LT(worst, 0.0125);
 }
+
+// Format #2 as featloc-sim writes it: the landmarks, then the scan, at one
+// time: one step, whose pose the outputs attach to the scan.
+TEST(ObservationFrames, ObservationsSharingATimeMakeOneStepAttachedToTheScan)
+{
+	registerClasses();
+	TempDir dir;
+	std::vector<mrpt::serialization::CSerializable::Ptr> log;
+	for (int k = 0; k <= 6; k++)
+	{
+		const double t = 0.1 * k;
+		log.push_back(odometryAt(t));
+		if (k % 2 == 0)
+		{
+			log.push_back(landmarksAt(t, {2, 3}));
+			log.push_back(scanAt(t));
+		}
+	}
+	writeLog(dir.file("d.rawlog"), log);
+	StepAssembler a(InputOptions{}, OdometryOptions{}, "d");
+	RawlogReader reader(dir.file("d.rawlog"));
+	std::vector<EstimationStep> steps;
+	std::vector<StepSource> used, allUsed;
+	RawlogEntry e;
+	while (reader.next(e))
+	{
+		used.clear();
+		a.push(e, used, steps);
+		allUsed.insert(allUsed.end(), used.begin(), used.end());
+	}
+	a.finish(steps);
+	ASSERT_EQ(steps.size(), 4u);
+	for (const auto& s : steps)
+	{
+		ASSERT_NE(s.scan, nullptr);
+		EXPECT_EQ(s.landmarks.size(), 2u);
+		EXPECT_EQ(s.source, static_cast<const mrpt::obs::CObservation*>(s.scan.get()))
+			<< "step " << s.index;
+	}
+	EXPECT_EQ(allUsed.size(), 8u);	// both observations of each step were used
+	EXPECT_NEAR(steps[1].odometry.mean.x(), 0.2, 1e-9);
+}
