@@ -63,7 +63,7 @@ class PoseCollector : public RunOutput
 	std::vector<std::pair<double, CPosePDFGaussian>> poses;
 	void onStep(const StepRecord& r) override
 	{
-		poses.emplace_back(mrpt::Clock::toDouble(r.step.timestamp()), r.pose);
+		poses.emplace_back(mrpt::Clock::toDouble(r.step.time), r.pose);
 	}
 	void finish(const RunStats&) override {}
 	std::string path() const override { return ""; }

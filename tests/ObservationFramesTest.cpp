@@ -107,13 +107,20 @@ mrpt::obs::CSensoryFrame::Ptr frameOf(const std::vector<mrpt::obs::CObservation:
 	return sf;
 }
 
-std::vector<EstimationStep> stepsOf(const std::string& file, StepAssembler& a)
+/** The steps of a log; `allUsed` (if given) gets every observation used. */
+std::vector<EstimationStep> stepsOf(
+	const std::string& file, StepAssembler& a, std::vector<StepSource>* allUsed = nullptr)
 {
 	RawlogReader reader(file);
 	std::vector<EstimationStep> steps;
 	std::vector<StepSource> used;
 	RawlogEntry e;
-	while (reader.next(e)) a.push(e, used, steps);
+	while (reader.next(e))
+	{
+		used.clear();
+		a.push(e, used, steps);
+		if (allUsed) allUsed->insert(allUsed->end(), used.begin(), used.end());
+	}
 	a.finish(steps);
 	return steps;
 }
@@ -173,7 +180,7 @@ TEST(ObservationFrames, WithActionsTheSensoryFrameIsOneStep)
 		EXPECT_TRUE(steps[k].scan != nullptr) << k;
 		EXPECT_EQ(steps[k].landmarks.size(), 1u) << k;	// its own frame's, not the next
 		EXPECT_NEAR(mrpt::Clock::toDouble(steps[k].time) - kT0, 0.1 * static_cast<double>(k), 1e-6);
-		if (k > 0) EXPECT_NEAR(steps[k].odometry.mean.x(), 0.1, 1e-9);
+		if (k > 0) { EXPECT_NEAR(steps[k].odometry.mean.x(), 0.1, 1e-9); }
 	}
 }
 
@@ -329,17 +336,8 @@ TEST(ObservationFrames, ObservationsSharingATimeMakeOneStepAttachedToTheScan)
 	}
 	writeLog(dir.file("d.rawlog"), log);
 	StepAssembler a(InputOptions{}, OdometryOptions{}, "d");
-	RawlogReader reader(dir.file("d.rawlog"));
-	std::vector<EstimationStep> steps;
-	std::vector<StepSource> used, allUsed;
-	RawlogEntry e;
-	while (reader.next(e))
-	{
-		used.clear();
-		a.push(e, used, steps);
-		allUsed.insert(allUsed.end(), used.begin(), used.end());
-	}
-	a.finish(steps);
+	std::vector<StepSource> allUsed;
+	const auto steps = stepsOf(dir.file("d.rawlog"), a, &allUsed);
 	ASSERT_EQ(steps.size(), 4u);
 	for (const auto& s : steps)
 	{

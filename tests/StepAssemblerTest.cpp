@@ -61,7 +61,7 @@ TEST(StepAssembler, Format1IncrementsAreTheActions)
 	{
 		EXPECT_TRUE(steps[k].hasOdometry);
 		EXPECT_EQ(steps[k].scanIndex, k);
-		EXPECT_NEAR(mrpt::Clock::toDouble(steps[k].timestamp()), times[k], 1e-6);
+		EXPECT_NEAR(mrpt::Clock::toDouble(steps[k].time), times[k], 1e-6);
 		const double t = log.scanPeriod * static_cast<double>(k);
 		expectIncrement(steps[k], log.path(t) - log.path(t - log.scanPeriod), 1e-9);
 		EXPECT_GT(steps[k].odometry.cov(0, 0), 0);	// the action's covariance

@@ -77,7 +77,7 @@ Sequence loadRawlog(
 		sinceScan += s.odometry;
 		if (!s.scan) continue;
 		seq.scans.push_back(s.scan);
-		seq.times.push_back(mrpt::Clock::toDouble(s.timestamp()));
+		seq.times.push_back(mrpt::Clock::toDouble(s.time));
 		seq.odometry.push_back(seq.scans.size() == 1 ? s.odometry : sinceScan);
 		sinceScan = mrpt::poses::CPosePDFGaussian();
 	}

@@ -103,11 +103,7 @@ MethodRun runFeatloc(const RunConfiguration& rc, const std::string& rawlog)
 	auto process = [&](const EstimationStep& s) {
 		const auto t0 = Clock::now();
 		if (s.index == 0)
-		{
-			const auto& p = rc.pipeline.initial_pose;
-			est.initialize(mrpt::poses::CPosePDFGaussian(mrpt::poses::CPose2D(p[0], p[1], p[2])));
-			if (!s.landmarks.empty()) est.process(s, nullptr);
-		}
+			est.start(rc.pipeline.initialPose(), s);
 		else
 			est.process(s, nullptr);
 		r.stepTimes.push_back(since(t0));
@@ -166,7 +162,14 @@ MethodRun runMrpt(const std::string& mrptIni, const std::string& rawlog, double 
 	slam.getCurrentState(robot, lms, ids, x, P);
 	r.landmarksInState = lms.size();
 	for (size_t i = 0; i < lms.size(); i++)
-		r.landmarks[ids.count(static_cast<unsigned>(i)) ? static_cast<int64_t>(ids[static_cast<unsigned>(i)]) : -1 - static_cast<int64_t>(i)] = lms[i];
+	{
+		// A landmark without identity gets a negative key of its own (never
+		// in the ground truth).
+		const auto it = ids.find(static_cast<unsigned>(i));
+		const int64_t key =
+			it != ids.end() ? static_cast<int64_t>(it->second) : -1 - static_cast<int64_t>(i);
+		r.landmarks[key] = lms[i];
+	}
 	return r;
 }
 }  // namespace

@@ -101,7 +101,7 @@ void EkfLocalizer::cloneKeyframe()
 	clonePose(kClone);
 }
 
-void EkfLocalizer::update(
+double EkfLocalizer::update(
 	const std::vector<Eigen::Index>& cols, const Eigen::MatrixXd& Hc, const Eigen::VectorXd& nu,
 	const Eigen::MatrixXd& R)
 {
@@ -113,11 +113,13 @@ void EkfLocalizer::update(
 	// U = P H^T L^-T, one product that is symmetric by construction (no
 	// n x n symmetrising pass, which costs as much as the update).
 	const Eigen::LLT<Eigen::MatrixXd> llt(S);
-	m_x += PHt * llt.solve(nu);
+	const Eigen::VectorXd Sinvnu = llt.solve(nu);
+	m_x += PHt * Sinvnu;
 	const Eigen::MatrixXd U = llt.matrixL().solve(PHt.transpose()).transpose();
 	Pn.noalias() -= U * U.transpose();
 	for (Eigen::Index k : {kRobot, kClone, kMatchClone})
 		m_x[k + 2] = mrpt::math::wrapToPi(m_x[k + 2]);
+	return nu.dot(Sinvnu);
 }
 
 Eigen::Vector3d EkfLocalizer::predictRelativeMotion(
@@ -365,9 +367,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 			nu.segment<2>(row) = obs[i].position - h;
 			R.block<2, 2>(row, row) = obs[i].covariance;
 		}
-		const Eigen::MatrixXd S = H * P()(cols, cols) * H.transpose() + R;
-		out.jointMahalanobis2 = nu.dot(S.ldlt().solve(nu));
-		update(cols, H, nu, R);
+		out.jointMahalanobis2 = update(cols, H, nu, R);
 		for (const auto& [i, j] : pairs) m_info[j].observations++;
 		out.associated = pairs.size();
 	}

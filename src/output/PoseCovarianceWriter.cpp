@@ -21,7 +21,7 @@ void PoseCovarianceWriter::onStep(const StepRecord& r)
 	char row[512];
 	std::snprintf(
 		row, sizeof(row), "%.9f %.9f %.9f %.12f %.9e %.9e %.9e %.9e %.9e %.9e",
-		mrpt::Clock::toDouble(r.step.timestamp()), m.x(), m.y(), m.phi(),
+		mrpt::Clock::toDouble(r.step.time), m.x(), m.y(), m.phi(),
 		c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2));
 	writeRow(row);
 }

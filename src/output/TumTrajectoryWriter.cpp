@@ -20,7 +20,7 @@ void TumTrajectoryWriter::onStep(const StepRecord& r)
 	char row[256];
 	std::snprintf(
 		row, sizeof(row), "%.9f %.9f %.9f 0 0 0 %.12f %.12f",
-		mrpt::Clock::toDouble(r.step.timestamp()), m.x(), m.y(),
+		mrpt::Clock::toDouble(r.step.time), m.x(), m.y(),
 		std::sin(m.phi() / 2), std::cos(m.phi() / 2));
 	writeRow(row);
 }

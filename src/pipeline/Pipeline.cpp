@@ -171,13 +171,7 @@ void Pipeline::processStep(
 	const MatchResult* matchPtr = nullptr;
 	bool usedMatch = false;
 	if (step.index == 0)
-	{
-		const auto& p = m_options.initial_pose;
-		m_estimator->initialize(
-			mrpt::poses::CPosePDFGaussian(mrpt::poses::CPose2D(p[0], p[1], p[2])));
-		// What the first frame saw (landmarks) is fused at the initial pose.
-		if (!step.landmarks.empty()) m_estimator->process(step, nullptr);
-	}
+		m_estimator->start(m_options.initialPose(), step);
 	else
 	{
 		m_odometrySinceKeyframe += logStep.odometry;

@@ -136,8 +136,9 @@ class EkfLocalizer
 
    private:
 	/** x <- x + K nu, P <- P - K S K^T for an observation whose Jacobian is
-	 * `Hc` (m x cols.size()) on the state entries `cols` (zero elsewhere). */
-	void update(
+	 * `Hc` (m x cols.size()) on the state entries `cols` (zero elsewhere).
+	 * Returns the innovation's Mahalanobis^2, nu^T S^-1 nu. */
+	double update(
 		const std::vector<Eigen::Index>& cols, const Eigen::MatrixXd& Hc,
 		const Eigen::VectorXd& nu, const Eigen::MatrixXd& R);
 	/** The held match as a correction of the state: K (n x 3), nu. */

@@ -40,7 +40,5 @@ struct EstimationStep
 	mrpt::poses::CPosePDFGaussian odometry;
 	/** Point landmarks observed in this frame (robot frame). */
 	std::vector<LandmarkObservation> landmarks;
-
-	mrpt::Clock::time_point timestamp() const { return time; }
 };
 }  // namespace featloc

@@ -51,6 +51,10 @@ class PoseEstimator : public mrpt::rtti::CObject
 	/** Pose at the first step. */
 	virtual void initialize(const mrpt::poses::CPosePDFGaussian& initialPose) = 0;
 
+	/** The first step: initialize() at `initialPose`, then what that step
+	 * saw (landmarks) is fused there. */
+	void start(const mrpt::poses::CPosePDFGaussian& initialPose, const EstimationStep& first);
+
 	/** Advances to the step's time. `match` is the scan matcher's motion
 	 * from the current reference (keyframe) scan to this one, or nullptr
 	 * when no matcher ran. Returns true when the estimate used the match,

@@ -16,9 +16,10 @@
 
 namespace featloc
 {
-/** A run: the source's entries -> StepAssembler (scans in time
- * order with their odometry motion) -> scan matcher (reference scan, this
- * scan, odometry as the initial guess) -> estimator -> outputs.
+/** A run: the source's entries -> StepAssembler (observation frames in
+ * time order with their odometry motion) -> scan matcher for the steps
+ * that hold a scan (reference scan, this scan, odometry as the initial
+ * guess) -> estimator -> outputs.
  *
  * The reference scan is the previous scan, or with [Pipeline]
  * keyframe_distance / keyframe_angle the last keyframe. The matcher's guess

@@ -1,4 +1,5 @@
 #pragma once
+#include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/config/CLoadableOptions.h>
 
 #include <cmath>
@@ -18,6 +19,12 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	/** Robot pose at the first scan: x [m], y [m], yaw [rad] in memory
 	 * (degrees in the file). */
 	std::vector<double> initial_pose = {0, 0, 0};
+	/** initial_pose as a pose with zero covariance (the origin of the run). */
+	mrpt::poses::CPosePDFGaussian initialPose() const
+	{
+		return mrpt::poses::CPosePDFGaussian(
+			mrpt::poses::CPose2D(initial_pose[0], initial_pose[1], initial_pose[2]));
+	}
 	/** The scan matcher matches each scan against a reference (keyframe)
 	 * scan, replaced when the estimated motion since it reaches
 	 * keyframe_distance [m] or keyframe_angle [rad], or when a match fails.
