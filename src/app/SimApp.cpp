@@ -67,7 +67,8 @@ int SimApp::main(int argc, char** argv)
 					  scene = prefix + ".3Dscene", picture = prefix + ".png";
 
 	const auto t0 = std::chrono::steady_clock::now();
-	Simulator sim(sc.world, sc.robot, sc.laser, sc.odometry, sc.simulation, sc.beacons);
+	Simulator sim(
+		sc.world, sc.robot, sc.laser, sc.odometry, sc.simulation, sc.beacons, sc.stereo);
 	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
 	size_t scans = 0;
 	const auto res = sim.run(
@@ -100,6 +101,17 @@ int SimApp::main(int argc, char** argv)
 			? (std::to_string(res.actions) + " odometry actions").c_str()
 			: (std::to_string(res.odometryReadings) + " odometry readings").c_str(),
 		secs, rawlog.c_str(), gt.c_str(), scene.c_str(), picture.c_str());
+	if (sc.stereo.enabled)
+	{
+		const auto stem = std::filesystem::path(rawlog).stem().string();
+		const auto dir = std::filesystem::path(rawlog).parent_path();
+		std::printf(
+			"  stereo '%s': %zu pairs %ux%u at %.1f Hz:\n    %s/ (images)\n"
+			"    %s.camera.gt.txt, %s.edges.gt.txt, %s_GT/ (ground truth)\n",
+			sc.stereo.label.c_str(), res.stereoFrames, sc.stereo.width, sc.stereo.height,
+			sc.stereo.rate, (dir / (stem + "_Images")).string().c_str(), prefix.c_str(),
+			prefix.c_str(), prefix.c_str());
+	}
 	return 0;
 }
 }  // namespace featloc

@@ -1,5 +1,7 @@
 #include "featloc/sim/SimConfiguration.h"
 
+#include "featloc/sim/StereoRenderer.h"
+
 namespace featloc
 {
 SimConfiguration SimConfiguration::load(const mrpt::config::CConfigFileBase& cfg)
@@ -10,7 +12,11 @@ SimConfiguration SimConfiguration::load(const mrpt::config::CConfigFileBase& cfg
 	sc.laser.loadFromConfigFile(cfg, LaserOptions::kSection);
 	sc.odometry.loadFromConfigFile(cfg, SimOdometryOptions::kSection);
 	sc.beacons.loadFromConfigFile(cfg, BeaconSensorOptions::kSection);
+	sc.stereo.loadFromConfigFile(cfg, StereoCameraOptions::kSection);
 	sc.world = SimWorld::fromConfig(cfg);
+	// Every surface the camera may see must be a material it can render
+	// (the laser does not care: worlds without a camera may name anything).
+	if (sc.stereo.enabled) StereoRenderer(sc.world, sc.stereo);
 	return sc;
 }
 
@@ -21,5 +27,6 @@ void SimConfiguration::saveSettings(mrpt::config::CConfigFileBase& cfg) const
 	laser.saveToConfigFile(cfg, LaserOptions::kSection);
 	odometry.saveToConfigFile(cfg, SimOdometryOptions::kSection);
 	beacons.saveToConfigFile(cfg, BeaconSensorOptions::kSection);
+	stereo.saveToConfigFile(cfg, StereoCameraOptions::kSection);
 }
 }  // namespace featloc

@@ -61,17 +61,93 @@ double segmentSegmentDistance(
 
 void loadWall(SimWorld& w, const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
-	std::vector<std::vector<double>> rows;
-	config::readRows(c, s, "polyline", rows, {2});
+	std::vector<std::vector<double>> rows, posters, patches, doors;
 	bool closed = false;
-	std::string texture = "plain";
+	std::string texture = "plain", patchTexture = "paper";
+	double bottom = 0, top = 2.5;
+	config::readRows(c, s, "polyline", rows, {2});
 	config::read(c, s, "closed", closed);
 	config::read(c, s, "texture", texture);
+	config::read(c, s, "bottom", bottom);
+	config::read(c, s, "height", top);
+	config::readRows(c, s, "posters", posters, {4});
+	config::readRows(c, s, "patches", patches, {4, 5});
+	config::read(c, s, "patch_texture", patchTexture);
+	// One name, or a list "[paper metal]" that a 5th column picks from.
+	std::vector<std::string> patchTextures;
+	{
+		std::string word;
+		for (char ch : patchTexture + " ")
+		{
+			if (std::isspace(static_cast<unsigned char>(ch)) || ch == ',' || ch == '[' || ch == ']')
+			{
+				if (!word.empty()) patchTextures.push_back(word);
+				word.clear();
+			}
+			else
+				word += ch;
+		}
+		config::require(!patchTextures.empty(), c, s, "patch_texture", "a material name or [name name ...]");
+	}
+	config::readRows(c, s, "doors", doors, {2});
 	config::require(rows.size() >= 2, c, s, "polyline", "at least two points [x y; x y]");
+	config::require(bottom >= 0, c, s, "bottom", ">= 0 [m]");
+	config::require(top > bottom, c, s, "height", "above 'bottom' [m]");
 	auto pts = points(rows);
 	if (closed) pts.push_back(pts.front());
+	double length = 0;
 	for (size_t i = 1; i < pts.size(); i++)
-		w.addSegment({pts[i - 1], pts[i], texture, s});
+		length += std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+
+	std::vector<SurfacePatch> all;
+	auto addPatches = [&](const std::vector<std::vector<double>>& list, const char* key,
+						  const std::string& fixedTexture) {
+		for (const auto& r : list)
+		{
+			std::string tex = fixedTexture;
+			if (tex.empty())
+			{
+				const double k = r.size() == 5 ? r[4] : 0;
+				config::require(
+					k >= 0 && k == std::floor(k) && k < static_cast<double>(patchTextures.size()), c,
+					s, key, "a 5th column that indexes patch_texture (0.." +
+						std::to_string(patchTextures.size() - 1) + ")");
+				tex = patchTextures[static_cast<size_t>(k)];
+			}
+			config::require(
+				r[0] < r[1] && r[2] < r[3] && r[0] >= -1e-9 && r[1] <= length + 1e-9 &&
+					r[2] >= bottom - 1e-9 && r[3] <= top + 1e-9,
+				c, s, key,
+				"rows [s0 s1 z0 z1] with s0 < s1 within the polyline (0.." +
+					std::to_string(length) + " m) and z0 < z1 within bottom..height");
+			all.push_back({r[0], r[1], r[2], r[3], tex});
+		}
+	};
+	// Drawn in this order, later on top: patches, posters, doors.
+	addPatches(patches, "patches", "");
+	addPatches(posters, "posters", "poster");
+	for (const auto& d : doors)
+	{
+		// A closed door: the leaf, then a frame 5 cm wide around it.
+		const double frame = 0.05, doorTop = std::min(2.05, top - frame);
+		config::require(
+			d[0] - frame >= -1e-9 && d[0] < d[1] && d[1] + frame <= length + 1e-9 &&
+				bottom == 0 && doorTop > 0.5,
+			c, s, "doors",
+			"rows [s0 s1] with a 5 cm frame on both sides inside the polyline, on a wall "
+			"standing on the floor and at least 2.1 m high");
+		all.push_back({d[0], d[1], 0, doorTop, "wood"});
+		all.push_back({d[0] - frame, d[0], 0, doorTop + frame, "door_frame"});
+		all.push_back({d[1], d[1] + frame, 0, doorTop + frame, "door_frame"});
+		all.push_back({d[0], d[1], doorTop, doorTop + frame, "door_frame"});
+	}
+	double sAt = 0;
+	for (size_t i = 1; i < pts.size(); i++)
+	{
+		WallSegment seg{pts[i - 1], pts[i], texture, s, bottom, top, sAt, all};
+		sAt += std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+		w.addSegment(seg);
+	}
 }
 
 void loadObstacle(
@@ -82,6 +158,10 @@ void loadObstacle(
 	config::readRows(c, s, "polygon", polygon, {2});
 	config::readRows(c, s, "circle", circle, {3});
 	config::read(c, s, "texture", texture);
+	// Desks and cabinets are furniture height; a pillar or bin 1 m.
+	double top = circle.empty() ? 0.75 : 1.0;
+	config::read(c, s, "height", top);
+	config::require(top > 0, c, s, "height", "> 0 [m]");
 	if (polygon.empty() == circle.empty())
 		config::fail(c, s, "polygon",
 			"an obstacle needs either 'polygon = [x y; ...]' or "
@@ -90,14 +170,18 @@ void loadObstacle(
 	{
 		config::require(circle.size() == 1 && circle[0][2] > 0, c, s, "circle",
 			"one row [cx cy r] with r > 0");
-		w.addCircle({TPoint2D(circle[0][0], circle[0][1]), circle[0][2], texture, s});
+		w.addCircle({TPoint2D(circle[0][0], circle[0][1]), circle[0][2], texture, s, 0, top});
 		return;
 	}
 	config::require(polygon.size() >= 3, c, s, "polygon", "at least three points");
 	auto pts = points(polygon);
 	pts.push_back(pts.front());
+	double sAt = 0;
 	for (size_t i = 1; i < pts.size(); i++)
-		w.addSegment({pts[i - 1], pts[i], texture, s});
+	{
+		w.addSegment({pts[i - 1], pts[i], texture, s, 0, top, sAt, {}});
+		sAt += std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+	}
 }
 
 void loadAgent(SimWorld& w, const mrpt::config::CConfigFileBase& c, const std::string& s)
@@ -158,6 +242,12 @@ void SimWorld::circlesAt(double t, std::vector<CircleShape>& out) const
 {
 	out = m_circles;
 	for (const auto& a : m_agents) a.shapesAt(t, out);
+}
+
+void SimWorld::cameraCirclesAt(double t, std::vector<CircleShape>& out) const
+{
+	out = m_circles;
+	for (const auto& a : m_agents) a.cameraShapesAt(t, out);
 }
 
 double SimWorld::clearance(const TPoint2D& p) const

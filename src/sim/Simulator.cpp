@@ -12,6 +12,7 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include <Eigen/Cholesky>
+#include <opencv2/core.hpp>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -20,6 +21,7 @@
 
 #include "featloc/math/DiagonalPoseGaussian.h"
 #include "featloc/sim/RayCaster.h"
+#include "featloc/sim/StereoOutputWriter.h"
 
 namespace featloc
 {
@@ -45,13 +47,14 @@ std::string tumRow(double t, const mrpt::poses::CPose2D& p)
 Simulator::Simulator(
 	SimWorld world, RobotPathOptions robot, LaserOptions laser,
 	SimOdometryOptions odometry, SimulationOptions simulation,
-	BeaconSensorOptions beacons)
+	BeaconSensorOptions beacons, StereoCameraOptions stereo)
 	: m_world(std::move(world)),
 	  m_robot(std::move(robot)),
 	  m_laser(std::move(laser)),
 	  m_odometry(std::move(odometry)),
 	  m_sim(simulation),
-	  m_beacons(std::move(beacons))
+	  m_beacons(std::move(beacons)),
+	  m_stereo(std::move(stereo))
 {
 	rng().randomize(m_sim.seed);
 	// Beacons draw from their own sequence: adding them to a world leaves
@@ -312,14 +315,40 @@ Simulator::Result Simulator::run(
 		}
 	};
 
-	mrpt::poses::CPose2D prevTruth;
-	for (size_t k = 0; k < nScans; k++)
+	// Stereo: its own renderer, writer and random generator (image noise
+	// never shifts the laser's or the odometry's draws).
+	std::unique_ptr<StereoRenderer> renderer;
+	std::unique_ptr<VisibleEdges> edgeList;
+	std::unique_ptr<StereoOutputWriter> stereoWriter;
+	cv::RNG imageRng(static_cast<uint64_t>(m_sim.seed) * 2654435761ull + 12345);
+	size_t nFrames = 0;
+	double framePeriod = 0;
+	if (m_stereo.enabled)
 	{
-		const double t = scanPeriod * static_cast<double>(k);
+		renderer = std::make_unique<StereoRenderer>(m_world, m_stereo);
+		edgeList = std::make_unique<VisibleEdges>(m_world, m_stereo);
+		std::string prefix = groundTruthPath;
+		if (prefix.size() > 7 && prefix.substr(prefix.size() - 7) == ".gt.txt")
+			prefix.resize(prefix.size() - 7);
+		stereoWriter = std::make_unique<StereoOutputWriter>(m_stereo, rawlogPath, prefix);
+		framePeriod = 1.0 / m_stereo.rate;
+		const double lastScan = scanPeriod * static_cast<double>(nScans - 1);
+		nFrames = static_cast<size_t>(std::floor(lastScan / framePeriod + 1e-9)) + 1;
+	}
+
+	mrpt::poses::CPose2D prevTruth;
+	size_t k = 0, j = 0;  // next scan, next stereo frame
+	size_t events = 0;
+	while (k < nScans || j < nFrames)
+	{
+		const double tScan = k < nScans ? scanPeriod * static_cast<double>(k) : 1e300;
+		const double tFrame = j < nFrames ? framePeriod * static_cast<double>(j) : 1e300;
+		const double t = std::min(tScan, tFrame);
+		const bool doScan = std::abs(tScan - t) < 1e-9, doFrame = std::abs(tFrame - t) < 1e-9;
 		const mrpt::poses::CPose2D truth = m_trajectory->poseAt(t);
 		if (m_sim.format == 1)
 		{
-			if (k > 0)
+			if (events > 0)
 			{
 				arch << *makeAction(noisyIncrement(truth - prevTruth), m_sim.t0 + t);
 				res.actions++;
@@ -327,7 +356,7 @@ Simulator::Result Simulator::run(
 		}
 		else if (pairs)
 		{
-			if (k > 0) odoPose = odoPose + noisyIncrement(truth - prevTruth);
+			if (events > 0) odoPose = odoPose + noisyIncrement(truth - prevTruth);
 			writeOdometry(t, odoPose);
 		}
 		else
@@ -335,28 +364,58 @@ Simulator::Result Simulator::run(
 			odometryUntil(t);
 		}
 		prevTruth = truth;
+		events++;
 
-		const SimulatedScan scan = makeScan(k, t);
+		SimulatedScan scan;
+		if (doScan)
+		{
+			scan = makeScan(k, t);
+			if (scan.beacons) res.beaconMeasurements += scan.beacons->sensedData.size();
+		}
+		SimulatedStereo stereo;
+		if (doFrame)
+		{
+			stereo.index = j;
+			stereo.time = m_sim.t0 + t;
+			stereo.robot = truth;
+			stereo.frame = renderer->render(truth, t, imageRng);
+			stereo.edges = edgeList->visible(
+				stereo.frame.leftCamera, stereo.frame.depth, stereo.frame.rightDepth);
+			stereo.observation = stereoWriter->write(j, stereo.time, stereo.frame, stereo.edges);
+		}
 		// Beacons first, at the scan's time: the pipeline makes one step of both.
-		if (scan.beacons) res.beaconMeasurements += scan.beacons->sensedData.size();
 		if (m_sim.format == 1)
 		{
 			mrpt::obs::CSensoryFrame sf;
 			if (scan.beacons) sf.insert(scan.beacons);
-			sf.insert(scan.observation);
+			if (scan.observation) sf.insert(scan.observation);
+			if (stereo.observation) sf.insert(stereo.observation);
 			arch << sf;
 		}
 		else
 		{
 			if (scan.beacons) arch << *scan.beacons;
-			arch << *scan.observation;
+			if (scan.observation) arch << *scan.observation;
+			if (stereo.observation) arch << *stereo.observation;
 		}
-		gt << tumRow(scan.time, scan.robot);
-		if (onScan) onScan(scan);
-		if (onProgress) onProgress(static_cast<double>(k + 1) / static_cast<double>(nScans));
-		res.scans++;
+		gt << tumRow(m_sim.t0 + t, truth);
+		if (doScan)
+		{
+			if (onScan) onScan(scan);
+			res.scans++;
+			k++;
+		}
+		if (doFrame)
+		{
+			if (m_onStereo) m_onStereo(stereo);
+			res.stereoFrames++;
+			j++;
+		}
 		res.duration = t;
+		if (onProgress)
+			onProgress(static_cast<double>(k + j) / static_cast<double>(nScans + nFrames));
 	}
+	if (stereoWriter) stereoWriter->finish();
 	if (m_sim.format == 2 && !pairs) odometryUntil(res.duration + odoPeriod);
 	res.pathLength = m_trajectory->length();
 	if (!gt) throw std::runtime_error("error writing '" + groundTruthPath + "'");

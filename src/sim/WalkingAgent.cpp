@@ -6,6 +6,12 @@
 
 namespace featloc
 {
+namespace
+{
+// [m] a person's proportions for the camera (the laser sees only 2-D).
+constexpr double kHip = 0.85, kShoulder = 1.5, kHeight = 1.72;
+}  // namespace
+
 WalkingAgent::WalkingAgent(Params params) : m_params(std::move(params))
 {
 	const auto& w = m_params.waypoints;
@@ -103,6 +109,7 @@ void WalkingAgent::shapesAt(double t, std::vector<CircleShape>& out) const
 	{
 		c.centre = st.position;
 		c.radius = m_params.bodyRadius;
+		c.top = kHeight;
 		out.push_back(c);
 		return;
 	}
@@ -120,7 +127,29 @@ void WalkingAgent::shapesAt(double t, std::vector<CircleShape>& out) const
 		c.centre = {st.position.x + along * ch - across * sh,
 			st.position.y + along * sh + across * ch};
 		c.radius = m_params.legRadius;
+		c.top = kHip;
 		out.push_back(c);
 	}
+}
+
+void WalkingAgent::cameraShapesAt(double t, std::vector<CircleShape>& out) const
+{
+	shapesAt(t, out);
+	if (m_params.shape == Shape::Body) return;
+	const State st = stateAt(t);
+	CircleShape c;
+	c.texture = m_params.texture;
+	c.object = m_params.name;
+	c.centre = st.position;
+	// Torso as wide as the legs' stance, and a head.
+	c.radius = std::max(m_params.legSeparation / 2 + m_params.legRadius, 0.12);
+	c.bottom = kHip;
+	c.top = kShoulder;
+	out.push_back(c);
+	c.radius = 0.1;
+	c.bottom = kShoulder;
+	c.top = kHeight;
+	c.texture = "plain";
+	out.push_back(c);
 }
 }  // namespace featloc

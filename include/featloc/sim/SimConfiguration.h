@@ -7,6 +7,7 @@
 #include "featloc/sim/SimOdometryOptions.h"
 #include "featloc/sim/SimWorld.h"
 #include "featloc/sim/SimulationOptions.h"
+#include "featloc/sim/StereoCameraOptions.h"
 
 namespace featloc
 {
@@ -19,6 +20,7 @@ struct SimConfiguration
 	LaserOptions laser;
 	SimOdometryOptions odometry;
 	BeaconSensorOptions beacons;
+	StereoCameraOptions stereo;
 	SimWorld world;
 
 	/** Throws ConfigError on a bad value (unknown keys are checked by the

@@ -15,8 +15,10 @@ namespace featloc
  *
  * World file sections (ini, or YAML with the same names, see
  * doc/simulator.md):
- *   [Wall.<name>]     polyline = [x y; x y; ...], closed = false, texture
- *   [Obstacle.<name>] polygon = [x y; ...] or circle = [cx cy r], texture
+ *   [Wall.<name>]     polyline = [x y; x y; ...], closed = false, texture,
+ *                     bottom, height, posters, patches, patch_texture, doors
+ *   [Obstacle.<name>] polygon = [x y; ...] or circle = [cx cy r], texture,
+ *                     height
  *   [Agent.<name>]    shape = legs|body, waypoints = [...], speed, pause,
  *                     mode = loop|pingpong|once, start_time, sizes */
 class SimWorld
@@ -34,6 +36,8 @@ class SimWorld
 
 	/** Static circles plus every agent's circles at time t. */
 	void circlesAt(double t, std::vector<CircleShape>& out) const;
+	/** The same as the camera sees them: people with torso and head. */
+	void cameraCirclesAt(double t, std::vector<CircleShape>& out) const;
 
 	/** Distance from p to the nearest static wall or obstacle [m]. */
 	double clearance(const mrpt::math::TPoint2D& p) const;

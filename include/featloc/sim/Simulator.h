@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <mrpt/obs/CObservationBearingRange.h>
+#include <mrpt/obs/CObservationStereoImages.h>
 
 #include "featloc/sim/BeaconSensorOptions.h"
 #include "featloc/sim/LaserOptions.h"
@@ -17,6 +18,9 @@
 #include "featloc/sim/SimOdometryOptions.h"
 #include "featloc/sim/SimWorld.h"
 #include "featloc/sim/SimulationOptions.h"
+#include "featloc/sim/StereoCameraOptions.h"
+#include "featloc/sim/StereoRenderer.h"
+#include "featloc/sim/VisibleEdges.h"
 
 namespace featloc
 {
@@ -32,6 +36,17 @@ struct SimulatedScan
 	mrpt::obs::CObservation2DRangeScan::Ptr observation;  //!< as written
 	/** The beacons seen with the scan (nullptr without [Beacons]). */
 	mrpt::obs::CObservationBearingRange::Ptr beacons;
+};
+
+/** One simulated stereo pair, with its exact geometry. */
+struct SimulatedStereo
+{
+	size_t index = 0;
+	double time = 0;  //!< [s] absolute
+	mrpt::poses::CPose2D robot;	 //!< true robot pose
+	StereoFrame frame;
+	std::vector<VisibleEdge> edges;
+	mrpt::obs::CObservationStereoImages::Ptr observation;  //!< as written
 };
 
 /** featloc-sim's engine: drives the robot along its path, casts the laser
@@ -53,6 +68,7 @@ class Simulator
 		size_t odometryReadings = 0;  //!< format #2
 		size_t actions = 0;	 //!< format #1
 		size_t beaconMeasurements = 0;	//!< range-bearing measurements
+		size_t stereoFrames = 0;
 		double duration = 0;  //!< [s] from the first to the last scan
 		double pathLength = 0;	//!< [m] driven by the robot
 	};
@@ -60,10 +76,17 @@ class Simulator
 	Simulator(
 		SimWorld world, RobotPathOptions robot, LaserOptions laser,
 		SimOdometryOptions odometry, SimulationOptions simulation,
-		BeaconSensorOptions beacons = {});
+		BeaconSensorOptions beacons = {}, StereoCameraOptions stereo = {});
 
-	/** Writes `rawlogPath` and `groundTruthPath`; `onScan` (optional) sees
-	 * every scan. */
+	/** Called with every stereo pair (after its files are written). */
+	void onStereo(std::function<void(const SimulatedStereo&)> f) { m_onStereo = std::move(f); }
+
+	/** Writes `rawlogPath` and `groundTruthPath` (the robot at every scan
+	 * and stereo frame); `onScan` (optional) sees every scan. With a
+	 * stereo camera, also the images and the stereo ground truth
+	 * (StereoOutputWriter; its prefix is groundTruthPath without
+	 * ".gt.txt"). Scans and stereo frames at the same time share one
+	 * sensory frame (format #1). */
 	Result run(
 		const std::string& rawlogPath, const std::string& groundTruthPath,
 		const std::function<void(const SimulatedScan&)>& onScan = {},
@@ -97,6 +120,8 @@ class Simulator
 	SimOdometryOptions m_odometry;
 	SimulationOptions m_sim;
 	BeaconSensorOptions m_beacons;
+	StereoCameraOptions m_stereo;
+	std::function<void(const SimulatedStereo&)> m_onStereo;
 	mrpt::random::CRandomGenerator m_beaconRng;
 	std::unique_ptr<RobotTrajectory> m_trajectory;
 };

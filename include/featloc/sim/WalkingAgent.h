@@ -56,6 +56,10 @@ class WalkingAgent
 	State stateAt(double t) const;
 	/** Appends the circles the laser sees at time t. */
 	void shapesAt(double t, std::vector<CircleShape>& out) const;
+	/** Appends the cylinders a camera sees at time t: the laser's circles
+	 * (legs up to the hip, or the whole body) plus, for legs, a torso and a
+	 * head above them. */
+	void cameraShapesAt(double t, std::vector<CircleShape>& out) const;
 
    private:
 	struct Phase
