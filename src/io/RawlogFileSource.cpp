@@ -37,3 +37,23 @@ std::string RawlogFileSource::description() const
 	return buf;
 }
 }  // namespace featloc
+
+namespace featloc
+{
+std::string RawlogFileSource::imagesDirectory() const
+{
+	// MRPT's rule (CRawlog::detectImagesDirectory, used by RawLogViewer):
+	// "<name>_Images" (or _images, _IMAGES) beside the rawlog, else
+	// "Images". Not called directly: in MRPT 2.5.8 it joins folder and
+	// name without a separator ("/data/logImages").
+	namespace fs = std::filesystem;
+	const fs::path p(m_reader.path());
+	std::error_code ec;
+	for (const char* suffix : {"_Images", "_images", "_IMAGES"})
+	{
+		const fs::path d = p.parent_path() / (p.stem().string() + suffix);
+		if (fs::is_directory(d, ec)) return d.string();
+	}
+	return (p.parent_path() / "Images").string();
+}
+}  // namespace featloc

@@ -7,6 +7,7 @@
 
 #include "featloc/core/InputError.h"
 #include "featloc/pipeline/StepAssembler.h"
+#include "featloc/pipeline/StereoImagesHandler.h"
 
 namespace featloc
 {
@@ -77,6 +78,7 @@ RunStats Pipeline::run(
 	{
 		assembler = std::make_unique<StepAssembler>(
 			m_input, m_odometry, rawlogPath);
+		assembler->addHandler(std::make_unique<StereoImagesHandler>(source.imagesDirectory()));
 		RawlogEntry entry;
 		std::vector<StepSource> used;
 		std::vector<EstimationStep> ready;

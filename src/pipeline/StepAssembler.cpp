@@ -182,6 +182,7 @@ void StepAssembler::onObservation(
 	else if (!s.source)
 		s.source = obs.get();  // the outputs attach the pose after it
 	s.landmarks.insert(s.landmarks.end(), c.landmarks.begin(), c.landmarks.end());
+	if (c.stereo) s.stereo = c.stereo;
 	used.push_back({s.index, obs.get()});
 }
 

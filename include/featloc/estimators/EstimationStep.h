@@ -1,5 +1,6 @@
 #pragma once
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/obs_frwds.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
 
 #include <cstddef>
@@ -10,7 +11,7 @@
 namespace featloc
 {
 /** One observation frame to process: what the sensors saw at one time (a
- * 2-D scan, point landmarks, or both), with the robot motion since the
+ * 2-D scan, point landmarks, a stereo pair, or several), with the robot motion since the
  * previous step as measured by odometry. Steps come in time order; every
  * step gives one row of every output.
  *
@@ -40,5 +41,8 @@ struct EstimationStep
 	mrpt::poses::CPosePDFGaussian odometry;
 	/** Point landmarks observed in this frame (robot frame). */
 	std::vector<LandmarkObservation> landmarks;
+	/** A stereo pair of this frame (checked: calibration, images that
+	 * exist and decode), or null. */
+	std::shared_ptr<mrpt::obs::CObservationStereoImages> stereo;
 };
 }  // namespace featloc

@@ -32,6 +32,10 @@ class EntrySource
 
 	/** A short description for the console ("MRPT rawlog, 12.3 MB"). */
 	virtual std::string description() const = 0;
+	/** Where externally stored images of this source's observations are
+	 * (for a rawlog: MRPT's `<name>_Images` folder beside it); "" when the
+	 * source has none. */
+	virtual std::string imagesDirectory() const { return {}; }
 
 	/** The file source for `path`: a CARMEN log for .log / .log.gz names,
 	 * an MRPT rawlog otherwise. Validates it (see above). */

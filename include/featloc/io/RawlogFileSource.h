@@ -19,6 +19,7 @@ class RawlogFileSource : public EntrySource
 	double progress() const override;
 	std::string name() const override { return m_reader.path(); }
 	std::string description() const override;
+	std::string imagesDirectory() const override;
 
    private:
 	RawlogReader m_reader;

@@ -1,6 +1,7 @@
 #pragma once
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/obs_frwds.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <memory>
@@ -20,6 +21,8 @@ struct ObservationContribution
 	mrpt::obs::CObservation2DRangeScan::Ptr scan;
 	/** Point landmarks in the robot frame. */
 	std::vector<LandmarkObservation> landmarks;
+	/** A checked stereo pair. */
+	std::shared_ptr<mrpt::obs::CObservationStereoImages> stereo;
 	/** An absolute odometry reading (format #2 CObservationOdometry). */
 	std::optional<mrpt::poses::CPose2D> odometryReading;
 };

@@ -1,0 +1,107 @@
+#include "featloc/pipeline/StereoImagesHandler.h"
+
+#include <mrpt/obs/CObservationStereoImages.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+#include "featloc/core/InputError.h"
+
+namespace featloc
+{
+namespace
+{
+std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+/** The image's pixel size, loading it from its file when it is stored
+ * externally (made absolute in the observation on success). */
+cv::Size checkImage(
+	mrpt::img::CImage& img, const char* side, const std::string& imagesDir,
+	const std::string& where)
+{
+	if (!img.isExternallyStored())
+	{
+		if (img.isEmpty())
+			throw InputError(where + ": the " + side + " image of the stereo pair is empty");
+		return {static_cast<int>(img.getWidth()), static_cast<int>(img.getHeight())};
+	}
+	namespace fs = std::filesystem;
+	fs::path file(img.getExternalStorageFile());
+	if (file.is_relative()) file = fs::path(imagesDir) / file;
+	std::error_code ec;
+	if (!fs::is_regular_file(file, ec))
+		throw InputError(
+			where + ": the " + side + " image file '" + file.string() +
+			"' is missing (external images are looked up in the rawlog's " +
+			"<name>_Images folder: '" + imagesDir + "')");
+	const cv::Mat m = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+	if (m.empty())
+		throw InputError(
+			where + ": the " + side + " image file '" + file.string() +
+			"' does not decode as an image");
+	img.setExternalStorage(fs::absolute(file, ec).string());
+	return m.size();
+}
+
+void checkCamera(const mrpt::img::TCamera& c, const char* side, const std::string& where)
+{
+	const bool ok = std::isfinite(c.fx()) && std::isfinite(c.fy()) && c.fx() > 0 && c.fy() > 0 &&
+		std::isfinite(c.cx()) && std::isfinite(c.cy()) && c.ncols > 0 && c.nrows > 0;
+	if (!ok)
+		throw InputError(
+			where + ": stereo observation without a calibration: " + side +
+			"Camera needs focal lengths > 0 and an image size (fx " + std::to_string(c.fx()) +
+			", fy " + std::to_string(c.fy()) + ", " +
+			sizeText(static_cast<int>(c.ncols), static_cast<int>(c.nrows)) + ")");
+}
+}  // namespace
+
+StereoImagesHandler::StereoImagesHandler(std::string imagesDirectory)
+	: m_imagesDirectory(std::move(imagesDirectory))
+{
+}
+
+const mrpt::rtti::TRuntimeClassId* StereoImagesHandler::observationClass() const
+{
+	return CLASS_ID(mrpt::obs::CObservationStereoImages);
+}
+
+bool StereoImagesHandler::handle(
+	const mrpt::obs::CObservation::Ptr& o, size_t, const std::string& w,
+	ObservationContribution& out)
+{
+	auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(o);
+	const std::string where = w + " (stereo '" + obs->sensorLabel + "')";
+	if (obs->timestamp == INVALID_TIMESTAMP)
+		throw InputError(where + ": the stereo observation has no valid timestamp");
+	if (!obs->hasImageRight)
+		throw InputError(where + ": the stereo observation has no right image");
+	// MRPT 2.5.8 loads a default 640x480 calibration (fx 200) when none
+	// was set; a zero size or focal length is what a missing one looks like
+	// after deserialisation of a hand-made observation.
+	checkCamera(obs->leftCamera, "left", where);
+	checkCamera(obs->rightCamera, "right", where);
+	const auto& rp = obs->rightCameraPose;
+	const double baseline = std::sqrt(rp.x() * rp.x() + rp.y() * rp.y() + rp.z() * rp.z());
+	if (!std::isfinite(baseline) || baseline <= 0)
+		throw InputError(
+			where + ": stereo observation without a calibration: rightCameraPose gives no "
+					"baseline (the right camera must be offset from the left one)");
+	const cv::Size left = checkImage(obs->imageLeft, "left", m_imagesDirectory, where);
+	const cv::Size right = checkImage(obs->imageRight, "right", m_imagesDirectory, where);
+	if (left != right)
+		throw InputError(
+			where + ": left image " + sizeText(left.width, left.height) + " and right image " +
+			sizeText(right.width, right.height) + " differ in size");
+	const auto& lc = obs->leftCamera;
+	if (left.width != static_cast<int>(lc.ncols) || left.height != static_cast<int>(lc.nrows))
+		throw InputError(
+			where + ": the images are " + sizeText(left.width, left.height) +
+			" but the calibration (leftCamera) is for " +
+			sizeText(static_cast<int>(lc.ncols), static_cast<int>(lc.nrows)));
+	out.stereo = obs;
+	m_pairs++;
+	return true;
+}
+}  // namespace featloc
