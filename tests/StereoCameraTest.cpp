@@ -8,6 +8,7 @@
 #include <mrpt/obs/CObservationStereoImages.h>
 #include <mrpt/serialization/CArchive.h>
 #include <opencv2/calib3d.hpp>
+#include <opencv2/features2d.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -346,4 +347,69 @@ TEST(StereoCamera, StereoObservationWithoutCalibrationIsAnInputError)
 		o.rightCameraPose = mrpt::poses::CPose3DQuat();
 	});
 	EXPECT_NE(r2.output.find("rightCameraPose gives no baseline"), std::string::npos) << r2.output;
+}
+
+namespace
+{
+/** Median |dy| of ORB matches between two images (cross-checked, close
+ * descriptors): 0 for a perfectly rectified pair. */
+double medianOrbDy(const cv::Mat& left, const cv::Mat& right, size_t& matches)
+{
+	auto orb = cv::ORB::create(1500);
+	std::vector<cv::KeyPoint> kl, kr;
+	cv::Mat dl, dr;
+	orb->detectAndCompute(left, cv::noArray(), kl, dl);
+	orb->detectAndCompute(right, cv::noArray(), kr, dr);
+	cv::BFMatcher bf(cv::NORM_HAMMING, true);
+	std::vector<cv::DMatch> m;
+	bf.match(dl, dr, m);
+	std::vector<double> dy;
+	for (const auto& x : m)
+		if (x.distance < 40)
+			dy.push_back(std::abs(kl[static_cast<size_t>(x.queryIdx)].pt.y - kr[static_cast<size_t>(x.trainIdx)].pt.y));
+	matches = dy.size();
+	if (dy.empty()) return 1e9;
+	std::nth_element(dy.begin(), dy.begin() + static_cast<long>(dy.size() / 2), dy.end());
+	return dy[dy.size() / 2];
+}
+}  // namespace
+
+TEST(StereoImport, RealPairsBecomeRawlogsThatRunReads)
+{
+	const std::string import = FEATLOC_STEREO_IMPORT_EXE;
+	const std::string data = kSource + "/../shared/data/stereo/";
+	if (!fs::exists(data)) GTEST_SKIP() << "no " << data;
+	TempDir d;
+	for (const auto& [set, extra] : {std::pair<std::string, std::string>{"rtabmap-indoor-rect", ""},
+			 {"euroc-v1-pairs", " --rectify"}, {"euroc-v1-pairs", ""}})
+	{
+		const std::string out = d.file(set + (extra.empty() ? "" : "-rect") + ".rawlog");
+		const auto imp = runCommand(
+			shellQuote(import) + " " + shellQuote(data + set) + extra + " --out " + shellQuote(out));
+		ASSERT_EQ(imp.exitCode, 0) << imp.output;
+		const auto run = runCommand(
+			shellQuote(kRun) + " " + shellQuote(kSource + "/config.ini") + " -q --set Input:rawlog=" +
+			shellQuote(out) + " --set Evaluation:ground_truth= --set Pipeline:estimator=odometry --out " +
+			shellQuote(out + ".results"));
+		EXPECT_EQ(run.exitCode, 0) << set << extra << ": " << run.output;
+	}
+	// After rectification, matches between left and right lie on the same
+	// row; before it, EuRoC's lens and rotation put them rows apart.
+	for (int i = 0; i < 4; i++)
+	{
+		char name[64];
+		std::snprintf(name, sizeof(name), "STEREO_%06d_", i);
+		size_t n = 0, nRaw = 0;
+		const double dy = medianOrbDy(
+			cv::imread(d.file("euroc-v1-pairs-rect_Images/") + name + "left.png", cv::IMREAD_GRAYSCALE),
+			cv::imread(d.file("euroc-v1-pairs-rect_Images/") + name + "right.png", cv::IMREAD_GRAYSCALE), n);
+		const double dyRaw = medianOrbDy(
+			cv::imread(d.file("euroc-v1-pairs_Images/") + name + "left.png", cv::IMREAD_GRAYSCALE),
+			cv::imread(d.file("euroc-v1-pairs_Images/") + name + "right.png", cv::IMREAD_GRAYSCALE), nRaw);
+		EXPECT_GE(n, 50u) << "pair " << i;
+		EXPECT_LE(dy, 0.5) << "pair " << i << ": median |dy| of " << n << " ORB matches";
+		std::printf(
+			"[          ] EuRoC pair %d: ORB median |dy| %.3f px rectified (%zu matches), %.3f px raw\n",
+			i, dy, n, dyRaw);
+	}
 }
