@@ -413,3 +413,18 @@ TEST(StereoImport, RealPairsBecomeRawlogsThatRunReads)
 			i, dy, n, dyRaw);
 	}
 }
+
+TEST(StereoCamera, ShippedStereoRawlogIsReproducedByteForByte)
+{
+	TempDir d;
+	const auto r = runCommand(
+		shellQuote(kSim) + " " + shellQuote(kSource + "/worlds/moon-lab.ini") + " -q --out " +
+		shellQuote(d.file("moon-lab")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const std::string shipped = kSource + "/rawlogs/stereo/";
+	for (const std::string f :
+		 {"moon-lab.rawlog", "moon-lab.gt.txt", "moon-lab.camera.gt.txt", "moon-lab.edges.gt.txt",
+			 "moon-lab_Images/STEREO_000015_left.png", "moon-lab_Images/STEREO_000015_right.png",
+			 "moon-lab_GT/STEREO_000015_disparity.png"})
+		EXPECT_TRUE(readFile(d.file(f)) == readFile(shipped + f)) << f << " differs from the shipped one";
+}
