@@ -22,6 +22,7 @@
 #include "featloc/eval/TrajectoryFile.h"
 #include "featloc/io/StereoCalibrationFile.h"
 #include "featloc/registerClasses.h"
+#include "featloc/sim/StereoOutputWriter.h"
 
 namespace featloc
 {
@@ -265,9 +266,7 @@ int StereoImportApp::main(int argc, char** argv)
 			left = rl;
 			right = rr;
 		}
-		char name[64];
-		std::snprintf(name, sizeof(name), "_%06zu", i);
-		const std::string stem = argLabel.getValue() + name;
+		const std::string stem = StereoOutputWriter::fileStem(argLabel.getValue(), i);
 		const std::string leftName = stem + "_left.png", rightName = stem + "_right.png";
 		if (!cv::imwrite((imagesDir / leftName).string(), left.asCvMatRef()) ||
 			!cv::imwrite((imagesDir / rightName).string(), right.asCvMatRef()))

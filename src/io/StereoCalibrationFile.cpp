@@ -88,7 +88,6 @@ OneCamera readCamera(const std::string& path, const std::string& name)
 	{
 		const auto K = require(fs, path, "camera_matrix", 9);
 		const auto d = require(fs, path, "distortion_coefficients", 4);
-		const auto w = require(fs, path, "image_width", 0);
 		int width = 0, height = 0;
 		fs["image_width"] >> width;
 		fs["image_height"] >> height;
@@ -104,7 +103,6 @@ OneCamera readCamera(const std::string& path, const std::string& name)
 			c.camera.setDistortionPlumbBob(d[0], d[1], d[2], d[3], d.size() > 4 ? d[4] : 0);
 		if (!fs["projection_matrix"].empty())
 			c.projectionTx = require(fs, path, "projection_matrix", 12)[3];
-		(void)w;
 	}
 	if (!(c.camera.fx() > 0 && c.camera.fy() > 0))
 		throw InputError("stereo calibration '" + path + "': focal lengths must be > 0");

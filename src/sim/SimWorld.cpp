@@ -179,7 +179,7 @@ void loadObstacle(
 	double sAt = 0;
 	for (size_t i = 1; i < pts.size(); i++)
 	{
-		w.addSegment({pts[i - 1], pts[i], texture, s, 0, top, sAt, {}});
+		w.addSegment({pts[i - 1], pts[i], texture, s, 0, top, sAt, {}, true});
 		sAt += std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
 	}
 }

@@ -43,9 +43,7 @@ StereoOutputWriter::StereoOutputWriter(
 mrpt::obs::CObservationStereoImages::Ptr StereoOutputWriter::write(
 	size_t frame, double time, const StereoFrame& f, const std::vector<VisibleEdge>& edges)
 {
-	char base[64];
-	std::snprintf(base, sizeof(base), "_%06zu", frame);
-	const std::string stem = m_cam.label + base;
+	const std::string stem = fileStem(m_cam.label, frame);
 	const std::string ext = "." + m_cam.image_format;
 	const std::string leftName = stem + "_left" + ext, rightName = stem + "_right" + ext;
 	for (const auto& [name, img] : {std::pair{leftName, &f.left}, std::pair{rightName, &f.right}})
@@ -87,6 +85,13 @@ mrpt::obs::CObservationStereoImages::Ptr StereoOutputWriter::write(
 	obs->imageLeft.setExternalStorage(leftName);
 	obs->imageRight.setExternalStorage(rightName);
 	return obs;
+}
+
+std::string StereoOutputWriter::fileStem(const std::string& label, size_t frame)
+{
+	char number[32];
+	std::snprintf(number, sizeof(number), "_%06zu", frame);
+	return label + number;
 }
 
 void StereoOutputWriter::finish()

@@ -24,8 +24,8 @@ struct Sampler
 	const float* texels = nullptr;
 	int size = 1, mask = 0;
 	double invTexel = 1;
-	// Set by setU(): the two texel columns around u and the weight between.
-	int x0 = 0, x1 = 0;
+	// Set by setU(): the texel column left of u and the weight to the next.
+	int x0 = 0;
 	float ax = 0;
 
 	Sampler() = default;
@@ -44,21 +44,25 @@ struct Sampler
 		const auto xi = static_cast<int64_t>(x);
 		ax = static_cast<float>(x - static_cast<double>(xi));
 		x0 = static_cast<int>(xi & mask);
-		x1 = (x0 + 1) & mask;
+	}
+	/** Bilinear between texel columns c0, c0 + 1 and rows r0, r0 + 1
+	 * (wrapped). Column-major tiles: down an image column v varies, so the
+	 * texels read are contiguous. */
+	float bilinear(int c0, float wc, int r0, float wr) const
+	{
+		const int r1 = (r0 + 1) & mask;
+		const float* col0 = texels + c0 * size;
+		const float* col1 = texels + ((c0 + 1) & mask) * size;
+		const float a = col0[r0] + wc * (col1[r0] - col0[r0]);
+		const float b = col0[r1] + wc * (col1[r1] - col0[r1]);
+		return a + wr * (b - a);
 	}
 	float atV(double v) const
 	{
 		const double y = v * invTexel - 0.5 + kShift;
 		const auto yi = static_cast<int64_t>(y);
-		const float ay = static_cast<float>(y - static_cast<double>(yi));
-		const int y0 = static_cast<int>(yi & mask), y1 = (y0 + 1) & mask;
-		// Column-major tiles: down an image column v varies, so the
-		// texels read are contiguous.
-		const float* c0 = texels + x0 * size;
-		const float* c1 = texels + x1 * size;
-		const float a = c0[y0] + ax * (c1[y0] - c0[y0]);
-		const float b = c0[y1] + ax * (c1[y1] - c0[y1]);
-		return a + ay * (b - a);
+		return bilinear(
+			x0, ax, static_cast<int>(yi & mask), static_cast<float>(y - static_cast<double>(yi)));
 	}
 	float at(double u, double v)
 	{
@@ -72,15 +76,9 @@ struct Sampler
 	 * row pass steps them with integer additions. */
 	float atFixed(int64_t x, int64_t y) const
 	{
-		const float fx = static_cast<float>(x & 0xffff) * (1.0f / 65536);
-		const float fy = static_cast<float>(y & 0xffff) * (1.0f / 65536);
-		const int cx0 = static_cast<int>((x >> 16) & mask), cx1 = (cx0 + 1) & mask;
-		const int y0 = static_cast<int>((y >> 16) & mask), y1 = (y0 + 1) & mask;
-		const float* c0 = texels + cx0 * size;
-		const float* c1 = texels + cx1 * size;
-		const float a = c0[y0] + fx * (c1[y0] - c0[y0]);
-		const float b = c0[y1] + fx * (c1[y1] - c0[y1]);
-		return a + fy * (b - a);
+		return bilinear(
+			static_cast<int>((x >> 16) & mask), static_cast<float>(x & 0xffff) * (1.0f / 65536),
+			static_cast<int>((y >> 16) & mask), static_cast<float>(y & 0xffff) * (1.0f / 65536));
 	}
 };
 
@@ -121,9 +119,14 @@ const std::vector<float>& normalQuantiles()
 	return table;
 }
 
-bool startsWith(const std::string& s, const char* prefix)
+/** [m] what one pixel covers on a face seen at depth t, fx pixels per
+ * unit, hit at incidence cosine cosInc: the geometric mean of its extent
+ * across (t / fx) and along the surface (stretched by 1 / cosInc, at most
+ * 8 times), so that grazing faces blur along but not across. */
+double faceFootprint(double t, double fx, double cosInc)
 {
-	return s.rfind(prefix, 0) == 0;
+	const double across = t / fx;
+	return std::sqrt(across * std::min(across / std::max(cosInc, 1e-3), 8 * across));
 }
 
 std::shared_ptr<const SurfaceMaterial> materialOf(
@@ -168,7 +171,6 @@ StereoRenderer::StereoRenderer(const SimWorld& world, const StereoCameraOptions&
 		for (const auto& p : s.patches)
 			patches.push_back(materialOf(p.texture, s.object, "posters/patches/doors"));
 		m_patchMaterials.push_back(std::move(patches));
-		m_solid.push_back(startsWith(s.object, "Obstacle."));
 	}
 	for (const auto& c : world.circles()) materialOf(c.texture, c.object, "texture");
 	for (const auto& a : world.agents()) materialOf(a.params().texture, a.params().name, "texture");
@@ -317,6 +319,18 @@ void StereoRenderer::renderLevel(
 			s.rowA = m_cyLevel + fy * (oz - top) / s.tNear;
 			s.rowB = m_cyLevel + fy * (oz - bottom) / s.tNear;
 		};
+		// The top at height `top` seen between entry tNear and exit tFar.
+		auto addCap = [&](double top, double tNear, double tFar, const SurfaceMaterial* m) {
+			Span s;
+			s.cap = true;
+			s.tNear = tNear;
+			s.tFar = tFar;
+			s.top = top;
+			s.material = m;
+			s.rowA = m_cyLevel + fy * (oz - top) / tFar;
+			s.rowB = m_cyLevel + fy * (oz - top) / tNear;
+			spans.push_back(s);
+		};
 		for (size_t i = 0; i < segs.size(); i++)
 		{
 			const auto& sg = segs[i];
@@ -332,13 +346,11 @@ void StereoRenderer::renderLevel(
 			s.tNear = s.tFar = tHit;
 			s.segment = static_cast<int>(i);
 			s.u = sg.sStart + lambda * len;
-			const double cosInc = std::abs(den) / (dirNorm * len);
-			const double across = tHit / fx;
-			s.footprint = std::sqrt(across * std::min(across / std::max(cosInc, 1e-3), 8 * across));
+			s.footprint = faceFootprint(tHit, fx, std::abs(den) / (dirNorm * len));
 			s.material = m_segmentMaterials[i].get();
 			faceRows(s, sg.bottom, sg.top);
 			spans.push_back(s);
-			if (m_solid[i]) solidHits.emplace_back(tHit, static_cast<int>(i));
+			if (sg.solid) solidHits.emplace_back(tHit, static_cast<int>(i));
 		}
 		// Tops of solid obstacles below the camera: between the ray's entry
 		// into the outline and its exit.
@@ -353,16 +365,9 @@ void StereoRenderer::renderLevel(
 				{
 					const auto& sb = segs[static_cast<size_t>(solidHits[b].second)];
 					if (sb.object != sa.object) continue;
-					Span s;
-					s.cap = true;
-					s.tNear = solidHits[a].first;
-					s.tFar = solidHits[b].first;
-					s.top = sa.top;
-					s.segment = solidHits[a].second;
-					s.material = m_segmentMaterials[static_cast<size_t>(s.segment)].get();
-					s.rowA = m_cyLevel + fy * (oz - sa.top) / s.tFar;
-					s.rowB = m_cyLevel + fy * (oz - sa.top) / s.tNear;
-					spans.push_back(s);
+					addCap(
+						sa.top, solidHits[a].first, solidHits[b].first,
+						m_segmentMaterials[static_cast<size_t>(solidHits[a].second)].get());
 					a = b;	// the exit is not an entry
 					break;
 				}
@@ -383,24 +388,11 @@ void StereoRenderer::renderLevel(
 			Span s;
 			s.tNear = s.tFar = t1;
 			s.u = std::atan2(hy, hx) * c.radius;
-			const double cosInc = std::abs(hx * dx + hy * dy) / (c.radius * dirNorm);
-			const double across = t1 / fx;
-			s.footprint = std::sqrt(across * std::min(across / std::max(cosInc, 1e-3), 8 * across));
+			s.footprint = faceFootprint(t1, fx, std::abs(hx * dx + hy * dy) / (c.radius * dirNorm));
 			s.material = circleMaterials[i];
 			faceRows(s, c.bottom, c.top);
 			spans.push_back(s);
-			if (c.top < oz)
-			{
-				Span capSpan;
-				capSpan.cap = true;
-				capSpan.tNear = t1;
-				capSpan.tFar = t2;
-				capSpan.top = c.top;
-				capSpan.material = circleMaterials[i];
-				capSpan.rowA = m_cyLevel + fy * (oz - c.top) / t2;
-				capSpan.rowB = m_cyLevel + fy * (oz - c.top) / t1;
-				spans.push_back(capSpan);
-			}
+			if (c.top < oz) addCap(c.top, t1, t2, circleMaterials[i]);
 		}
 		std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) {
 			return a.tNear < b.tNear;

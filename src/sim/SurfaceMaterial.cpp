@@ -138,7 +138,6 @@ class SurfaceMaterialBuilder
 		std::shared_ptr<SurfaceMaterial> m(new SurfaceMaterial());
 		m->m_name = s.name;
 		m->m_texel = s.texel;
-		m->m_mean = s.mean;
 		cv::Mat level = makeTile(s);
 		while (true)
 		{
@@ -179,23 +178,5 @@ int SurfaceMaterial::levelFor(double footprint) const
 	if (!(footprint > m_texel)) return 0;
 	const int l = static_cast<int>(std::lround(std::log2(footprint / m_texel)));
 	return std::clamp(l, 0, static_cast<int>(m_levels.size()) - 1);
-}
-
-float SurfaceMaterial::sample(double u, double v, double footprint) const
-{
-	const int li = levelFor(footprint);
-	const Level& l = m_levels[static_cast<size_t>(li)];
-	const double t = m_texel * static_cast<double>(1 << li);
-	const double x = u / t - 0.5, y = v / t - 0.5;
-	const double fx = std::floor(x), fy = std::floor(y);
-	const float ax = static_cast<float>(x - fx), ay = static_cast<float>(y - fy);
-	const int mask = l.size - 1;
-	const int x0 = static_cast<int>(static_cast<int64_t>(fx) & mask), x1 = (x0 + 1) & mask;
-	const int y0 = static_cast<int>(static_cast<int64_t>(fy) & mask), y1 = (y0 + 1) & mask;
-	const float* c0 = &l.texels[static_cast<size_t>(x0 * l.size)];
-	const float* c1 = &l.texels[static_cast<size_t>(x1 * l.size)];
-	const float a = c0[y0] + ax * (c1[y0] - c0[y0]);
-	const float b = c0[y1] + ax * (c1[y1] - c0[y1]);
-	return a + ay * (b - a);
 }
 }  // namespace featloc

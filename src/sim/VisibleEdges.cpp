@@ -70,14 +70,14 @@ VisibleEdges::VisibleEdges(const SimWorld& world, const StereoCameraOptions& cam
 	for (const auto& name : order)
 	{
 		const auto& poly = objects[name];
+		const bool closedLoop = poly.size() > 1 &&
+			std::hypot(poly.front()->a.x - poly.back()->b.x, poly.front()->a.y - poly.back()->b.y) < 1e-9;
 		// Ends and corners: a joint where the direction does not change
 		// (a straight polyline through a point) is no edge.
 		for (size_t i = 0; i <= poly.size(); i++)
 		{
 			const WallSegment* before = i > 0 ? poly[i - 1] : nullptr;
 			const WallSegment* after = i < poly.size() ? poly[i] : nullptr;
-			const bool closedLoop = poly.size() > 1 &&
-				std::hypot(poly.front()->a.x - poly.back()->b.x, poly.front()->a.y - poly.back()->b.y) < 1e-9;
 			if (closedLoop && i == poly.size()) break;	// the first point again
 			if (closedLoop && i == 0) before = poly.back();
 			if (before && after)

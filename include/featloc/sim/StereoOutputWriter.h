@@ -40,6 +40,10 @@ class StereoOutputWriter
 		size_t frame, double time, const StereoFrame& f, const std::vector<VisibleEdge>& edges);
 
 	const std::string& imagesDir() const { return m_imagesDir; }
+	/** "<label>_<frame, 6 digits>": the stem of a pair's files
+	 * (`_left.png`, `_right.png`, `_disparity.png` follow). featloc-stereo-
+	 * import names imported pairs the same way. */
+	static std::string fileStem(const std::string& label, size_t frame);
 	/** Throws when a ground-truth stream failed. */
 	void finish();
 

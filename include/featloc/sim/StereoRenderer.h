@@ -91,11 +91,9 @@ class StereoRenderer
 	bool m_warp = false;
 	cv::Mat m_mapX, m_mapY;	 //!< real (distorted) pixel -> level pixel
 	cv::Mat m_idealX, m_idealY, m_idealDepthScale;	//!< ideal pixel -> level pixel, 1/d.z
-	/** Per wall segment: its material, its patches' materials, whether it
-	 * outlines a solid obstacle (which has a top face). */
+	/** Per wall segment: its material and its patches' materials. */
 	std::vector<std::shared_ptr<const SurfaceMaterial>> m_segmentMaterials;
 	std::vector<std::vector<std::shared_ptr<const SurfaceMaterial>>> m_patchMaterials;
-	std::vector<bool> m_solid;
 	/** Buffers reused from frame to frame (fresh megabyte-sized buffers
 	 * every frame cost more in page faults than the rendering itself), so
 	 * one renderer must not render in two threads at once. */

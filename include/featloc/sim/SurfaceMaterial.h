@@ -28,12 +28,6 @@ class SurfaceMaterial
 
 	const std::string& name() const { return m_name; }
 	double texelSize() const { return m_texel; }	//!< [m] at level 0
-	double meanGrey() const { return m_mean; }
-
-	/** Grey level at surface coordinates (u, v) [m] (u along the surface,
-	 * v up), averaged over a footprint of about `footprint` metres
-	 * (bilinear within the mip level that fits). */
-	float sample(double u, double v, double footprint) const;
 
 	/** One mip level: side length (power of two) and texels,
 	 * column-major (texels[u * size + v]: a renderer walking down an image
@@ -51,7 +45,6 @@ class SurfaceMaterial
 	SurfaceMaterial() = default;
 	std::string m_name;
 	double m_texel = 0.004;
-	double m_mean = 128;
 	std::vector<Level> m_levels;
 
 	friend class SurfaceMaterialBuilder;

@@ -24,5 +24,8 @@ struct WallSegment
 	double sStart = 0;
 	/** Patches of the whole object (s in polyline coordinates). */
 	std::vector<SurfacePatch> patches;
+	/** Outline of a solid obstacle (a camera above it sees its top), not a
+	 * wall one can stand on either side of. */
+	bool solid = false;
 };
 }  // namespace featloc
