@@ -99,8 +99,16 @@ std::vector<ImagePair> findPairs(const fs::path& dir, std::string& layout)
 		const auto left = readTimesCsv(euroc / "cam0" / "data.csv");
 		const auto right = readTimesCsv(euroc / "cam1" / "data.csv");
 		for (const auto& [name, t] : left)
-			if (right.count(name))
-				pairs.push_back({euroc / "cam0" / "data" / name, euroc / "cam1" / "data" / name, name, t});
+		{
+			if (!right.count(name)) continue;
+			const fs::path l = euroc / "cam0" / "data" / name, r = euroc / "cam1" / "data" / name;
+			for (const auto& [csv, image] : {std::pair{"cam0", l}, std::pair{"cam1", r}})
+				if (!fs::exists(image))
+					throw InputError(
+						(euroc / csv / "data.csv").string() + " names '" + name + "', which is not in " +
+						(euroc / csv / "data").string());
+			pairs.push_back({l, r, name, t});
+		}
 	}
 	else if (fs::is_directory(dir / "left") && fs::is_directory(dir / "right"))
 	{
@@ -167,7 +175,7 @@ int StereoImportApp::main(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argTimes(
 		"", "times", "CSV 'timestamp_ns,left file name' (EuRoC data.csv form)", false, "", "CSV", cmd);
 	TCLAP::ValueArg<std::string> argGt(
-		"", "ground-truth", "TUM file: rows at the frames' times go to OUT.gt.txt", false, "", "TUM", cmd);
+		"", "ground-truth", "TUM file: per frame, the nearest row within 5 ms goes to OUT.gt.txt", false, "", "TUM", cmd);
 	TCLAP::ValueArg<std::string> argLabel("", "label", "Sensor label", false, "STEREO", "NAME", cmd);
 	int exitCode = 0;
 	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
@@ -218,6 +226,52 @@ int StereoImportApp::main(int argc, char** argv)
 			throw InputError(
 				"pairs '" + pairs[i - 1].key + "' and '" + pairs[i].key +
 				"' have the same time: give --times");
+
+	// The ground truth is read before anything is written: a bad row
+	// stops the import with nothing half made.
+	std::vector<std::string> gtRows;
+	const fs::path outPath = argOut.getValue();
+	const std::string gtPath = (outPath.parent_path() / (outPath.stem().string() + ".gt.txt")).string();
+	if (argGt.isSet())
+	{
+		std::ifstream in(argGt.getValue());
+		if (!in) throw InputError("cannot read '" + argGt.getValue() + "'");
+		std::vector<std::pair<double, std::string>> gtAll;
+		std::string line;
+		size_t lineNo = 0;
+		while (std::getline(in, line))
+		{
+			lineNo++;
+			const auto first = line.find_first_not_of(" \t\r");
+			if (first == std::string::npos || line[first] == '#' || line[first] == '%') continue;
+			// TUM: t x y z qx qy qz qw; anything else is an error, not a
+			// row quietly left out of the ground truth.
+			std::istringstream ss(line);
+			double t = 0, v[7];
+			bool ok = static_cast<bool>(ss >> t);
+			for (double& x : v) ok = ok && static_cast<bool>(ss >> x);
+			if (!ok)
+				throw InputError(
+					argGt.getValue() + ":" + std::to_string(lineNo) +
+					": expected a TUM row 't x y z qx qy qz qw'");
+			gtAll.emplace_back(t, line);
+		}
+		// Per frame, the nearest row within 5 ms (Vicon and motion capture
+		// run at 100-200 Hz, cameras at 10-30 Hz).
+		for (const auto& p : pairs)
+		{
+			const std::pair<double, std::string>* best = nullptr;
+			for (const auto& row : gtAll)
+				if (std::abs(row.first - p.time) < 0.005 &&
+					(!best || std::abs(row.first - p.time) < std::abs(best->first - p.time)))
+					best = &row;
+			if (best) gtRows.push_back(best->second);
+		}
+		if (gtRows.empty())
+			throw InputError(
+				"'" + argGt.getValue() + "' has no row within 5 ms of any stereo frame's time (first frame at " +
+				std::to_string(pairs.front().time) + " s)");
+	}
 
 	mrpt::img::TStereoCamera params = calib.stereo;
 	mrpt::vision::CStereoRectifyMap rectifier;
@@ -285,37 +339,20 @@ int StereoImportApp::main(int argc, char** argv)
 		arch << obs;
 	}
 
-	size_t gtRows = 0;
-	const std::string gtPath = (out.parent_path() / (out.stem().string() + ".gt.txt")).string();
-	if (argGt.isSet())
+	if (!gtRows.empty())
 	{
-		std::ifstream in(argGt.getValue());
-		if (!in) throw InputError("cannot read '" + argGt.getValue() + "'");
 		std::ofstream gt(gtPath);
 		gt << "# featloc-stereo-import: rows of " << argGt.getValue()
 		   << " at the stereo frames' times (TUM: t x y z qx qy qz qw)\n";
-		std::string line;
-		while (std::getline(in, line))
-		{
-			if (line.empty() || line[0] == '#') continue;
-			std::istringstream ss(line);
-			double t = 0;
-			if (!(ss >> t)) continue;
-			for (const auto& p : pairs)
-				if (std::abs(p.time - t) < 0.005)
-				{
-					gt << line << "\n";
-					gtRows++;
-					break;
-				}
-		}
+		for (const auto& row : gtRows) gt << row << "\n";
+		if (!gt) throw std::runtime_error("cannot write '" + gtPath + "'");
 	}
 
 	std::printf(
 		"featloc-stereo-import: %zu pairs (%s), calibration %s (%s)%s\n  wrote %s\n    %s/\n",
 		pairs.size(), layout.c_str(), calibFiles.first.string().c_str(), calib.format.c_str(),
 		argRectify.getValue() ? ", rectified" : "", out.string().c_str(), imagesDir.string().c_str());
-	if (argGt.isSet()) std::printf("    %s (%zu ground-truth rows)\n", gtPath.c_str(), gtRows);
+	if (argGt.isSet()) std::printf("    %s (%zu ground-truth rows)\n", gtPath.c_str(), gtRows.size());
 	return 0;
 }
 }  // namespace featloc
