@@ -24,6 +24,7 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"steps", s.steps},
 		{"scans", s.scans},
 		{"scans_per_label", s.scansPerLabel},
+		{"stereo_pairs", s.stereoPairs},
 		{"odometry_readings", s.odometryReadings},
 		{"odometry_actions", s.odometryActions},
 		{"steps_without_odometry", s.stepsWithoutOdometry},

@@ -69,6 +69,7 @@ RunStats Pipeline::run(
 		m_odometry.covariance_check_window, m_odometry.covariance_check_quantile);
 
 	std::unique_ptr<StepAssembler> assembler;
+	const StereoImagesHandler* stereo = nullptr;  // owned by the assembler
 	auto elapsed = [&] {
 		return std::chrono::duration<double>(
 				   std::chrono::steady_clock::now() - t0)
@@ -78,7 +79,9 @@ RunStats Pipeline::run(
 	{
 		assembler = std::make_unique<StepAssembler>(
 			m_input, m_odometry, rawlogPath);
-		assembler->addHandler(std::make_unique<StereoImagesHandler>(source.imagesDirectory()));
+		auto stereoHandler = std::make_unique<StereoImagesHandler>(source.imagesDirectory());
+		stereo = stereoHandler.get();
+		assembler->addHandler(std::move(stereoHandler));
 		RawlogEntry entry;
 		std::vector<StepSource> used;
 		std::vector<EstimationStep> ready;
@@ -103,6 +106,7 @@ RunStats Pipeline::run(
 		for (const auto& step : ready) processStep(step, outputs, stats);
 		if (progress) progress->done(stats.steps);
 		copyAssemblerStats(*assembler, stats);
+		stats.stereoPairs = stereo->pairs();
 
 		if (stats.steps == 0 && !stats.interrupted)
 		{
@@ -129,6 +133,7 @@ RunStats Pipeline::run(
 	{
 		if (progress) progress->done(stats.steps);
 		if (assembler) copyAssemblerStats(*assembler, stats);
+		if (stereo) stats.stereoPairs = stereo->pairs();
 		stats.ok = false;
 		stats.error = e.what();
 		stats.wallTime = elapsed();

@@ -18,6 +18,7 @@ struct RunStats
 	size_t steps = 0;  //!< observation frames processed (= trajectory rows)
 	size_t scans = 0;  //!< steps that held a 2-D scan
 	std::map<std::string, size_t> scansPerLabel;  //!< every 2-D scan seen
+	size_t stereoPairs = 0;	 //!< checked CObservationStereoImages
 	size_t odometryReadings = 0;  //!< CObservationOdometry (format #2)
 	size_t odometryActions = 0;	 //!< CActionRobotMovement2D (format #1)
 	size_t stepsWithoutOdometry = 0;
