@@ -17,6 +17,8 @@
 #include "featloc/matchers/IdcMatcher.h"
 #include "featloc/matchers/PcmFeatureMatcher.h"
 #include "featloc/matchers/ScanMatcher.h"
+#include "featloc/stereo/StableVerticalLandmarks.h"
+#include "featloc/stereo/StereoLandmarkExtractor.h"
 
 namespace featloc
 {
@@ -34,6 +36,9 @@ void registerClasses()
 		mrpt::rtti::registerClass(CLASS_ID(PcmFeatureMatcher));
 		mrpt::rtti::registerClass(CLASS_ID(IdcMatcher));
 		mrpt::rtti::registerClass(CLASS_ID(CfIdcMatcher));
+
+		mrpt::rtti::registerClass(CLASS_ID(StereoLandmarkExtractor));
+		mrpt::rtti::registerClass(CLASS_ID(StableVerticalLandmarks));
 
 		mrpt::rtti::registerClass(CLASS_ID(PoseEstimator));
 		mrpt::rtti::registerClass(CLASS_ID(OdometryEstimator));

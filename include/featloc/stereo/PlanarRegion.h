@@ -1,0 +1,32 @@
+#pragma once
+#include <opencv2/core/mat.hpp>
+
+#include <string>
+
+#include "featloc/stereo/PlaneFit.h"
+
+namespace featloc
+{
+/** One reference plane (a wall of the map) as one stereo frame sees it:
+ * where it was predicted (Moon, Miura & Shirai 1999, section 2.3.2), the
+ * disparity pixels found on it (2.3.4) and the line fitted to them. */
+struct PlanarRegion
+{
+	size_t wall = 0;  //!< index in the map
+	/** Predicted left-image columns of the wall's two ends (a, b), and
+	 * their standard deviations from the robot's uncertainty (eq. 5) and
+	 * the image's (sigma_img). An end behind the camera or clipped by the
+	 * near limit is not visible. */
+	double uA = 0, uB = 0, sigmaUA = 0, sigmaUB = 0;
+	bool aInView = false, bInView = false;	//!< the end's 3-sigma window is inside the image
+	int uMin = 0, uMax = -1;  //!< columns searched (eq. 6)
+	/** Left-image pixels whose disparity is within 3 sigma_d of the
+	 * plane's (eqs. 9-10): 255, else 0. Full image size. */
+	cv::Mat mask;
+	size_t pixels = 0;
+	bool fitted = false;
+	std::string reason;	 //!< why not fitted
+	PlaneFit fit;
+	double rms = 0;	 //!< [m] weighted RMS across the plane
+};
+}  // namespace featloc

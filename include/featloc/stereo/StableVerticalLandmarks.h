@@ -1,0 +1,74 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "featloc/io/WallMapFile.h"
+#include "featloc/stereo/BoundarySearch.h"
+#include "featloc/stereo/PlanarRegionExtractor.h"
+#include "featloc/stereo/SegmentStereoMatcher.h"
+#include "featloc/stereo/StereoLandmarkExtractor.h"
+#include "featloc/stereo/VerticalSegmentDetector.h"
+
+namespace featloc
+{
+/** Moon, Miura & Shirai (IROS 1999), "On-line selection of stable visual
+ * landmarks under uncertainty", sections 2-4, on one stereo pair:
+ *
+ *  1. vertical segments in both images (VerticalSegmentDetector, 2.1),
+ *     matched by dynamic programming (SegmentStereoMatcher, 2.1);
+ *  2. an SAD disparity image, 15x15, both directions with the left-right
+ *     check of eq. (2): OpenCV's StereoBM with disp12MaxDiff 1; a match
+ *     whose disparity the image does not support (median of the valid
+ *     disparities in a band around the left segment more than
+ *     disparity_tolerance_px away, or too few valid ones) is dropped (2.2);
+ *  3. the map's walls as reference planes: predicted region, disparity
+ *     pixels and line fit (PlanarRegionExtractor, 2.3);
+ *  4. the matches on a plane (most of the band in its region; of several
+ *     consistent planes the shortest wall: a whiteboard rather than the
+ *     wall it hangs on) (2.4), each constrained to it by the Kalman update
+ *     of eqs. (12)-(14) (PlaneFit::constrain, 3.1);
+ *  5. the plane's boundary at a visible end (BoundarySearch, 3.2), put on
+ *     the plane the same way, and each feature's position relative to it,
+ *     eqs. (15)-(17) (3.3);
+ *  6. selection (4): a feature within boundary_sigmas sigma of the
+ *     boundary (|d_p| < 3 sigma_dp), or whose left and right segments'
+ *     length similarity (eq. 18) is below min_length_similarity, is not a
+ *     landmark; the reason is kept.
+ * Parameters: [StereoLandmarks.StableVerticalLandmarks] (doc/config-reference.md). */
+class StableVerticalLandmarks : public StereoLandmarkExtractor
+{
+	DEFINE_MRPT_OBJECT(StableVerticalLandmarks, featloc)
+
+   public:
+	struct Options
+	{
+		std::string map;  //!< wall map file (world file or segment list)
+		VerticalSegmentDetector::Options segments;
+		SegmentStereoMatcher::Options matching;
+		int block_size = 15;  //!< SAD window (paper: 15x15)
+		int num_disparities = 64;  //!< SAD search range, a multiple of 16
+		int uniqueness_ratio = 5;  //!< StereoBM's, [%]
+		int texture_threshold = 10;	 //!< StereoBM's
+		double disparity_tolerance_px = 1.5;
+		double sigma_img = 0.5;	 //!< [px] paper, 2.3.1
+		double window_sigmas = 3;  //!< paper, eq. (6)
+		unsigned int min_plane_pixels = 300;
+		double min_height = 0.1, max_height = 2.4;	//!< [m] band of wall points used (2.3)
+		double boundary_sigmas = 3;	 //!< paper, section 4
+		bool snap_to_segment = true;
+		double min_length_similarity = 0.7;	 //!< paper, section 4 (threshold not given)
+	};
+	Options options;
+	std::vector<MapWall> walls;	 //!< loaded from options.map
+
+	void loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section) override;
+	void saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const override;
+
+	StereoLandmarkFrame process(
+		const cv::Mat& left, const cv::Mat& right, const StereoHead& head,
+		const mrpt::poses::CPosePDFGaussian& robot) const override;
+
+	/** The SAD disparity image of stage 2 alone (CV_32F, <= 0 invalid). */
+	cv::Mat disparity(const cv::Mat& left, const cv::Mat& right) const;
+};
+}  // namespace featloc

@@ -1,0 +1,39 @@
+#pragma once
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+#include <mrpt/rtti/CObject.h>
+#include <opencv2/core/mat.hpp>
+
+#include <string>
+
+#include "featloc/stereo/StereoHead.h"
+#include "featloc/stereo/StereoLandmarkFrame.h"
+
+namespace featloc
+{
+/** Base of the stereo landmark extractors: turns one rectified stereo pair
+ * and the robot's pose estimate into modelled landmarks.
+ *
+ * Extractors are MRPT RTTI classes created by name from the configuration
+ * (`[StereoLandmarks] class = featloc::StableVerticalLandmarks`), reading
+ * their parameters from their own section, like the scan matchers. */
+class StereoLandmarkExtractor : public mrpt::rtti::CObject
+{
+	DEFINE_VIRTUAL_MRPT_OBJECT(StereoLandmarkExtractor)
+
+   public:
+	~StereoLandmarkExtractor() override = default;
+
+	/** Throws ConfigError on a bad value, InputError on a bad map file. */
+	virtual void loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section) = 0;
+	virtual void saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const = 0;
+
+	/** One pair: grey CV_8U images of equal size, the head's geometry,
+	 * the robot pose (world frame) with its covariance. */
+	virtual StereoLandmarkFrame process(
+		const cv::Mat& left, const cv::Mat& right, const StereoHead& head,
+		const mrpt::poses::CPosePDFGaussian& robot) const = 0;
+
+	std::string className() const;
+};
+}  // namespace featloc

@@ -1,0 +1,31 @@
+#pragma once
+#include <opencv2/core/mat.hpp>
+
+#include <string>
+#include <vector>
+
+#include "featloc/stereo/BoundarySearch.h"
+#include "featloc/stereo/ModelledFeature.h"
+#include "featloc/stereo/PlanarRegion.h"
+#include "featloc/stereo/SegmentMatch.h"
+#include "featloc/stereo/VerticalSegment.h"
+
+namespace featloc
+{
+/** Everything one stereo pair gave the landmark extractor, stage by stage
+ * (for the outputs, the debug pictures and the tests). */
+struct StereoLandmarkFrame
+{
+	std::vector<VerticalSegment> left, right;  //!< 2.1
+	std::vector<SegmentMatch> matches;	//!< 2.1, DP
+	/** Per match: "" when the disparity image supports it (2.2), else why not. */
+	std::vector<std::string> matchRejection;
+	cv::Mat disparity;	//!< 2.2, CV_32F, <= 0 invalid
+	std::vector<PlanarRegion> planes;  //!< 2.3, every map wall tried
+	/** Per plane: the boundary found (3.2) and at which end. */
+	std::vector<BoundarySearch::Result> boundaries;
+	std::vector<bool> boundaryAtA;
+	std::vector<ModelledFeature> features;	//!< 3.3 and 4
+	double seconds = 0, disparitySeconds = 0;
+};
+}  // namespace featloc

@@ -1,0 +1,104 @@
+#include "featloc/stereo/BoundarySearch.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace featloc
+{
+BoundarySearch::Result BoundarySearch::search(
+	const PlanarRegion& region, bool atA, const std::vector<double>& segmentColumns) const
+{
+	Result res;
+	if (region.mask.empty()) return res;
+	const double uE = atA ? region.uA : region.uB, sE = atA ? region.sigmaUA : region.sigmaUB;
+	const double uOther = atA ? region.uB : region.uA;
+	const int outward = uOther > uE ? -1 : 1;  // image direction leaving the plane
+	const int W = region.mask.cols;
+	const double half = options.window_sigmas * sE;
+	const int wl = std::max(0, static_cast<int>(std::floor(uE - half)));
+	const int wr = std::min(W - 1, static_cast<int>(std::ceil(uE + half)));
+	if (wr - wl < 1) return res;
+	const int inner = outward > 0 ? wl : wr, outer = outward > 0 ? wr : wl;
+
+	std::vector<double> b;
+	for (int v = 0; v < region.mask.rows; v++)
+	{
+		const uchar* m = region.mask.ptr<uchar>(v);
+		// The plane must fill the window's inner edge (within 2 px).
+		int start = -1;
+		for (int k = 0; k <= 2; k++)
+		{
+			const int u = inner - outward * k;
+			if (u >= 0 && u < W && m[u]) start = u;
+			if (start >= 0) break;
+		}
+		if (start < 0) continue;
+		int last = start, gap = 0;
+		bool ended = false;
+		for (int u = start; (outward > 0 ? u <= outer : u >= outer); u += outward)
+		{
+			if (m[u])
+			{
+				last = u;
+				gap = 0;
+			}
+			else if (++gap >= options.min_gap)
+			{
+				ended = true;
+				break;
+			}
+		}
+		if (ended) b.push_back(last + 0.5 * outward);
+	}
+	res.rows = b.size();
+
+	// The outermost segment in the window.
+	double outerSeg = 0;
+	bool hasSeg = false;
+	for (double u : segmentColumns)
+		if (u >= wl - 0.5 && u <= wr + 0.5 && (!hasSeg || (u - outerSeg) * outward > 0))
+			outerSeg = u, hasSeg = true;
+
+	if (b.size() >= options.min_rows)
+	{
+		// Minimum variance over virtual means in the window.
+		double bestV = 1e300, bestM = uE;
+		for (double m = wl; m <= wr; m += 0.1)
+		{
+			double v = 0;
+			for (double x : b) v += (x - m) * (x - m);
+			v /= static_cast<double>(b.size());
+			if (v < bestV) bestV = v, bestM = m;
+		}
+		res.found = true;
+		res.u = bestM;
+		res.sigma = std::max(options.sigma_img, std::sqrt(bestV));
+		res.method = "disparity";
+		if (hasSeg)
+		{
+			const double out = (outerSeg - res.u) * outward;  // > 0: segment outward
+			if (out < 0)
+			{
+				res.u = outerSeg;  // the paper's rule
+				res.sigma = options.sigma_img;
+				res.method = "disparity inside the outer segment: segment";
+			}
+			else if (options.snap_to_segment && out <= options.window_sigmas * res.sigma)
+			{
+				res.u = outerSeg;
+				res.sigma = options.sigma_img;
+				res.method = "disparity, snapped to segment";
+			}
+		}
+		return res;
+	}
+	if (hasSeg)
+	{
+		res.found = true;
+		res.u = outerSeg;
+		res.sigma = options.sigma_img;
+		res.method = "outer segment";
+	}
+	return res;
+}
+}  // namespace featloc

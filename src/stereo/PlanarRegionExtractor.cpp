@@ -1,0 +1,133 @@
+#include "featloc/stereo/PlanarRegionExtractor.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+namespace featloc
+{
+PlanarRegion PlanarRegionExtractor::extract(
+	const MapWall& wall, size_t wallIndex, const StereoHead& head, const Eigen::Vector3d& X,
+	const Eigen::Matrix3d& SigmaX, const cv::Mat& disparity) const
+{
+	PlanarRegion r;
+	r.wall = wallIndex;
+	const double s2img = options.sigma_img * options.sigma_img;
+	const double k = options.window_sigmas;
+
+	// The wall in camera coordinates, clipped to near_limit ahead.
+	Eigen::Vector2d ca = head.toCamera(X, wall.a), cb = head.toCamera(X, wall.b);
+	const double near = options.near_limit;
+	if (ca.y() < near && cb.y() < near)
+	{
+		r.reason = "behind the camera";
+		return r;
+	}
+	bool aClipped = false, bClipped = false;
+	auto clip = [&](Eigen::Vector2d& p, const Eigen::Vector2d& q, bool& clipped) {
+		if (p.y() >= near) return;
+		p = q + (p - q) * (q.y() - near) / (q.y() - p.y());
+		clipped = true;
+	};
+	clip(ca, cb, aClipped);
+	clip(cb, ca, bClipped);
+
+	// Eqs. (3)-(6): the ends' columns and their sigmas from Sigma_X.
+	auto endColumn = [&](const Eigen::Vector2d& pw, const Eigen::Vector2d& c, double& u, double& sigma) {
+		Eigen::Matrix<double, 2, 3> Jc;
+		head.toCamera(X, pw, &Jc);
+		Eigen::Matrix2d Jp;
+		u = head.project(c, &Jp).x();
+		const Eigen::RowVector3d Ju = Jp.row(0) * Jc;
+		sigma = std::sqrt(Ju * SigmaX * Ju.transpose() + s2img);
+	};
+	endColumn(head.toWorld(X, ca), ca, r.uA, r.sigmaUA);
+	endColumn(head.toWorld(X, cb), cb, r.uB, r.sigmaUB);
+	const double W = head.width;
+	r.aInView = !aClipped && r.uA - k * r.sigmaUA >= 0 && r.uA + k * r.sigmaUA <= W - 1;
+	r.bInView = !bClipped && r.uB - k * r.sigmaUB >= 0 && r.uB + k * r.sigmaUB <= W - 1;
+	const double lo = std::min(r.uA - k * r.sigmaUA, r.uB - k * r.sigmaUB);
+	const double hi = std::max(r.uA + k * r.sigmaUA, r.uB + k * r.sigmaUB);
+	r.uMin = std::max(0, static_cast<int>(std::floor(lo)));
+	r.uMax = std::min(head.width - 1, static_cast<int>(std::ceil(hi)));
+	if (r.uMax - r.uMin < 3)
+	{
+		r.reason = "outside the image";
+		return r;
+	}
+
+	// The plane frame: origin at end a, e along the wall, n across it.
+	r.fit.origin = ca;
+	r.fit.e = (cb - ca).normalized();
+	r.fit.n = Eigen::Vector2d(-r.fit.e.y(), r.fit.e.x());
+
+	r.mask = cv::Mat::zeros(disparity.size(), CV_8U);
+	const double s2nu = 2 * s2img;	// eq. (7)
+	Eigen::Matrix2d N = Eigen::Matrix2d::Zero();
+	Eigen::Vector2d rhs = Eigen::Vector2d::Zero();
+	std::vector<double> ws, ss, vars;
+	for (int u = r.uMin; u <= r.uMax; u++)
+	{
+		// The ray of column u meets the predicted wall at ca + t (cb - ca).
+		const Eigen::Vector2d ray((u - head.cx) / head.fx, 1.0);
+		const Eigen::Vector2d dw = cb - ca;
+		const double den = ray.x() * dw.y() - ray.y() * dw.x();
+		if (std::abs(den) < 1e-12) continue;
+		// ray x (ca + t dw) = 0.
+		const double t = -(ray.x() * ca.y() - ray.y() * ca.x()) / den;
+		const Eigen::Vector2d c = ca + t * dw;
+		if (c.y() < near) continue;
+		// Eqs. (9)-(10): d = D(X) at the wall point, sigma_d from Sigma_X.
+		Eigen::Matrix<double, 2, 3> Jc;
+		head.toCamera(X, head.toWorld(X, c), &Jc);
+		const double dPred = head.fx * head.baseline / c.y();
+		const Eigen::RowVector3d JD = -dPred / c.y() * Jc.row(1);
+		const double sigmaD = std::sqrt(JD * SigmaX * JD.transpose() + s2nu);
+		for (int v = 0; v < disparity.rows; v++)
+		{
+			const float d = disparity.at<float>(v, u);
+			if (d <= 0 || std::abs(d - dPred) > k * sigmaD) continue;
+			const Eigen::Vector2d p = head.triangulate(u, u - d);
+			const double z = head.heightAt(v, p.y());
+			if (z < options.min_height || z > options.max_height) continue;
+			r.mask.at<uchar>(v, u) = 255;
+			const Eigen::Vector2d sw_ = r.fit.toPlane(p);
+			// dc/dd = -c/d (c scales with 1/d along the ray), taken at the
+			// predicted point: weights from the measured disparity would
+			// favour pixels whose noise brought them nearer.
+			const double dn = r.fit.n.dot(-c / dPred);
+			const double var = dn * dn * s2nu;
+			const double wgt = 1.0 / var;
+			N(0, 0) += wgt;
+			N(0, 1) += wgt * sw_.x();
+			N(1, 1) += wgt * sw_.x() * sw_.x();
+			rhs += wgt * Eigen::Vector2d(sw_.y(), sw_.y() * sw_.x());
+			ss.push_back(sw_.x());
+			ws.push_back(sw_.y());
+			vars.push_back(var);
+			r.pixels++;
+		}
+	}
+	if (r.pixels < options.min_pixels)
+	{
+		r.reason = "too few disparity pixels on it (" + std::to_string(r.pixels) + ")";
+		return r;
+	}
+	N(1, 0) = N(0, 1);
+	const Eigen::Matrix2d Ninv = N.inverse();
+	r.fit.line = Ninv * rhs;
+	double chi2 = 0, sum2 = 0;
+	for (size_t i = 0; i < ws.size(); i++)
+	{
+		const double res = ws[i] - r.fit.line.x() - r.fit.line.y() * ss[i];
+		chi2 += res * res / vars[i];
+		sum2 += res * res;
+	}
+	const double dof = static_cast<double>(ws.size()) - 2;
+	r.rms = std::sqrt(sum2 / static_cast<double>(ws.size()));
+	r.fit.lineCovariance =
+		Ninv * std::max(1.0, chi2 / dof) * static_cast<double>(options.block_size * options.block_size);
+	r.fitted = true;
+	return r;
+}
+}  // namespace featloc

@@ -1,0 +1,339 @@
+#include "featloc/stereo/StableVerticalLandmarks.h"
+
+#include <opencv2/calib3d.hpp>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "featloc/config/ConfigValues.h"
+#include "featloc/config/TrackedConfig.h"
+#include "featloc/stereo/PlaneFit.h"
+
+namespace featloc
+{
+IMPLEMENTS_MRPT_OBJECT(StableVerticalLandmarks, StereoLandmarkExtractor, featloc)
+
+namespace
+{
+double seconds(std::chrono::steady_clock::time_point t0)
+{
+	return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/** The band of left-image pixels a match covers: its common rows, +-2 px
+ * around the left segment. */
+template <typename F>
+void forBand(const VerticalSegment& l, const SegmentMatch& m, int W, int H, int halfWidth, F&& f)
+{
+	for (int v = std::max(0, static_cast<int>(std::ceil(m.vLow))); v <= std::min(H - 1, static_cast<int>(m.vHigh)); v += 2)
+	{
+		const int u0 = static_cast<int>(std::lround(l.uAt(v)));
+		for (int u = std::max(0, u0 - halfWidth); u <= std::min(W - 1, u0 + halfWidth); u++) f(u, v);
+	}
+}
+}  // namespace
+
+void StableVerticalLandmarks::loadParams(const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace featloc::config;
+	options.segments.loadFromConfigFile(c, s);
+	options.matching.loadFromConfigFile(c, s);
+	read(c, s, "map", options.map);
+	read(c, s, "block_size", options.block_size);
+	read(c, s, "num_disparities", options.num_disparities);
+	read(c, s, "uniqueness_ratio", options.uniqueness_ratio);
+	read(c, s, "texture_threshold", options.texture_threshold);
+	read(c, s, "disparity_tolerance_px", options.disparity_tolerance_px);
+	read(c, s, "sigma_img", options.sigma_img);
+	read(c, s, "window_sigmas", options.window_sigmas);
+	read(c, s, "min_plane_pixels", options.min_plane_pixels);
+	read(c, s, "min_height", options.min_height);
+	read(c, s, "max_height", options.max_height);
+	read(c, s, "boundary_sigmas", options.boundary_sigmas);
+	read(c, s, "snap_to_segment", options.snap_to_segment);
+	read(c, s, "min_length_similarity", options.min_length_similarity);
+	require(options.block_size >= 5 && options.block_size <= 255 && options.block_size % 2 == 1, c, s,
+		"block_size", "odd, in [5, 255]");
+	require(options.num_disparities >= 16 && options.num_disparities % 16 == 0, c, s, "num_disparities",
+		"a positive multiple of 16");
+	require(options.uniqueness_ratio >= 0, c, s, "uniqueness_ratio", ">= 0");
+	require(options.texture_threshold >= 0, c, s, "texture_threshold", ">= 0");
+	require(options.disparity_tolerance_px > 0, c, s, "disparity_tolerance_px", "> 0");
+	require(options.max_height > options.min_height, c, s, "max_height", "> min_height");
+	require(options.sigma_img > 0, c, s, "sigma_img", "> 0");
+	require(options.window_sigmas > 0, c, s, "window_sigmas", "> 0");
+	require(options.boundary_sigmas >= 0, c, s, "boundary_sigmas", ">= 0");
+	require(options.min_length_similarity >= 0 && options.min_length_similarity <= 1, c, s,
+		"min_length_similarity", "in [0, 1]");
+	require(!options.map.empty(), c, s, "map",
+		"a map of the walls (a featloc-sim world file or lines 'x1 y1 x2 y2'): the reference planes");
+	std::string path = options.map;
+	if (const auto* tc = dynamic_cast<const TrackedConfig*>(&c)) path = tc->resolvePath(s, "map", path);
+	walls = WallMapFile::load(path);
+}
+
+void StableVerticalLandmarks::saveParams(mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	using namespace featloc::config;
+	write(c, s, "map", options.map,
+		"the known 2-D map whose walls are the reference planes: a featloc-sim world file or "
+		"lines 'x1 y1 x2 y2' [m]; relative to this ini's folder");
+	options.segments.saveToConfigFile(c, s);
+	options.matching.saveToConfigFile(c, s);
+	write(c, s, "block_size", options.block_size, "[px] SAD window (paper: 15)");
+	write(c, s, "num_disparities", options.num_disparities, "[px] SAD search range, multiple of 16");
+	write(c, s, "uniqueness_ratio", options.uniqueness_ratio, "[%] StereoBM: best SAD this much below the next");
+	write(c, s, "texture_threshold", options.texture_threshold, "StereoBM: least texture in the window");
+	write(c, s, "disparity_tolerance_px", options.disparity_tolerance_px,
+		"[px] a segment match must agree with the SAD disparity image this well (2.2)");
+	write(c, s, "sigma_img", options.sigma_img, "[px] image position sigma (paper: 0.5)");
+	write(c, s, "window_sigmas", options.window_sigmas, "search windows are this many sigma (paper: 3)");
+	write(c, s, "min_plane_pixels", options.min_plane_pixels, "disparity pixels needed to fit a plane");
+	write(c, s, "min_height", options.min_height,
+		"[m] wall points lower than this are left out of the plane fit (the floor)");
+	write(c, s, "max_height", options.max_height,
+		"[m] wall points higher than this are left out of the plane fit (the ceiling)");
+	write(c, s, "boundary_sigmas", options.boundary_sigmas,
+		"a feature this many sigma from the plane boundary is unstable (paper: 3)");
+	write(c, s, "snap_to_segment", options.snap_to_segment,
+		"a segment within 3 sigma outward of the SAD boundary is the boundary (featloc)");
+	write(c, s, "min_length_similarity", options.min_length_similarity,
+		"eq. (18): least min/max length of the left and right segments of a landmark");
+}
+
+cv::Mat StableVerticalLandmarks::disparity(const cv::Mat& left, const cv::Mat& right) const
+{
+	// Eq. (2): SAD in both directions, kept where they agree within 1 px.
+	auto bm = cv::StereoBM::create(options.num_disparities, options.block_size);
+	bm->setDisp12MaxDiff(1);
+	bm->setUniquenessRatio(options.uniqueness_ratio);
+	bm->setTextureThreshold(options.texture_threshold);
+	cv::Mat d16, d;
+	bm->compute(left, right, d16);
+	d16.convertTo(d, CV_32F, 1.0 / 16);
+	return d;
+}
+
+StereoLandmarkFrame StableVerticalLandmarks::process(
+	const cv::Mat& left, const cv::Mat& right, const StereoHead& head,
+	const mrpt::poses::CPosePDFGaussian& robot) const
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	StereoLandmarkFrame f;
+	const Eigen::Vector3d X(robot.mean.x(), robot.mean.y(), robot.mean.phi());
+	Eigen::Matrix3d SX;
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++) SX(i, j) = robot.cov(i, j);
+	const int W = left.cols, H = left.rows;
+	const double s2img = options.sigma_img * options.sigma_img;
+
+	// 1. Segments, matched by DP (2.1).
+	const VerticalSegmentDetector detector(options.segments);
+	f.left = detector.detect(left);
+	f.right = detector.detect(right);
+	const SegmentStereoMatcher matcher(options.matching);
+	f.matches = matcher.match(f.left, f.right);
+
+	// 2. The SAD disparity image (2.2), and the matches it supports.
+	const auto tD = std::chrono::steady_clock::now();
+	f.disparity = disparity(left, right);
+	f.disparitySeconds = seconds(tD);
+	f.matchRejection.assign(f.matches.size(), "");
+	for (size_t i = 0; i < f.matches.size(); i++)
+	{
+		const auto& m = f.matches[i];
+		std::vector<float> d;
+		size_t band = 0;
+		forBand(f.left[m.left], m, W, H, 3, [&](int u, int v) {
+			band++;
+			const float x = f.disparity.at<float>(v, u);
+			if (x > 0) d.push_back(x);
+		});
+		if (d.size() < std::max<size_t>(3, band * 3 / 10))
+		{
+			f.matchRejection[i] = "no SAD disparity around it";
+			continue;
+		}
+		std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+		const double med = d[d.size() / 2];
+		if (std::abs(med - m.disparity) > options.disparity_tolerance_px)
+			f.matchRejection[i] = "disparity " + std::to_string(m.disparity).substr(0, 5) +
+				" px, SAD image " + std::to_string(med).substr(0, 5) + " px";
+	}
+
+	// 3. Reference planes (2.3).
+	PlanarRegionExtractor::Options po;
+	po.sigma_img = options.sigma_img;
+	po.window_sigmas = options.window_sigmas;
+	po.min_pixels = options.min_plane_pixels;
+	po.block_size = options.block_size;
+	po.min_height = options.min_height;
+	po.max_height = options.max_height;
+	const PlanarRegionExtractor planes(po);
+	for (size_t w = 0; w < walls.size(); w++)
+		f.planes.push_back(planes.extract(walls[w], w, head, X, SX, f.disparity));
+
+	// 4. Matches on a plane (2.4), constrained to it (3.1).
+	struct OnPlane
+	{
+		size_t match;
+		Eigen::Vector2d c;	// constrained, camera coordinates
+		Eigen::Matrix2d P;
+		Eigen::Vector2d cTilde;
+		Eigen::Matrix2d PTilde;
+	};
+	std::vector<std::vector<OnPlane>> byPlane(f.planes.size());
+	for (size_t i = 0; i < f.matches.size(); i++)
+	{
+		if (!f.matchRejection[i].empty()) continue;
+		const auto& m = f.matches[i];
+		const auto& l = f.left[m.left];
+		const auto& r = f.right[m.right];
+		const double vm = 0.5 * (m.vLow + m.vHigh);
+		Eigen::Matrix2d J;
+		const Eigen::Vector2d cTilde = head.triangulate(l.uAt(vm), r.uAt(vm), &J);
+		const Eigen::Matrix2d PTilde = J * J.transpose() * s2img;
+		long best = -1;
+		OnPlane bestOn{};
+		for (size_t p = 0; p < f.planes.size(); p++)
+		{
+			const auto& pl = f.planes[p];
+			if (!pl.fitted) continue;
+			size_t band = 0, in = 0;
+			forBand(l, m, W, H, 2, [&](int u, int v) {
+				band++;
+				if (pl.mask.at<uchar>(v, u)) in++;
+			});
+			if (2 * in < band) continue;
+			OnPlane on{i, {}, {}, cTilde, PTilde};
+			double m2 = 0;
+			on.c = pl.fit.constrain(cTilde, PTilde, on.P, &m2);
+			if (m2 > 9) continue;  // not on this plane
+			if (best < 0 || walls[p].length() < walls[static_cast<size_t>(best)].length())
+				best = static_cast<long>(p), bestOn = on;
+		}
+		if (best < 0)
+		{
+			f.matchRejection[i] = "not on a reference plane";
+			continue;
+		}
+		byPlane[static_cast<size_t>(best)].push_back(bestOn);
+	}
+
+	// 5. Boundaries (3.2) and positions relative to them (3.3); 6. selection (4).
+	f.boundaries.resize(f.planes.size());
+	f.boundaryAtA.assign(f.planes.size(), true);
+	BoundarySearch::Options bo;
+	bo.sigma_img = options.sigma_img;
+	bo.window_sigmas = options.window_sigmas;
+	bo.snap_to_segment = options.snap_to_segment;
+	const BoundarySearch boundaries(bo);
+	const double psi0 = head.camYaw;
+	const Eigen::Vector2d camRight(std::sin(psi0), -std::cos(psi0)), camFwd(std::cos(psi0), std::sin(psi0));
+	Eigen::Matrix2d camToRobot;
+	camToRobot.col(0) = camRight;
+	camToRobot.col(1) = camFwd;
+	for (size_t p = 0; p < f.planes.size(); p++)
+	{
+		auto& on = byPlane[p];
+		if (on.empty()) continue;
+		const auto& pl = f.planes[p];
+		std::vector<double> cols;
+		for (const auto& o : on)
+		{
+			const auto& m = f.matches[o.match];
+			cols.push_back(f.left[m.left].uAt(0.5 * (m.vLow + m.vHigh)));
+		}
+		BoundarySearch::Result best;
+		bool bestAtA = true;
+		for (const bool atA : {true, false})
+		{
+			if (!(atA ? pl.aInView : pl.bInView)) continue;
+			const auto b = boundaries.search(pl, atA, cols);
+			if (b.found && (!best.found || b.sigma < best.sigma)) best = b, bestAtA = atA;
+		}
+		f.boundaries[p] = best;
+		f.boundaryAtA[p] = bestAtA;
+		if (!best.found)
+		{
+			for (const auto& o : on) f.matchRejection[o.match] = "no boundary of its plane in view";
+			continue;
+		}
+		// The boundary: its column's ray with sigma_b, at the fitted
+		// plane's depth with a loose depth, constrained to the plane (3.1).
+		const Eigen::Vector2d ray((best.u - head.cx) / head.fx, 1.0);
+		const Eigen::Vector2d dir = pl.fit.direction();
+		const Eigen::Vector2d p0 = pl.fit.fromPlane({0, pl.fit.line.x()});
+		const double den = ray.x() * dir.y() - ray.y() * dir.x();
+		const double t = -(ray.x() * p0.y() - ray.y() * p0.x()) / den;  // ray x (p0 + t dir) = 0
+		const Eigen::Vector2d cb0 = p0 + t * dir;
+		const double depth = cb0.y();
+		Eigen::Matrix2d Jb;	 // d(c_x, c_y) / d(u, depth)
+		Jb << depth / head.fx, ray.x(), 0, 1;
+		const Eigen::Matrix2d Pb0 =
+			Jb * Eigen::Vector2d(best.sigma * best.sigma, depth * depth).asDiagonal() * Jb.transpose();
+		Eigen::Matrix2d Pb;
+		const Eigen::Vector2d cb = pl.fit.constrain(cb0, Pb0, Pb);
+
+		// Eqs. (15)-(17), from the boundary end M1 towards the other M2.
+		const auto& wall = walls[p];
+		const Eigen::Vector2d M1 = bestAtA ? wall.a : wall.b, M2 = bestAtA ? wall.b : wall.a;
+		const double dM = wall.length();
+		// The plane's direction in the camera, from the boundary end inward.
+		Eigen::Vector2d e = dir;
+		const Eigen::Vector2d inward = head.toCamera(X, M2) - head.toCamera(X, M1);
+		if (e.dot(inward) < 0) e = -e;
+		std::vector<ModelledFeature> feats;
+		for (const auto& o : on)
+		{
+			const auto& m = f.matches[o.match];
+			const auto& l = f.left[m.left];
+			const auto& r = f.right[m.right];
+			ModelledFeature mf;
+			mf.wall = p;
+			mf.plane = wall.name;
+			mf.match = o.match;
+			mf.dp = e.dot(o.c - cb);
+			mf.sigmaDp = std::sqrt(e.dot(o.P * e) + e.dot(Pb * e));
+			const Eigen::Vector2d u = (M2 - M1) / dM;
+			mf.position = M1 + mf.dp * u;  // eq. (15)
+			mf.covariance = u * u.transpose() * mf.sigmaDp * mf.sigmaDp;  // eq. (17), rank 1
+			const double depthF = o.c.y();
+			mf.lHigh = head.heightAt(l.vTop - 0.5, depthF);
+			mf.lLow = head.heightAt(l.vBottom + 0.5, depthF);
+			mf.lengthSimilarity = std::min(l.length(), r.length()) / std::max(l.length(), r.length());
+			// Without the plane: stereo point and robot pose uncertainty.
+			mf.unconstrained = head.toWorld(X, o.cTilde);
+			Eigen::Matrix2d Rw;
+			Rw.col(0) = head.directionToWorld(X, {1, 0});
+			Rw.col(1) = head.directionToWorld(X, {0, 1});
+			Eigen::Matrix<double, 2, 3> JX;
+			for (int k = 0; k < 3; k++)
+			{
+				Eigen::Vector3d dx = Eigen::Vector3d::Zero();
+				dx(k) = 1e-6;
+				JX.col(k) = (head.toWorld(X + dx, o.cTilde) - head.toWorld(X - dx, o.cTilde)) / 2e-6;
+			}
+			mf.unconstrainedCovariance = Rw * o.PTilde * Rw.transpose() + JX * SX * JX.transpose();
+			mf.robotFrame = Eigen::Vector2d(head.camX, head.camY) + camToRobot * o.c;
+			mf.robotFrameCovariance = camToRobot * o.P * camToRobot.transpose();
+			// Section 4.
+			if (std::abs(mf.dp) < options.boundary_sigmas * mf.sigmaDp)
+				mf.reason = "near boundary";
+			else if (mf.lengthSimilarity < options.min_length_similarity)
+				mf.reason = "length similarity " + std::to_string(mf.lengthSimilarity).substr(0, 4);
+			mf.selected = mf.reason.empty();
+			feats.push_back(mf);
+		}
+		std::sort(feats.begin(), feats.end(), [](const ModelledFeature& a, const ModelledFeature& b) {
+			return std::abs(a.dp) < std::abs(b.dp);
+		});
+		for (size_t k = 0; k < feats.size(); k++) feats[k].index = static_cast<int>(k + 1);
+		f.features.insert(f.features.end(), feats.begin(), feats.end());
+	}
+	f.seconds = seconds(t0);
+	return f;
+}
+}  // namespace featloc
