@@ -6,6 +6,39 @@
 
 namespace featloc
 {
+bool PlanarRegionExtractor::disparityRange(
+	const MapWall& wall, const StereoHead& head, const Eigen::Vector3d& X, const Eigen::Matrix3d& SigmaX,
+	double& dMin, double& dMax) const
+{
+	const Eigen::Vector2d ca = head.toCamera(X, wall.a), cb = head.toCamera(X, wall.b);
+	// Liang-Barsky clipping of ca + t (cb - ca), t in [0, 1], to c_y >=
+	// near and the columns' wedge k0 c_y <= c_x <= k1 c_y.
+	const double k0 = (0 - head.cx) / head.fx, k1 = (head.width - 1 - head.cx) / head.fx;
+	double t0 = 0, t1 = 1;
+	auto keep = [&](const Eigen::Vector2d& g, double h) {	// g . p + h >= 0
+		const double fa = g.dot(ca) + h, fb = g.dot(cb) + h;
+		if (fa < 0 && fb < 0) return false;
+		if (fa < 0) t0 = std::max(t0, fa / (fa - fb));
+		if (fb < 0) t1 = std::min(t1, fa / (fa - fb));
+		return t0 <= t1;
+	};
+	if (!keep({0, 1}, -options.near_limit) || !keep({1, -k0}, 0) || !keep({-1, k1}, 0)) return false;
+	dMin = 1e300, dMax = -1e300;
+	const double s2nu = 2 * options.sigma_img * options.sigma_img;
+	for (const double t : {t0, t1})
+	{
+		const Eigen::Vector2d c = ca + t * (cb - ca);
+		Eigen::Matrix<double, 2, 3> Jc;
+		head.toCamera(X, head.toWorld(X, c), &Jc);
+		const double d = head.fx * head.baseline / c.y();
+		const Eigen::RowVector3d JD = -d / c.y() * Jc.row(1);
+		const double k = options.window_sigmas * std::sqrt(JD * SigmaX * JD.transpose() + s2nu);
+		dMin = std::min(dMin, d - k);
+		dMax = std::max(dMax, d + k);
+	}
+	return true;
+}
+
 PlanarRegion PlanarRegionExtractor::extract(
 	const MapWall& wall, size_t wallIndex, const StereoHead& head, const Eigen::Vector3d& X,
 	const Eigen::Matrix3d& SigmaX, const cv::Mat& disparity) const

@@ -103,10 +103,12 @@ void StableVerticalLandmarks::saveParams(mrpt::config::CConfigFileBase& c, const
 		"eq. (18): least min/max length of the left and right segments of a landmark");
 }
 
-cv::Mat StableVerticalLandmarks::disparity(const cv::Mat& left, const cv::Mat& right) const
+cv::Mat StableVerticalLandmarks::disparity(
+	const cv::Mat& left, const cv::Mat& right, int minDisparity, int numDisparities) const
 {
 	// Eq. (2): SAD in both directions, kept where they agree within 1 px.
-	auto bm = cv::StereoBM::create(options.num_disparities, options.block_size);
+	auto bm = cv::StereoBM::create(numDisparities > 0 ? numDisparities : options.num_disparities, options.block_size);
+	bm->setMinDisparity(minDisparity);
 	bm->setDisp12MaxDiff(1);
 	bm->setUniquenessRatio(options.uniqueness_ratio);
 	bm->setTextureThreshold(options.texture_threshold);
@@ -136,9 +138,35 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 	const SegmentStereoMatcher matcher(options.matching);
 	f.matches = matcher.match(f.left, f.right);
 
-	// 2. The SAD disparity image (2.2), and the matches it supports.
+	// 2. The SAD disparity image (2.2) over the disparities the visible
+	// walls can show (2.3.3), and the matches it supports.
+	PlanarRegionExtractor::Options po;
+	po.sigma_img = options.sigma_img;
+	po.window_sigmas = options.window_sigmas;
+	po.min_pixels = options.min_plane_pixels;
+	po.block_size = options.block_size;
+	po.min_height = options.min_height;
+	po.max_height = options.max_height;
+	const PlanarRegionExtractor planes(po);
+	double dLo = 1e300, dHi = -1e300;
+	for (const auto& w : walls)
+	{
+		double a = 0, b = 0;
+		if (!planes.disparityRange(w, head, X, SX, a, b)) continue;
+		dLo = std::min(dLo, a);
+		dHi = std::max(dHi, b);
+	}
 	const auto tD = std::chrono::steady_clock::now();
-	f.disparity = disparity(left, right);
+	if (dHi < dLo)
+		f.disparity = cv::Mat(left.size(), CV_32F, cv::Scalar(-1));	 // no wall in view
+	else
+	{
+		// Whole pixels, rounded up to StereoBM's steps of 16, within the option.
+		f.sadMin = std::max(0, static_cast<int>(std::floor(dLo)) - 1);
+		const int hi = static_cast<int>(std::ceil(dHi)) + 1;
+		f.sadRange = std::min(options.num_disparities, std::max(16, (hi - f.sadMin + 15) / 16 * 16));
+		f.disparity = disparity(left, right, f.sadMin, f.sadRange);
+	}
 	f.disparitySeconds = seconds(tD);
 	f.matchRejection.assign(f.matches.size(), "");
 	for (size_t i = 0; i < f.matches.size(); i++)
@@ -151,6 +179,11 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			const float x = f.disparity.at<float>(v, u);
 			if (x > 0) d.push_back(x);
 		});
+		if (m.disparity < f.sadMin || m.disparity > f.sadMin + f.sadRange - 1)
+		{
+			f.matchRejection[i] = "disparity outside every visible wall's";
+			continue;
+		}
 		if (d.size() < std::max<size_t>(3, band * 3 / 10))
 		{
 			f.matchRejection[i] = "no SAD disparity around it";
@@ -164,14 +197,6 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 	}
 
 	// 3. Reference planes (2.3).
-	PlanarRegionExtractor::Options po;
-	po.sigma_img = options.sigma_img;
-	po.window_sigmas = options.window_sigmas;
-	po.min_pixels = options.min_plane_pixels;
-	po.block_size = options.block_size;
-	po.min_height = options.min_height;
-	po.max_height = options.max_height;
-	const PlanarRegionExtractor planes(po);
 	for (size_t w = 0; w < walls.size(); w++)
 		f.planes.push_back(planes.extract(walls[w], w, head, X, SX, f.disparity));
 

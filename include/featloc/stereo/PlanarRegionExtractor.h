@@ -51,6 +51,14 @@ class PlanarRegionExtractor
 	explicit PlanarRegionExtractor(const Options& o) : options(o) {}
 	Options options;
 
+	/** The disparities the wall can show in the image (eqs. 9-10): its
+	 * part inside the field of view and beyond near_limit, its ends'
+	 * disparities +- window_sigmas sigma_d. False when none of it is in
+	 * view. */
+	bool disparityRange(
+		const MapWall& wall, const StereoHead& head, const Eigen::Vector3d& X,
+		const Eigen::Matrix3d& SigmaX, double& dMin, double& dMax) const;
+
 	/** `disparity`: CV_32F left-image disparities, <= 0 where invalid. */
 	PlanarRegion extract(
 		const MapWall& wall, size_t wallIndex, const StereoHead& head, const Eigen::Vector3d& X,

@@ -17,7 +17,8 @@ namespace featloc
  *  1. vertical segments in both images (VerticalSegmentDetector, 2.1),
  *     matched by dynamic programming (SegmentStereoMatcher, 2.1);
  *  2. an SAD disparity image, 15x15, both directions with the left-right
- *     check of eq. (2): OpenCV's StereoBM with disp12MaxDiff 1; a match
+ *     check of eq. (2): OpenCV's StereoBM with disp12MaxDiff 1, over the
+ *     disparities the visible walls of the map can show (2.3.3); a match
  *     whose disparity the image does not support (median of the valid
  *     disparities in a band around the left segment more than
  *     disparity_tolerance_px away, or too few valid ones) is dropped (2.2);
@@ -46,7 +47,10 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 		VerticalSegmentDetector::Options segments;
 		SegmentStereoMatcher::Options matching;
 		int block_size = 15;  //!< SAD window (paper: 15x15)
-		int num_disparities = 64;  //!< SAD search range, a multiple of 16
+		/** Most disparities the SAD searches, a multiple of 16. Each frame
+		 * searches only the range the map's visible walls can show
+		 * (eqs. 9-10), rounded up to 16, within this. */
+		int num_disparities = 128;
 		int uniqueness_ratio = 5;  //!< StereoBM's, [%]
 		int texture_threshold = 10;	 //!< StereoBM's
 		double disparity_tolerance_px = 1.5;
@@ -68,7 +72,9 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 		const cv::Mat& left, const cv::Mat& right, const StereoHead& head,
 		const mrpt::poses::CPosePDFGaussian& robot) const override;
 
-	/** The SAD disparity image of stage 2 alone (CV_32F, <= 0 invalid). */
-	cv::Mat disparity(const cv::Mat& left, const cv::Mat& right) const;
+	/** The SAD disparity image of stage 2 alone (CV_32F, <= 0 invalid),
+	 * searching minDisparity .. minDisparity + numDisparities - 1 (0: the
+	 * option's whole range). */
+	cv::Mat disparity(const cv::Mat& left, const cv::Mat& right, int minDisparity = 0, int numDisparities = 0) const;
 };
 }  // namespace featloc

@@ -21,6 +21,7 @@ struct StereoLandmarkFrame
 	/** Per match: "" when the disparity image supports it (2.2), else why not. */
 	std::vector<std::string> matchRejection;
 	cv::Mat disparity;	//!< 2.2, CV_32F, <= 0 invalid
+	int sadMin = 0, sadRange = 0;  //!< disparities searched: sadMin .. sadMin + sadRange - 1
 	std::vector<PlanarRegion> planes;  //!< 2.3, every map wall tried
 	/** Per plane: the boundary found (3.2) and at which end. */
 	std::vector<BoundarySearch::Result> boundaries;
