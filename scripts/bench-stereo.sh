@@ -31,3 +31,7 @@ echo
 "$BIN/featloc_tests" --gtest_filter='StereoCamera.BlockMatcher*:StereoCamera.GroundTruthEdges*:StereoImport.*' \
   > "$OUT/stereo-geometry.txt" 2>&1 || { cat "$OUT/stereo-geometry.txt"; exit 1; }
 grep -E '^\[          \] ' "$OUT/stereo-geometry.txt" | sed -E 's/^\[          \] /- /'
+echo
+echo "### Stable vertical landmarks (Moon, Miura & Shirai; issue 12)"
+echo
+"$BIN/featloc_bench_stereo_landmarks" "$ROOT" 20 | tee "$OUT/stereo-landmarks.md"
