@@ -3,6 +3,7 @@
 // speed of the whole stereo front end next to OpenCV's block matcher alone.
 // Prints Markdown (scripts/bench-stereo.sh puts it in doc/benchmarks.md).
 // Usage: featloc_bench_stereo_landmarks SOURCE_DIR [SEEDS]
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <opencv2/core/utility.hpp>
 
@@ -25,14 +26,6 @@ using namespace featloc;
 
 namespace
 {
-std::string readFile(const std::string& path)
-{
-	std::ifstream f(path);
-	std::stringstream ss;
-	ss << f.rdbuf();
-	return ss.str();
-}
-
 double median(std::vector<double> v)
 {
 	std::sort(v.begin(), v.end());
@@ -72,8 +65,7 @@ int main(int argc, char** argv)
 	const int seeds = argc > 2 ? std::atoi(argv[2]) : 20;
 	cv::setNumThreads(1);  // one core, as the issue asks
 	registerClasses();
-	mrpt::config::CConfigFileMemory world(readFile(src + "/worlds/moon-lab.ini"));
-	const auto sc = SimConfiguration::load(world);
+	const auto sc = SimConfiguration::load(mrpt::config::CConfigFile(src + "/worlds/moon-lab.ini"));
 	const StereoRenderer renderer(sc.world, sc.stereo);
 	const VisibleEdges visible(sc.world, sc.stereo);
 	StableVerticalLandmarks x;
@@ -82,11 +74,8 @@ int main(int argc, char** argv)
 		cfg.write("S", "map", src + "/worlds/moon-lab.ini");
 		x.loadParams(cfg, "S");
 	}
-	StereoHead head;
+	const StereoHead head = sc.stereo.head();
 	const auto& c = sc.stereo;
-	head.fx = c.fx, head.fy = c.fy, head.cx = c.cx, head.cy = c.cy, head.baseline = c.baseline;
-	head.width = static_cast<int>(c.width), head.height = static_cast<int>(c.height);
-	head.camX = c.pose[0], head.camY = c.pose[1], head.camZ = c.pose[2], head.camYaw = c.pose[3];
 	const double sxy = 0.02, syaw = 0.5 * M_PI / 180;
 	auto robotAt = [&](const mrpt::poses::CPose2D& p) {
 		mrpt::poses::CPosePDFGaussian r(p);
@@ -204,18 +193,13 @@ int main(int argc, char** argv)
 	// (doors, posters, people walking), at the ground-truth poses of its
 	// shipped run.
 	{
-		mrpt::config::CConfigFileMemory cw(readFile(src + "/worlds/stereo-corridor.ini"));
-		const auto cc = SimConfiguration::load(cw);
+		const auto cc = SimConfiguration::load(mrpt::config::CConfigFile(src + "/worlds/stereo-corridor.ini"));
 		const StereoRenderer cr(cc.world, cc.stereo);
 		StableVerticalLandmarks cx;
 		mrpt::config::CConfigFileMemory cfg;
 		cfg.write("S", "map", src + "/worlds/stereo-corridor.ini");
 		cx.loadParams(cfg, "S");
-		StereoHead ch = head;
-		const auto& k = cc.stereo;
-		ch.fx = k.fx, ch.fy = k.fy, ch.cx = k.cx, ch.cy = k.cy, ch.baseline = k.baseline;
-		ch.width = static_cast<int>(k.width), ch.height = static_cast<int>(k.height);
-		ch.camX = k.pose[0], ch.camY = k.pose[1], ch.camZ = k.pose[2], ch.camYaw = k.pose[3];
+		const StereoHead ch = cc.stereo.head();
 		std::ifstream gt(src + "/rawlogs/stereo/stereo-corridor.gt.txt");
 		std::string line;
 		double t0 = -1;

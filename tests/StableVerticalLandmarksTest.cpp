@@ -1,6 +1,7 @@
 // Moon, Miura & Shirai's stable vertical landmarks on the simulated paper
 // scene: every stage against the simulator's exact edges and planes.
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <opencv2/imgproc.hpp>
 
@@ -9,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 
 #include "featloc/registerClasses.h"
 #include "featloc/sim/SimConfiguration.h"
@@ -28,27 +28,9 @@ namespace
 {
 const std::string kSource = FEATLOC_SOURCE_DIR;
 
-std::string readFile(const std::string& path)
-{
-	std::ifstream f(path, std::ios::binary);
-	std::stringstream ss;
-	ss << f.rdbuf();
-	return ss.str();
-}
-
 SimConfiguration moonLab()
 {
-	mrpt::config::CConfigFileMemory cfg(readFile(kSource + "/worlds/moon-lab.ini"));
-	return SimConfiguration::load(cfg);
-}
-
-StereoHead headOf(const StereoCameraOptions& c)
-{
-	StereoHead h;
-	h.fx = c.fx, h.fy = c.fy, h.cx = c.cx, h.cy = c.cy, h.baseline = c.baseline;
-	h.width = static_cast<int>(c.width), h.height = static_cast<int>(c.height);
-	h.camX = c.pose[0], h.camY = c.pose[1], h.camZ = c.pose[2], h.camYaw = c.pose[3];
-	return h;
+	return SimConfiguration::load(mrpt::config::CConfigFile(kSource + "/worlds/moon-lab.ini"));
 }
 
 mrpt::poses::CPosePDFGaussian robotAt(const mrpt::poses::CPose2D& pose, double sxy, double syawDeg)
@@ -80,7 +62,7 @@ Scene look(const mrpt::poses::CPose2D& pose, int seed = 3)
 	Scene s;
 	cv::RNG rng(static_cast<uint64_t>(seed));
 	s.frame = r.render(pose, 0, rng);
-	s.out = x.process(s.frame.left, s.frame.right, headOf(sc.stereo), robotAt(pose, 0.02, 0.5));
+	s.out = x.process(s.frame.left, s.frame.right, sc.stereo.head(), robotAt(pose, 0.02, 0.5));
 	cv::Mat l, rr, dl, dr;
 	const auto cam = r.leftCameraPose(pose);
 	r.renderIdeal(cam, 0, l, rr, dl, dr);

@@ -9,6 +9,7 @@ BoundarySearch::Result BoundarySearch::search(
 	const PlanarRegion& region, bool atA, const std::vector<double>& segmentColumns) const
 {
 	Result res;
+	res.atA = atA;
 	if (region.mask.empty()) return res;
 	const double uE = atA ? region.uA : region.uB, sE = atA ? region.sigmaUA : region.sigmaUB;
 	const double uOther = atA ? region.uB : region.uA;

@@ -6,6 +6,23 @@
 
 namespace featloc
 {
+namespace
+{
+/** Eqs. (9)-(10): the disparity d = D(X) of camera point c (a point of the
+ * world, seen from X) and its sigma, sqrt(dD/dX Sigma_X dD/dX^T + s2nu). */
+double predictedDisparity(
+	const StereoHead& head, const Eigen::Vector3d& X, const Eigen::Matrix3d& SigmaX, const Eigen::Vector2d& c,
+	double s2nu, double& sigma)
+{
+	Eigen::Matrix<double, 2, 3> Jc;
+	head.toCamera(X, head.toWorld(X, c), &Jc);
+	const double d = head.fx * head.baseline / c.y();
+	const Eigen::RowVector3d JD = -d / c.y() * Jc.row(1);
+	sigma = std::sqrt(JD * SigmaX * JD.transpose() + s2nu);
+	return d;
+}
+}  // namespace
+
 bool PlanarRegionExtractor::disparityRange(
 	const MapWall& wall, const StereoHead& head, const Eigen::Vector3d& X, const Eigen::Matrix3d& SigmaX,
 	double& dMin, double& dMax) const
@@ -27,14 +44,10 @@ bool PlanarRegionExtractor::disparityRange(
 	const double s2nu = 2 * options.sigma_img * options.sigma_img;
 	for (const double t : {t0, t1})
 	{
-		const Eigen::Vector2d c = ca + t * (cb - ca);
-		Eigen::Matrix<double, 2, 3> Jc;
-		head.toCamera(X, head.toWorld(X, c), &Jc);
-		const double d = head.fx * head.baseline / c.y();
-		const Eigen::RowVector3d JD = -d / c.y() * Jc.row(1);
-		const double k = options.window_sigmas * std::sqrt(JD * SigmaX * JD.transpose() + s2nu);
-		dMin = std::min(dMin, d - k);
-		dMax = std::max(dMax, d + k);
+		double sigma = 0;
+		const double d = predictedDisparity(head, X, SigmaX, ca + t * (cb - ca), s2nu, sigma);
+		dMin = std::min(dMin, d - options.window_sigmas * sigma);
+		dMax = std::max(dMax, d + options.window_sigmas * sigma);
 	}
 	return true;
 }
@@ -101,21 +114,12 @@ PlanarRegion PlanarRegionExtractor::extract(
 	std::vector<double> ws, ss, vars;
 	for (int u = r.uMin; u <= r.uMax; u++)
 	{
-		// The ray of column u meets the predicted wall at ca + t (cb - ca).
-		const Eigen::Vector2d ray((u - head.cx) / head.fx, 1.0);
-		const Eigen::Vector2d dw = cb - ca;
-		const double den = ray.x() * dw.y() - ray.y() * dw.x();
-		if (std::abs(den) < 1e-12) continue;
-		// ray x (ca + t dw) = 0.
-		const double t = -(ray.x() * ca.y() - ray.y() * ca.x()) / den;
-		const Eigen::Vector2d c = ca + t * dw;
+		// The ray of column u meets the predicted wall.
+		Eigen::Vector2d c;
+		if (!head.columnRayMeets(u, ca, cb - ca, c)) continue;
 		if (c.y() < near) continue;
-		// Eqs. (9)-(10): d = D(X) at the wall point, sigma_d from Sigma_X.
-		Eigen::Matrix<double, 2, 3> Jc;
-		head.toCamera(X, head.toWorld(X, c), &Jc);
-		const double dPred = head.fx * head.baseline / c.y();
-		const Eigen::RowVector3d JD = -dPred / c.y() * Jc.row(1);
-		const double sigmaD = std::sqrt(JD * SigmaX * JD.transpose() + s2nu);
+		double sigmaD = 0;
+		const double dPred = predictedDisparity(head, X, SigmaX, c, s2nu, sigmaD);
 		for (int v = 0; v < disparity.rows; v++)
 		{
 			const float d = disparity.at<float>(v, u);

@@ -249,7 +249,6 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 
 	// 5. Boundaries (3.2) and positions relative to them (3.3); 6. selection (4).
 	f.boundaries.resize(f.planes.size());
-	f.boundaryAtA.assign(f.planes.size(), true);
 	BoundarySearch::Options bo;
 	bo.sigma_img = options.sigma_img;
 	bo.window_sigmas = options.window_sigmas;
@@ -257,6 +256,9 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 	const BoundarySearch boundaries(bo);
 	const double psi0 = head.camYaw;
 	const Eigen::Vector2d camRight(std::sin(psi0), -std::cos(psi0)), camFwd(std::cos(psi0), std::sin(psi0));
+	Eigen::Matrix2d Rw;	 // camera axes in the world
+	Rw.col(0) = head.directionToWorld(X, {1, 0});
+	Rw.col(1) = head.directionToWorld(X, {0, 1});
 	Eigen::Matrix2d camToRobot;
 	camToRobot.col(0) = camRight;
 	camToRobot.col(1) = camFwd;
@@ -272,15 +274,13 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			cols.push_back(f.left[m.left].uAt(0.5 * (m.vLow + m.vHigh)));
 		}
 		BoundarySearch::Result best;
-		bool bestAtA = true;
 		for (const bool atA : {true, false})
 		{
 			if (!(atA ? pl.aInView : pl.bInView)) continue;
 			const auto b = boundaries.search(pl, atA, cols);
-			if (b.found && (!best.found || b.sigma < best.sigma)) best = b, bestAtA = atA;
+			if (b.found && (!best.found || b.sigma < best.sigma)) best = b;
 		}
 		f.boundaries[p] = best;
-		f.boundaryAtA[p] = bestAtA;
 		if (!best.found)
 		{
 			for (const auto& o : on) f.matchRejection[o.match] = "no boundary of its plane in view";
@@ -288,15 +288,17 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 		}
 		// The boundary: its column's ray with sigma_b, at the fitted
 		// plane's depth with a loose depth, constrained to the plane (3.1).
-		const Eigen::Vector2d ray((best.u - head.cx) / head.fx, 1.0);
 		const Eigen::Vector2d dir = pl.fit.direction();
-		const Eigen::Vector2d p0 = pl.fit.fromPlane({0, pl.fit.line.x()});
-		const double den = ray.x() * dir.y() - ray.y() * dir.x();
-		const double t = -(ray.x() * p0.y() - ray.y() * p0.x()) / den;  // ray x (p0 + t dir) = 0
-		const Eigen::Vector2d cb0 = p0 + t * dir;
+		Eigen::Vector2d cb0;
+		if (!head.columnRayMeets(best.u, pl.fit.fromPlane({0, pl.fit.line.x()}), dir, cb0))
+		{
+			for (const auto& o : on) f.matchRejection[o.match] = "its plane is seen edge-on";
+			continue;
+		}
+		const double rayX = (best.u - head.cx) / head.fx;
 		const double depth = cb0.y();
 		Eigen::Matrix2d Jb;	 // d(c_x, c_y) / d(u, depth)
-		Jb << depth / head.fx, ray.x(), 0, 1;
+		Jb << depth / head.fx, rayX, 0, 1;
 		const Eigen::Matrix2d Pb0 =
 			Jb * Eigen::Vector2d(best.sigma * best.sigma, depth * depth).asDiagonal() * Jb.transpose();
 		Eigen::Matrix2d Pb;
@@ -304,7 +306,7 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 
 		// Eqs. (15)-(17), from the boundary end M1 towards the other M2.
 		const auto& wall = walls[p];
-		const Eigen::Vector2d M1 = bestAtA ? wall.a : wall.b, M2 = bestAtA ? wall.b : wall.a;
+		const Eigen::Vector2d M1 = best.atA ? wall.a : wall.b, M2 = best.atA ? wall.b : wall.a;
 		const double dM = wall.length();
 		// The plane's direction in the camera, from the boundary end inward.
 		Eigen::Vector2d e = dir;
@@ -331,9 +333,6 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			mf.lengthSimilarity = std::min(l.length(), r.length()) / std::max(l.length(), r.length());
 			// Without the plane: stereo point and robot pose uncertainty.
 			mf.unconstrained = head.toWorld(X, o.cTilde);
-			Eigen::Matrix2d Rw;
-			Rw.col(0) = head.directionToWorld(X, {1, 0});
-			Rw.col(1) = head.directionToWorld(X, {0, 1});
 			Eigen::Matrix<double, 2, 3> JX;
 			for (int k = 0; k < 3; k++)
 			{

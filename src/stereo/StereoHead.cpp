@@ -12,19 +12,25 @@ namespace featloc
 StereoHead StereoHead::fromObservation(
 	const mrpt::obs::CObservationStereoImages& obs, const std::string& where, double maxTiltDeg)
 {
+	return fromCalibration(obs.getStereoCameraParams(), mrpt::poses::CPose3D(obs.cameraPose), where, maxTiltDeg);
+}
+
+StereoHead StereoHead::fromCalibration(
+	const mrpt::img::TStereoCamera& calibration, const mrpt::poses::CPose3D& cam, const std::string& where,
+	double maxTiltDeg)
+{
 	StereoHead h;
-	const auto& c = obs.leftCamera;
+	const auto& c = calibration.leftCamera;
 	h.fx = c.fx();
 	h.fy = c.fy();
 	h.cx = c.cx();
 	h.cy = c.cy();
 	h.width = static_cast<int>(c.ncols);
 	h.height = static_cast<int>(c.nrows);
-	const auto& rp = obs.rightCameraPose;
-	h.baseline = std::sqrt(rp.x() * rp.x() + rp.y() * rp.y() + rp.z() * rp.z());
+	const auto& rp = calibration.rightCameraPose;
+	h.baseline = std::sqrt(rp.x * rp.x + rp.y * rp.y + rp.z * rp.z);
 	if (!(h.fx > 0 && h.fy > 0 && h.baseline > 0 && h.width > 0 && h.height > 0))
 		throw InputError(where + ": stereo observation without a usable calibration");
-	const mrpt::poses::CPose3D cam(obs.cameraPose);
 	const auto R = cam.getRotationMatrix();
 	// Optical axes: z ahead, x right, y down. A level camera has z and x
 	// horizontal and y pointing down.
@@ -94,5 +100,16 @@ Eigen::Vector2d StereoHead::triangulate(double xl, double xr, Eigen::Matrix2d* J
 			-fx * id2, fx * id2;
 	}
 	return {lateral, depth};
+}
+bool StereoHead::columnRayMeets(
+	double u, const Eigen::Vector2d& p, const Eigen::Vector2d& dir, Eigen::Vector2d& c) const
+{
+	// ray x (p + t dir) = 0 with ray = ((u - cx) / fx, 1).
+	const Eigen::Vector2d ray((u - cx) / fx, 1.0);
+	const double den = ray.x() * dir.y() - ray.y() * dir.x();
+	if (std::abs(den) < 1e-12) return false;
+	const double t = -(ray.x() * p.y() - ray.y() * p.x()) / den;
+	c = p + t * dir;
+	return true;
 }
 }  // namespace featloc

@@ -22,7 +22,6 @@ struct Chain
 {
 	std::vector<EdgePixel> pixels;
 	int polarity;
-	bool open = true;
 	double lastU() const { return pixels.back().u; }
 	int lastV() const { return pixels.back().v; }
 };
@@ -73,8 +72,7 @@ std::vector<VerticalSegment> VerticalSegmentDetector::detect(const cv::Mat& grey
 	std::vector<VerticalSegment> out;
 	const double maxSlope = std::tan(options.max_tilt_deg * M_PI / 180.0);
 
-	auto close = [&](Chain& c) {
-		c.open = false;
+	auto close = [&](const Chain& c) {
 		const auto& p = c.pixels;
 		const double len = p.back().v - p.front().v + 1;
 		if (len < options.min_length_px) return;

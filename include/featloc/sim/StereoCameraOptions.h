@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "featloc/stereo/StereoHead.h"
+
 namespace featloc
 {
 /** `[StereoCamera]` of a world file: a rectified stereo head on the robot.
@@ -55,6 +57,9 @@ struct StereoCameraOptions : public mrpt::config::CLoadableOptions
 	mrpt::poses::CPose3D leftCameraOnRobot() const;
 	/** The calibration written into each CObservationStereoImages. */
 	mrpt::img::TStereoCamera stereoCamera() const;
+	/** The head as the stereo landmark extractor sees it (a level camera
+	 * is required; throws InputError naming [StereoCamera] otherwise). */
+	StereoHead head() const { return StereoHead::fromCalibration(stereoCamera(), leftCameraOnRobot(), "[StereoCamera]"); }
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& c, const std::string& s) override;

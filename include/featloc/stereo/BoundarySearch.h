@@ -46,6 +46,7 @@ class BoundarySearch
 	struct Result
 	{
 		bool found = false;
+		bool atA = true;  //!< at the region's end a (else b)
 		double u = 0, sigma = 0;  //!< [px] left-image column and its sigma
 		size_t rows = 0;  //!< rows with a disparity boundary
 		std::string method;	 //!< "disparity", "outer segment", "disparity, snapped to segment"

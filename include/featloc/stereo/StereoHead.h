@@ -1,5 +1,7 @@
 #pragma once
+#include <mrpt/img/TStereoCamera.h>
 #include <mrpt/obs/obs_frwds.h>
+#include <mrpt/poses/poses_frwds.h>
 
 #include <Eigen/Core>
 #include <string>
@@ -28,6 +30,12 @@ class StereoHead
 	static StereoHead fromObservation(
 		const mrpt::obs::CObservationStereoImages& obs, const std::string& where,
 		double maxTiltDeg = 10);
+	/** The same from a calibration (left camera, baseline = length of
+	 * rightCameraPose) and the left camera's pose on the robot (optical
+	 * axes: z ahead, x right, y down). */
+	static StereoHead fromCalibration(
+		const mrpt::img::TStereoCamera& calibration, const mrpt::poses::CPose3D& cameraOnRobot,
+		const std::string& where, double maxTiltDeg = 10);
 
 	/** Camera coordinates of world point p seen from robot pose X = (x, y,
 	 * yaw), and optionally d c / d X (2x3). */
@@ -43,6 +51,9 @@ class StereoHead
 	Eigen::Vector2d project(const Eigen::Vector2d& c, Eigen::Matrix2d* J = nullptr) const;
 	/** The inverse: c from (x_l, x_r), and optionally d c / d (x_l, x_r). */
 	Eigen::Vector2d triangulate(double xl, double xr, Eigen::Matrix2d* J = nullptr) const;
+	/** Where the ray of left-image column u meets the line p + t dir
+	 * (camera coordinates); false when they are parallel. */
+	bool columnRayMeets(double u, const Eigen::Vector2d& p, const Eigen::Vector2d& dir, Eigen::Vector2d& c) const;
 	/** Height above the floor of image row v at depth c_y (level camera). */
 	double heightAt(double v, double depth) const { return camZ + (cy - v) * depth / fy; }
 };

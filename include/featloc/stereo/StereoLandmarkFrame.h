@@ -23,9 +23,8 @@ struct StereoLandmarkFrame
 	cv::Mat disparity;	//!< 2.2, CV_32F, <= 0 invalid
 	int sadMin = 0, sadRange = 0;  //!< disparities searched: sadMin .. sadMin + sadRange - 1
 	std::vector<PlanarRegion> planes;  //!< 2.3, every map wall tried
-	/** Per plane: the boundary found (3.2) and at which end. */
+	/** Per plane: the boundary found (3.2), and at which end. */
 	std::vector<BoundarySearch::Result> boundaries;
-	std::vector<bool> boundaryAtA;
 	std::vector<ModelledFeature> features;	//!< 3.3 and 4
 	double seconds = 0, disparitySeconds = 0;
 };
