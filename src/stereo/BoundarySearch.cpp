@@ -5,8 +5,8 @@
 
 namespace featloc
 {
-BoundarySearch::Result BoundarySearch::search(
-	const PlanarRegion& region, bool atA, const std::vector<double>& segmentColumns) const
+BoundarySearch::Result BoundarySearch::search(const PlanarRegion& region, const cv::Mat& disparity, bool atA,
+	const std::vector<double>& segmentColumns, double expectedRows, bool segmentAlone) const
 {
 	Result res;
 	res.atA = atA;
@@ -25,6 +25,7 @@ BoundarySearch::Result BoundarySearch::search(
 	for (int v = 0; v < region.mask.rows; v++)
 	{
 		const uchar* m = region.mask.ptr<uchar>(v);
+		const float* d = disparity.empty() ? nullptr : disparity.ptr<float>(v);
 		// The plane must fill the window's inner edge (within 2 px).
 		int start = -1;
 		for (int k = 0; k <= 2; k++)
@@ -49,7 +50,30 @@ BoundarySearch::Result BoundarySearch::search(
 				break;
 			}
 		}
-		if (ended) b.push_back(last + 0.5 * outward);
+		if (!ended) continue;
+		// Evidence that the plane ends here, not only its texture: past
+		// its last pixel the SAD image sees something else (a valid
+		// disparity off the plane) within evidence_px, or the image ends.
+		// Something nearer than the plane there occludes it: its end is
+		// hidden, and the row says nothing about where it is.
+		bool seen = d == nullptr, occluded = false;
+		for (int k = 1; !seen && k <= options.evidence_px; k++)
+		{
+			const int u = last + outward * k;
+			if (u < 0 || u >= W)
+				seen = true;
+			else if (d[u] > 0 && !m[u])
+			{
+				seen = true;
+				occluded = d[u] > d[last] + options.occluder_px;
+			}
+		}
+		if (seen && !occluded)
+			b.push_back(last + 0.5 * outward);
+		else if (occluded)
+			res.occludedRows++;
+		else
+			res.textureEnds++;
 	}
 	res.rows = b.size();
 
@@ -60,7 +84,7 @@ BoundarySearch::Result BoundarySearch::search(
 		if (u >= wl - 0.5 && u <= wr + 0.5 && (!hasSeg || (u - outerSeg) * outward > 0))
 			outerSeg = u, hasSeg = true;
 
-	if (b.size() >= options.min_rows)
+	if (b.size() >= options.min_rows && static_cast<double>(b.size()) >= options.min_row_fraction * expectedRows)
 	{
 		// Minimum variance over virtual means in the window.
 		double bestV = 1e300, bestM = uE;
@@ -93,7 +117,7 @@ BoundarySearch::Result BoundarySearch::search(
 		}
 		return res;
 	}
-	if (hasSeg)
+	if (hasSeg && segmentAlone)
 	{
 		res.found = true;
 		res.u = outerSeg;

@@ -3,9 +3,16 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace featloc
 {
+namespace
+{
+/** chi2 with 2 degrees of freedom at the probability of 3 sigma (99.73%). */
+constexpr double kChi2TwoDof3Sigma = 11.83;
+}  // namespace
+
 namespace
 {
 /** Eqs. (9)-(10): the disparity d = D(X) of camera point c (a point of the
@@ -164,6 +171,35 @@ PlanarRegion PlanarRegionExtractor::extract(
 	r.rms = std::sqrt(sum2 / static_cast<double>(ws.size()));
 	r.fit.lineCovariance =
 		Ninv * std::max(1.0, chi2 / dof) * static_cast<double>(options.block_size * options.block_size);
+
+	// The pixels are the wall's only if the fitted line is where the map
+	// puts the wall, within the robot's uncertainty (featloc's check: the
+	// disparity band of a small wall also takes in a neighbour seen at
+	// the same depth). The map's line in this frame is (0, 0); its
+	// covariance from Sigma_X by central differences.
+	const auto mapLine = [&](const Eigen::Vector3d& Xp) {
+		const Eigen::Vector2d pa = r.fit.toPlane(head.toCamera(Xp, wall.a)),
+							  pb = r.fit.toPlane(head.toCamera(Xp, wall.b));
+		const double slope = (pb.y() - pa.y()) / (pb.x() - pa.x());
+		return Eigen::Vector2d(pa.y() - slope * pa.x(), slope);
+	};
+	Eigen::Matrix<double, 2, 3> Jl;
+	for (int i = 0; i < 3; i++)
+	{
+		Eigen::Vector3d dx = Eigen::Vector3d::Zero();
+		dx(i) = 1e-6;
+		Jl.col(i) = (mapLine(X + dx) - mapLine(X - dx)) / 2e-6;
+	}
+	const Eigen::Matrix2d S = Jl * SigmaX * Jl.transpose() + r.fit.lineCovariance;
+	r.mapDistance2 = r.fit.line.dot(S.ldlt().solve(r.fit.line));
+	if (r.mapDistance2 > kChi2TwoDof3Sigma)
+	{
+		char why[120];
+		std::snprintf(why, sizeof(why), "its pixels fit a line %.2f m / %.1f deg from the map's wall (chi2 %.0f)",
+			r.fit.line.x(), std::atan(r.fit.line.y()) * 180 / M_PI, r.mapDistance2);
+		r.reason = why;
+		return r;
+	}
 	r.fitted = true;
 	return r;
 }

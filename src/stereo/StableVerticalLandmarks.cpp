@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "featloc/config/ConfigValues.h"
 #include "featloc/config/TrackedConfig.h"
@@ -101,6 +102,28 @@ void StableVerticalLandmarks::saveParams(mrpt::config::CConfigFileBase& c, const
 		"a segment within 3 sigma outward of the SAD boundary is the boundary (featloc)");
 	write(c, s, "min_length_similarity", options.min_length_similarity,
 		"eq. (18): least min/max length of the left and right segments of a landmark");
+}
+
+bool StableVerticalLandmarks::continuesCoplanar(size_t w, bool atA) const
+{
+	const auto& wall = walls[w];
+	const Eigen::Vector2d end = atA ? wall.a : wall.b, dir = (wall.b - wall.a) / wall.length();
+	for (size_t k = 0; k < walls.size(); k++)
+	{
+		if (k == w) continue;
+		const auto& o = walls[k];
+		const Eigen::Vector2d od = (o.b - o.a) / o.length();
+		const Eigen::Vector2d n(-od.y(), od.x());
+		if (std::abs(dir.x() * od.y() - dir.y() * od.x()) > std::sin(kCoplanarAngle)) continue;
+		if (std::abs(n.dot(end - o.a)) > kCoplanarDistance) continue;
+		const double t = od.dot(end - o.a);
+		// The other wall carries on past this end (not merely meets it).
+		const double out = atA ? -1 : 1;  // along dir, leaving this wall
+		const double tPast = od.dot(end + out * kCoplanarDistance * dir - o.a);
+		if (t > -kCoplanarDistance && t < o.length() + kCoplanarDistance && tPast >= 0 && tPast <= o.length())
+			return true;
+	}
+	return false;
 }
 
 cv::Mat StableVerticalLandmarks::disparity(
@@ -201,6 +224,9 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 		f.planes.push_back(planes.extract(walls[w], w, head, X, SX, f.disparity));
 
 	// 4. Matches on a plane (2.4), constrained to it (3.1).
+	Eigen::Matrix2d Rw;	 // camera axes in the world
+	Rw.col(0) = head.directionToWorld(X, {1, 0});
+	Rw.col(1) = head.directionToWorld(X, {0, 1});
 	struct OnPlane
 	{
 		size_t match;
@@ -220,8 +246,13 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 		Eigen::Matrix2d J;
 		const Eigen::Vector2d cTilde = head.triangulate(l.uAt(vm), r.uAt(vm), &J);
 		const Eigen::Matrix2d PTilde = J * J.transpose() * s2img;
-		long best = -1;
-		OnPlane bestOn{};
+		struct Candidate
+		{
+			size_t plane;
+			double m2;
+			OnPlane on;
+		};
+		std::vector<Candidate> candidates;
 		for (size_t p = 0; p < f.planes.size(); p++)
 		{
 			const auto& pl = f.planes[p];
@@ -236,15 +267,33 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			double m2 = 0;
 			on.c = pl.fit.constrain(cTilde, PTilde, on.P, &m2);
 			if (m2 > 9) continue;  // not on this plane
-			if (best < 0 || walls[p].length() < walls[static_cast<size_t>(best)].length())
-				best = static_cast<long>(p), bestOn = on;
+			// ... nor on this wall if it lies beyond the wall's ends (a
+			// plane is the wall's line, a wall is a piece of it).
+			{
+				const auto& w = walls[p];
+				const Eigen::Vector2d uw = (w.b - w.a) / w.length();
+				const double t = uw.dot(head.toWorld(X, on.c) - w.a);
+				const Eigen::Vector2d uc = Rw.transpose() * uw;	 // along the wall, camera axes
+				const double s2 = uc.dot(on.P * uc) + SX(0, 0) + SX(1, 1) + on.c.squaredNorm() * SX(2, 2);
+				const double margin = options.window_sigmas * std::sqrt(s2);
+				if (t < -margin || t > w.length() + margin) continue;
+			}
+			candidates.push_back({p, m2, on});
 		}
-		if (best < 0)
+		if (candidates.empty())
 		{
 			f.matchRejection[i] = "not on a reference plane";
 			continue;
 		}
-		byPlane[static_cast<size_t>(best)].push_back(bestOn);
+		// The plane it fits best; of planes it fits as well (within one
+		// unit of Mahalanobis distance: coplanar walls), the shortest wall
+		// (a whiteboard rather than the wall it hangs on).
+		double m2min = 1e300;
+		for (const auto& c : candidates) m2min = std::min(m2min, c.m2);
+		const Candidate* best = nullptr;
+		for (const auto& c : candidates)
+			if (c.m2 <= m2min + 1 && (!best || walls[c.plane].length() < walls[best->plane].length())) best = &c;
+		byPlane[best->plane].push_back(best->on);
 	}
 
 	// 5. Boundaries (3.2) and positions relative to them (3.3); 6. selection (4).
@@ -256,9 +305,6 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 	const BoundarySearch boundaries(bo);
 	const double psi0 = head.camYaw;
 	const Eigen::Vector2d camRight(std::sin(psi0), -std::cos(psi0)), camFwd(std::cos(psi0), std::sin(psi0));
-	Eigen::Matrix2d Rw;	 // camera axes in the world
-	Rw.col(0) = head.directionToWorld(X, {1, 0});
-	Rw.col(1) = head.directionToWorld(X, {0, 1});
 	Eigen::Matrix2d camToRobot;
 	camToRobot.col(0) = camRight;
 	camToRobot.col(1) = camFwd;
@@ -277,7 +323,17 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 		for (const bool atA : {true, false})
 		{
 			if (!(atA ? pl.aInView : pl.bInView)) continue;
-			const auto b = boundaries.search(pl, atA, cols);
+			// Rows the wall's height band spans at that end.
+			const double depthE = head.toCamera(X, atA ? walls[p].a : walls[p].b).y();
+			double rows = 0;
+			if (depthE > 0)
+			{
+				const auto vAt = [&](double h) {
+					return std::clamp(head.cy - head.fy * (h - head.camZ) / depthE, 0.0, static_cast<double>(H));
+				};
+				rows = vAt(options.min_height) - vAt(options.max_height);
+			}
+			const auto b = boundaries.search(pl, f.disparity, atA, cols, rows, continuesCoplanar(p, atA));
 			if (b.found && (!best.found || b.sigma < best.sigma)) best = b;
 		}
 		f.boundaries[p] = best;
@@ -350,6 +406,42 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 				mf.reason = "length similarity " + std::to_string(mf.lengthSimilarity).substr(0, 4);
 			mf.selected = mf.reason.empty();
 			feats.push_back(mf);
+		}
+		// The boundary is the map's edge only if the features placed from it
+		// agree with their own stereo positions (featloc's check: the paper
+		// assumes the association). Along the wall, each feature's offset
+		// d_i = (P_i - U_i).u has an independent part, the plane update's
+		// e'(P~ - P)e, and common parts: the boundary's e'Pb e and the robot
+		// pose's. A texture-less wall end, or a door frame taken for the
+		// corner, shifts every feature by the same amount.
+		{
+			const Eigen::Vector2d u = (M2 - M1) / dM;
+			double sw = 0, swd = 0, pose2 = 0;
+			for (size_t k = 0; k < feats.size(); k++)
+			{
+				const auto& o = on[k];
+				const double indep = std::max(1e-8, e.dot((o.PTilde - o.P) * e));
+				const double d = u.dot(feats[k].position - feats[k].unconstrained);
+				sw += 1 / indep;
+				swd += d / indep;
+				const Eigen::Matrix2d Rp = feats[k].unconstrainedCovariance - Rw * o.PTilde * Rw.transpose();
+				pose2 += u.dot(Rp * u) / static_cast<double>(feats.size());
+			}
+			const double offset = swd / sw;
+			const double sigma = std::sqrt(1 / sw + e.dot(Pb * e) + pose2);
+			f.boundaryOffsets.resize(f.planes.size());
+			f.boundaryOffsets[p] = {offset, sigma};
+			if (std::abs(offset) > options.window_sigmas * sigma)
+			{
+				char why[160];
+				std::snprintf(why, sizeof(why), "boundary not the map's edge: features %+.2f m from their stereo positions (%.1f sigma)",
+					offset, std::abs(offset) / sigma);
+				for (auto& ft : feats)
+				{
+					ft.selected = false;
+					ft.reason = why;
+				}
+			}
 		}
 		std::sort(feats.begin(), feats.end(), [](const ModelledFeature& a, const ModelledFeature& b) {
 			return std::abs(a.dp) < std::abs(b.dp);

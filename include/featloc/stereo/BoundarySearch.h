@@ -12,7 +12,9 @@ namespace featloc
  * The search region is the end's predicted 3-sigma window. In each row
  * where the plane fills the window's inner edge, the boundary pixel is
  * where the plane's pixels stop (the last plane pixel before a run of
- * min_gap non-plane pixels, outward). A virtual mean m is moved over the
+ * min_gap non-plane pixels, outward), if the SAD image sees something
+ * else after it that is not nearer than the plane (an occluder hides
+ * the end; see evidence_px, occluder_px: featloc's addition). A virtual mean m is moved over the
  * window in 0.1 px steps and the variance of the boundary pixels about it
  * computed; the boundary is the m of minimum variance and its sigma the
  * square root of that variance (the rows' spread: an SAD boundary is
@@ -27,7 +29,8 @@ namespace featloc
  * sigma_img: the intensity edge of the plane's end is sharper than the
  * SAD disparity's. Without a disparity boundary in the window (the plane
  * continues, e.g. a whiteboard on a wall), the outermost segment in the
- * window is the boundary; without either, there is none. */
+ * window is the boundary if the caller allows it (segmentAlone); without
+ * either, there is none. */
 class BoundarySearch
 {
    public:
@@ -37,6 +40,18 @@ class BoundarySearch
 		double window_sigmas = 3;
 		int min_gap = 3;  //!< [px] non-plane run that ends the plane in a row
 		unsigned int min_rows = 10;
+		/** ... and at least this fraction of the rows the wall covers at
+		 * its end: a few textured rows of a blank wall are no boundary. */
+		double min_row_fraction = 0.25;
+		/** [px] a row's plane end counts only if a valid disparity off the
+		 * plane (or the image border) follows within this many pixels:
+		 * where a wall's texture fades, its SAD pixels stop without the
+		 * wall ending. */
+		int evidence_px = 12;
+		/** [px] that valid disparity, if larger than the plane's last
+		 * pixel's by more than this, is an occluder in front of the
+		 * plane: the row is not a boundary row. */
+		double occluder_px = 1.0;
 		bool snap_to_segment = true;
 	};
 	BoundarySearch() = default;
@@ -49,11 +64,21 @@ class BoundarySearch
 		bool atA = true;  //!< at the region's end a (else b)
 		double u = 0, sigma = 0;  //!< [px] left-image column and its sigma
 		size_t rows = 0;  //!< rows with a disparity boundary
+		size_t occludedRows = 0;  //!< rows where something nearer hid the plane's end
+		size_t textureEnds = 0;	 //!< rows where the plane's pixels stopped with nothing else seen after
 		std::string method;	 //!< "disparity", "outer segment", "disparity, snapped to segment"
 	};
 
 	/** The boundary at end a (atA) or b of `region`; `segmentColumns` are
-	 * the left-image columns of the segments found on the plane. */
-	Result search(const PlanarRegion& region, bool atA, const std::vector<double>& segmentColumns) const;
+	 * the left-image columns of the segments found on the plane;
+	 * `disparity` the SAD image (empty: no evidence check); `expectedRows`
+	 * how many image rows the wall spans at that end; `segmentAlone`:
+	 * whether an outer segment may be the boundary without a disparity
+	 * boundary (true only where the map continues the plane past the end,
+	 * as a wall behind a whiteboard: elsewhere the disparity must show the
+	 * end, and a texture edge in a 3-sigma window of a wall seen at a
+	 * grazing angle is metres from the corner). */
+	Result search(const PlanarRegion& region, const cv::Mat& disparity, bool atA,
+		const std::vector<double>& segmentColumns, double expectedRows = 0, bool segmentAlone = true) const;
 };
 }  // namespace featloc

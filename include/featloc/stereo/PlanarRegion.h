@@ -28,5 +28,9 @@ struct PlanarRegion
 	std::string reason;	 //!< why not fitted
 	PlaneFit fit;
 	double rms = 0;	 //!< [m] weighted RMS across the plane
+	/** Squared Mahalanobis distance of the fitted line from the map's
+	 * wall (robot and fit uncertainty); above chi2(2 dof, 3 sigma) the
+	 * region is not the wall and is not fitted. */
+	double mapDistance2 = 0;
 };
 }  // namespace featloc

@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,13 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 	StereoLandmarkFrame process(
 		const cv::Mat& left, const cv::Mat& right, const StereoHead& head,
 		const mrpt::poses::CPosePDFGaussian& robot) const override;
+
+	/** Whether the map carries wall w's plane on past its end a (or b):
+	 * another wall within kCoplanarAngle and kCoplanarDistance of its
+	 * line covers the end and continues beyond it (a whiteboard on a
+	 * wall). Only there may an intensity edge alone be the boundary. */
+	bool continuesCoplanar(size_t w, bool atA) const;
+	static constexpr double kCoplanarAngle = 2 * M_PI / 180, kCoplanarDistance = 0.05;
 
 	/** The SAD disparity image of stage 2 alone (CV_32F, <= 0 invalid),
 	 * searching minDisparity .. minDisparity + numDisparities - 1 (0: the

@@ -1,0 +1,91 @@
+#include "featloc/output/StereoDebugPicture.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace featloc
+{
+namespace
+{
+const cv::Scalar kDetected(150, 150, 150), kRejected(0, 140, 255), kOnPlane(0, 230, 255),
+	kSelected(40, 220, 40), kBoundary(255, 80, 255);
+
+cv::Point px(double u, double v) { return {static_cast<int>(std::lround(u)), static_cast<int>(std::lround(v))}; }
+
+void segmentLine(cv::Mat& img, const VerticalSegment& s, double vTop, double vBottom, const cv::Scalar& c, int w)
+{
+	cv::line(img, px(s.uAt(vTop), vTop), px(s.uAt(vBottom), vBottom), c, w, cv::LINE_AA);
+}
+
+cv::Scalar planeTint(size_t k)
+{
+	static const cv::Scalar tints[] = {{255, 120, 60}, {60, 120, 255}, {200, 60, 200}, {60, 200, 200},
+		{200, 200, 60}, {120, 60, 255}};
+	return tints[k % (sizeof(tints) / sizeof(tints[0]))];
+}
+}  // namespace
+
+cv::Mat StereoDebugPicture::draw(const cv::Mat& left, const StereoLandmarkFrame& f)
+{
+	cv::Mat img;
+	if (left.channels() == 1)
+		cv::cvtColor(left, img, cv::COLOR_GRAY2BGR);
+	else
+		img = left.clone();
+	const int H = img.rows;
+
+	// Planar regions: a translucent tint over each plane's pixels.
+	size_t shown = 0;
+	for (const auto& pl : f.planes)
+	{
+		if (pl.mask.empty() || !pl.fitted || pl.mask.size() != img.size()) continue;
+		cv::Mat tint(img.size(), img.type(), planeTint(shown++));
+		cv::Mat mixed;
+		cv::addWeighted(img, 0.65, tint, 0.35, 0, mixed);
+		mixed.copyTo(img, pl.mask);
+	}
+	// Segments, least interesting first so the selected ones end on top.
+	for (const auto& s : f.left) segmentLine(img, s, s.vTop, s.vBottom, kDetected, 1);
+	std::vector<bool> onPlane(f.matches.size(), false);
+	for (const auto& ft : f.features)
+		if (ft.match < onPlane.size()) onPlane[ft.match] = true;
+	for (size_t i = 0; i < f.matches.size(); i++)
+	{
+		if (onPlane[i]) continue;
+		const auto& m = f.matches[i];
+		segmentLine(img, f.left[m.left], m.vLow, m.vHigh, kRejected, 1);
+	}
+	for (const auto& ft : f.features)
+	{
+		const auto& m = f.matches[ft.match];
+		const auto& s = f.left[m.left];
+		segmentLine(img, s, s.vTop, s.vBottom, ft.selected ? kSelected : kOnPlane, ft.selected ? 3 : 2);
+		if (ft.selected)
+			cv::putText(img, std::to_string(ft.index), px(s.uAt(s.vTop) + 3, s.vTop + 12),
+				cv::FONT_HERSHEY_PLAIN, 0.9, kSelected, 1, cv::LINE_AA);
+	}
+	// Boundaries: the line and its 3-sigma bars (Fig. 6).
+	for (const auto& b : f.boundaries)
+	{
+		if (!b.found) continue;
+		cv::line(img, px(b.u, 0), px(b.u, H - 1), kBoundary, 1, cv::LINE_AA);
+		for (const int v : {2, H - 3})
+			cv::line(img, px(b.u - 3 * b.sigma, v), px(b.u + 3 * b.sigma, v), kBoundary, 2, cv::LINE_AA);
+	}
+	// Legend.
+	const std::pair<const char*, cv::Scalar> legend[] = {{"detected", kDetected}, {"matched, rejected", kRejected},
+		{"on plane", kOnPlane}, {"selected", kSelected}, {"boundary +-3 sigma", kBoundary}};
+	int x = 4;
+	cv::rectangle(img, cv::Rect(0, H - 16, img.cols, 16), cv::Scalar(0, 0, 0), cv::FILLED);
+	for (const auto& [text, colour] : legend)
+	{
+		cv::line(img, {x, H - 8}, {x + 12, H - 8}, colour, 3);
+		cv::putText(img, text, {x + 15, H - 4}, cv::FONT_HERSHEY_PLAIN, 0.8, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
+		x += 22 + 7 * static_cast<int>(std::string(text).size());
+	}
+	return img;
+}
+}  // namespace featloc
