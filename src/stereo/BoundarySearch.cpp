@@ -6,7 +6,8 @@
 namespace featloc
 {
 BoundarySearch::Result BoundarySearch::search(const PlanarRegion& region, const cv::Mat& disparity, bool atA,
-	const std::vector<double>& segmentColumns, double expectedRows, bool segmentAlone) const
+	const std::vector<double>& segmentColumns, const std::vector<double>& segmentLengths, double expectedRows,
+	bool segmentAlone) const
 {
 	Result res;
 	res.atA = atA;
@@ -22,6 +23,7 @@ BoundarySearch::Result BoundarySearch::search(const PlanarRegion& region, const 
 	const int inner = outward > 0 ? wl : wr, outer = outward > 0 ? wr : wl;
 
 	std::vector<double> b;
+	size_t planeRows = 0;  // rows where the plane fills the window's inner edge
 	for (int v = 0; v < region.mask.rows; v++)
 	{
 		const uchar* m = region.mask.ptr<uchar>(v);
@@ -35,6 +37,7 @@ BoundarySearch::Result BoundarySearch::search(const PlanarRegion& region, const 
 			if (start >= 0) break;
 		}
 		if (start < 0) continue;
+		planeRows++;
 		int last = start, gap = 0;
 		bool ended = false;
 		for (int u = start; (outward > 0 ? u <= outer : u >= outer); u += outward)
@@ -80,9 +83,15 @@ BoundarySearch::Result BoundarySearch::search(const PlanarRegion& region, const 
 	// The outermost segment in the window.
 	double outerSeg = 0;
 	bool hasSeg = false;
-	for (double u : segmentColumns)
-		if (u >= wl - 0.5 && u <= wr + 0.5 && (!hasSeg || (u - outerSeg) * outward > 0))
-			outerSeg = u, hasSeg = true;
+	// Only a segment as tall as a good part of the plane there can be its
+	// edge: a textured surface has short texture edges near its end.
+	for (size_t i = 0; i < segmentColumns.size(); i++)
+	{
+		const double u = segmentColumns[i];
+		const double len = i < segmentLengths.size() ? segmentLengths[i] : 1e9;
+		if (len < options.min_edge_fraction * static_cast<double>(planeRows)) continue;
+		if (u >= wl - 0.5 && u <= wr + 0.5 && (!hasSeg || (u - outerSeg) * outward > 0)) outerSeg = u, hasSeg = true;
+	}
 
 	if (b.size() >= options.min_rows && static_cast<double>(b.size()) >= options.min_row_fraction * expectedRows)
 	{
@@ -96,8 +105,13 @@ BoundarySearch::Result BoundarySearch::search(const PlanarRegion& region, const 
 			if (v < bestV) bestV = v, bestM = m;
 		}
 		res.found = true;
-		res.u = bestM;
-		res.sigma = std::max(options.sigma_img, std::sqrt(bestV));
+		res.u = res.uDisparity = bestM;
+		// SAD fattening: the surface in front carries its disparity up to
+		// half a block past its end, the same in every row: a bias the
+		// rows' spread does not show. As a uniform error on [0, block/2]
+		// its sigma is block / (2 sqrt 3).
+		const double fat = options.block_size / (2 * std::sqrt(3.0));
+		res.sigma = res.sigmaDisparity = std::max(options.sigma_img, std::sqrt(bestV + fat * fat));
 		res.method = "disparity";
 		if (hasSeg)
 		{

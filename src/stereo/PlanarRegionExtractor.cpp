@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace featloc
 {
@@ -11,6 +12,9 @@ namespace
 {
 /** chi2 with 2 degrees of freedom at the probability of 3 sigma (99.73%). */
 constexpr double kChi2TwoDof3Sigma = 11.83;
+/** A wall is hidden where another is nearer by more than this fraction of
+ * the depth plus this many metres. */
+constexpr double kOcclusionMargin = 0.05;
 }  // namespace
 
 namespace
@@ -61,7 +65,7 @@ bool PlanarRegionExtractor::disparityRange(
 
 PlanarRegion PlanarRegionExtractor::extract(
 	const MapWall& wall, size_t wallIndex, const StereoHead& head, const Eigen::Vector3d& X,
-	const Eigen::Matrix3d& SigmaX, const cv::Mat& disparity) const
+	const Eigen::Matrix3d& SigmaX, const cv::Mat& disparity, const std::vector<double>* nearest) const
 {
 	PlanarRegion r;
 	r.wall = wallIndex;
@@ -119,12 +123,33 @@ PlanarRegion PlanarRegionExtractor::extract(
 	Eigen::Matrix2d N = Eigen::Matrix2d::Zero();
 	Eigen::Vector2d rhs = Eigen::Vector2d::Zero();
 	std::vector<double> ws, ss, vars;
+	// Occlusion by nearer walls, kept only where it holds across the
+	// column's 3-sigma window (the nearest depth's maximum over it).
+	std::vector<double> hidden;
+	if (nearest && static_cast<int>(nearest->size()) == disparity.cols)
+	{
+		const int w = static_cast<int>(std::ceil(k * std::max(r.sigmaUA, r.sigmaUB)));
+		hidden.assign(nearest->size(), 0);
+		for (int u = 0; u < disparity.cols; u++)
+		{
+			double m = 0;
+			for (int j = std::max(0, u - w); j <= std::min(disparity.cols - 1, u + w); j++)
+				m = std::max(m, (*nearest)[static_cast<size_t>(j)]);
+			hidden[static_cast<size_t>(u)] = m;
+		}
+	}
+	size_t occludedColumns = 0;
 	for (int u = r.uMin; u <= r.uMax; u++)
 	{
 		// The ray of column u meets the predicted wall.
 		Eigen::Vector2d c;
 		if (!head.columnRayMeets(u, ca, cb - ca, c)) continue;
 		if (c.y() < near) continue;
+		if (!hidden.empty() && c.y() > hidden[static_cast<size_t>(u)] * (1 + kOcclusionMargin) + kOcclusionMargin)
+		{
+			occludedColumns++;
+			continue;
+		}
 		double sigmaD = 0;
 		const double dPred = predictedDisparity(head, X, SigmaX, c, s2nu, sigmaD);
 		for (int v = 0; v < disparity.rows; v++)
@@ -155,6 +180,7 @@ PlanarRegion PlanarRegionExtractor::extract(
 	if (r.pixels < options.min_pixels)
 	{
 		r.reason = "too few disparity pixels on it (" + std::to_string(r.pixels) + ")";
+		if (occludedColumns > 0) r.reason += ", " + std::to_string(occludedColumns) + " columns hidden by nearer walls";
 		return r;
 	}
 	N(1, 0) = N(0, 1);
@@ -202,5 +228,26 @@ PlanarRegion PlanarRegionExtractor::extract(
 	}
 	r.fitted = true;
 	return r;
+}
+std::vector<double> PlanarRegionExtractor::nearestWallDepth(
+	const std::vector<MapWall>& walls, const StereoHead& head, const Eigen::Vector3d& X) const
+{
+	std::vector<double> depth(static_cast<size_t>(head.width), std::numeric_limits<double>::infinity());
+	for (const auto& w : walls)
+	{
+		const Eigen::Vector2d ca = head.toCamera(X, w.a), cb = head.toCamera(X, w.b);
+		if (ca.y() < options.near_limit && cb.y() < options.near_limit) continue;
+		for (int u = 0; u < head.width; u++)
+		{
+			Eigen::Vector2d c;
+			if (!head.columnRayMeets(u, ca, cb - ca, c) || c.y() < options.near_limit) continue;
+			// On the wall: between its ends.
+			const double t = (c - ca).dot(cb - ca) / (cb - ca).squaredNorm();
+			if (t < 0 || t > 1) continue;
+			auto& d = depth[static_cast<size_t>(u)];
+			d = std::min(d, c.y());
+		}
+	}
+	return depth;
 }
 }  // namespace featloc

@@ -53,6 +53,7 @@ void StableVerticalLandmarks::loadParams(const mrpt::config::CConfigFileBase& c,
 	read(c, s, "min_height", options.min_height);
 	read(c, s, "max_height", options.max_height);
 	read(c, s, "boundary_sigmas", options.boundary_sigmas);
+	read(c, s, "min_boundary_angle_deg", options.min_boundary_angle_deg);
 	read(c, s, "snap_to_segment", options.snap_to_segment);
 	read(c, s, "min_length_similarity", options.min_length_similarity);
 	require(options.block_size >= 5 && options.block_size <= 255 && options.block_size % 2 == 1, c, s,
@@ -66,6 +67,8 @@ void StableVerticalLandmarks::loadParams(const mrpt::config::CConfigFileBase& c,
 	require(options.sigma_img > 0, c, s, "sigma_img", "> 0");
 	require(options.window_sigmas > 0, c, s, "window_sigmas", "> 0");
 	require(options.boundary_sigmas >= 0, c, s, "boundary_sigmas", ">= 0");
+	require(options.min_boundary_angle_deg >= 0 && options.min_boundary_angle_deg < 90, c, s,
+		"min_boundary_angle_deg", "in [0, 90)");
 	require(options.min_length_similarity >= 0 && options.min_length_similarity <= 1, c, s,
 		"min_length_similarity", "in [0, 1]");
 	require(!options.map.empty(), c, s, "map",
@@ -98,10 +101,22 @@ void StableVerticalLandmarks::saveParams(mrpt::config::CConfigFileBase& c, const
 		"[m] wall points higher than this are left out of the plane fit (the ceiling)");
 	write(c, s, "boundary_sigmas", options.boundary_sigmas,
 		"a feature this many sigma from the plane boundary is unstable (paper: 3)");
+	write(c, s, "min_boundary_angle_deg", options.min_boundary_angle_deg,
+		"[deg] a wall end seen at a smaller angle between the view ray and the wall is not searched (featloc)");
 	write(c, s, "snap_to_segment", options.snap_to_segment,
 		"a segment within 3 sigma outward of the SAD boundary is the boundary (featloc)");
 	write(c, s, "min_length_similarity", options.min_length_similarity,
 		"eq. (18): least min/max length of the left and right segments of a landmark");
+}
+
+bool StableVerticalLandmarks::collinear(size_t w, size_t k) const
+{
+	if (w == k) return true;
+	const auto &a = walls[w], &o = walls[k];
+	const Eigen::Vector2d dir = (a.b - a.a) / a.length(), od = (o.b - o.a) / o.length();
+	const Eigen::Vector2d n(-od.y(), od.x());
+	return std::abs(dir.x() * od.y() - dir.y() * od.x()) <= std::sin(kCoplanarAngle) &&
+		std::abs(n.dot(a.a - o.a)) <= kCoplanarDistance && std::abs(n.dot(a.b - o.a)) <= kCoplanarDistance;
 }
 
 bool StableVerticalLandmarks::continuesCoplanar(size_t w, bool atA) const
@@ -111,11 +126,9 @@ bool StableVerticalLandmarks::continuesCoplanar(size_t w, bool atA) const
 	for (size_t k = 0; k < walls.size(); k++)
 	{
 		if (k == w) continue;
+		if (!collinear(w, k)) continue;
 		const auto& o = walls[k];
 		const Eigen::Vector2d od = (o.b - o.a) / o.length();
-		const Eigen::Vector2d n(-od.y(), od.x());
-		if (std::abs(dir.x() * od.y() - dir.y() * od.x()) > std::sin(kCoplanarAngle)) continue;
-		if (std::abs(n.dot(end - o.a)) > kCoplanarDistance) continue;
 		const double t = od.dot(end - o.a);
 		// The other wall carries on past this end (not merely meets it).
 		const double out = atA ? -1 : 1;  // along dir, leaving this wall
@@ -220,8 +233,9 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 	}
 
 	// 3. Reference planes (2.3).
+	const auto nearest = planes.nearestWallDepth(walls, head, X);
 	for (size_t w = 0; w < walls.size(); w++)
-		f.planes.push_back(planes.extract(walls[w], w, head, X, SX, f.disparity));
+		f.planes.push_back(planes.extract(walls[w], w, head, X, SX, f.disparity, &nearest));
 
 	// 4. Matches on a plane (2.4), constrained to it (3.1).
 	Eigen::Matrix2d Rw;	 // camera axes in the world
@@ -285,14 +299,18 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			f.matchRejection[i] = "not on a reference plane";
 			continue;
 		}
-		// The plane it fits best; of planes it fits as well (within one
-		// unit of Mahalanobis distance: coplanar walls), the shortest wall
-		// (a whiteboard rather than the wall it hangs on).
-		double m2min = 1e300;
-		for (const auto& c : candidates) m2min = std::min(m2min, c.m2);
-		const Candidate* best = nullptr;
+		// The plane it fits best; of walls on that plane's line that it
+		// fits as well (within one unit of Mahalanobis distance), the
+		// shortest (a whiteboard rather than the wall it hangs on). Two
+		// faces meeting at a corner are not coplanar: the better fit wins.
+		const Candidate* fit = &candidates.front();
 		for (const auto& c : candidates)
-			if (c.m2 <= m2min + 1 && (!best || walls[c.plane].length() < walls[best->plane].length())) best = &c;
+			if (c.m2 < fit->m2) fit = &c;
+		const Candidate* best = fit;
+		for (const auto& c : candidates)
+			if (c.m2 <= fit->m2 + 1 && collinear(c.plane, fit->plane) &&
+				walls[c.plane].length() < walls[best->plane].length())
+				best = &c;
 		byPlane[best->plane].push_back(best->on);
 	}
 
@@ -302,6 +320,7 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 	bo.sigma_img = options.sigma_img;
 	bo.window_sigmas = options.window_sigmas;
 	bo.snap_to_segment = options.snap_to_segment;
+	bo.block_size = options.block_size;
 	const BoundarySearch boundaries(bo);
 	const double psi0 = head.camYaw;
 	const Eigen::Vector2d camRight(std::sin(psi0), -std::cos(psi0)), camFwd(std::cos(psi0), std::sin(psi0));
@@ -313,16 +332,26 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 		auto& on = byPlane[p];
 		if (on.empty()) continue;
 		const auto& pl = f.planes[p];
-		std::vector<double> cols;
+		std::vector<double> cols, lengths;
 		for (const auto& o : on)
 		{
 			const auto& m = f.matches[o.match];
 			cols.push_back(f.left[m.left].uAt(0.5 * (m.vLow + m.vHigh)));
+			lengths.push_back(m.vHigh - m.vLow + 1);
 		}
 		BoundarySearch::Result best;
 		for (const bool atA : {true, false})
 		{
 			if (!(atA ? pl.aInView : pl.bInView)) continue;
+			// An end seen at a grazing angle cannot be placed: one pixel
+			// is depth / (fx sin(angle)) along the wall, and the SAD
+			// window spans the corner.
+			{
+				const Eigen::Vector2d ce = head.toCamera(X, atA ? walls[p].a : walls[p].b);
+				const Eigen::Vector2d wd = head.toCamera(X, walls[p].b) - head.toCamera(X, walls[p].a);
+				const double sinAngle = std::abs(ce.x() * wd.y() - ce.y() * wd.x()) / (ce.norm() * wd.norm());
+				if (sinAngle < std::sin(options.min_boundary_angle_deg * M_PI / 180)) continue;
+			}
 			// Rows the wall's height band spans at that end.
 			const double depthE = head.toCamera(X, atA ? walls[p].a : walls[p].b).y();
 			double rows = 0;
@@ -333,7 +362,7 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 				};
 				rows = vAt(options.min_height) - vAt(options.max_height);
 			}
-			const auto b = boundaries.search(pl, f.disparity, atA, cols, rows, continuesCoplanar(p, atA));
+			const auto b = boundaries.search(pl, f.disparity, atA, cols, lengths, rows, continuesCoplanar(p, atA));
 			if (b.found && (!best.found || b.sigma < best.sigma)) best = b;
 		}
 		f.boundaries[p] = best;

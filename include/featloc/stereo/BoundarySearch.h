@@ -17,13 +17,16 @@ namespace featloc
  * the end; see evidence_px, occluder_px: featloc's addition). A virtual mean m is moved over the
  * window in 0.1 px steps and the variance of the boundary pixels about it
  * computed; the boundary is the m of minimum variance and its sigma the
- * square root of that variance (the rows' spread: an SAD boundary is
- * fattened by up to half the block, the same way in every row, so the
- * spread, not the spread / sqrt(rows), is its uncertainty), at least
- * sigma_img.
+ * square root of that variance (the rows' spread, not the spread /
+ * sqrt(rows)) plus, in quadrature, SAD fattening: the surface in front
+ * carries its disparity up to half a block past its end in every row, a
+ * bias the spread does not show (uniform on [0, block/2]: sigma
+ * block / (2 sqrt 3)); at least sigma_img.
  *
  * The paper's rule: a boundary inward of the outermost segment on the
- * plane is moved to that segment. With snap_to_segment (featloc's
+ * plane is moved to that segment. Only segments at least
+ * min_edge_fraction as tall as the plane there count (featloc: on a
+ * textured surface the outermost texture edge is not its end). With snap_to_segment (featloc's
  * addition, on by default), an outermost segment within 3 sigma outward
  * of the disparity boundary is taken as the boundary too, with
  * sigma_img: the intensity edge of the plane's end is sharper than the
@@ -53,6 +56,10 @@ class BoundarySearch
 		 * plane: the row is not a boundary row. */
 		double occluder_px = 1.0;
 		bool snap_to_segment = true;
+		/** A segment is a candidate edge only if at least this fraction
+		 * of the rows where the plane reaches the window long. */
+		double min_edge_fraction = 0.5;
+		int block_size = 15;  //!< [px] of the SAD matcher (its fattening)
 	};
 	BoundarySearch() = default;
 	explicit BoundarySearch(const Options& o) : options(o) {}
@@ -63,6 +70,9 @@ class BoundarySearch
 		bool found = false;
 		bool atA = true;  //!< at the region's end a (else b)
 		double u = 0, sigma = 0;  //!< [px] left-image column and its sigma
+		/** [px] the minimum-variance boundary of the disparity alone and
+		 * its sigma, before any segment rule (0 when there is none). */
+		double uDisparity = 0, sigmaDisparity = 0;
 		size_t rows = 0;  //!< rows with a disparity boundary
 		size_t occludedRows = 0;  //!< rows where something nearer hid the plane's end
 		size_t textureEnds = 0;	 //!< rows where the plane's pixels stopped with nothing else seen after
@@ -70,7 +80,8 @@ class BoundarySearch
 	};
 
 	/** The boundary at end a (atA) or b of `region`; `segmentColumns` are
-	 * the left-image columns of the segments found on the plane;
+	 * the left-image columns of the segments found on the plane and
+	 * `segmentLengths` their lengths [px] (empty: any length);
 	 * `disparity` the SAD image (empty: no evidence check); `expectedRows`
 	 * how many image rows the wall spans at that end; `segmentAlone`:
 	 * whether an outer segment may be the boundary without a disparity
@@ -79,6 +90,7 @@ class BoundarySearch
 	 * end, and a texture edge in a 3-sigma window of a wall seen at a
 	 * grazing angle is metres from the corner). */
 	Result search(const PlanarRegion& region, const cv::Mat& disparity, bool atA,
-		const std::vector<double>& segmentColumns, double expectedRows = 0, bool segmentAlone = true) const;
+		const std::vector<double>& segmentColumns, const std::vector<double>& segmentLengths = {},
+		double expectedRows = 0, bool segmentAlone = true) const;
 };
 }  // namespace featloc

@@ -1,4 +1,5 @@
 #pragma once
+#include <vector>
 #include <mrpt/config/CConfigFileBase.h>
 #include <opencv2/core/mat.hpp>
 
@@ -59,9 +60,20 @@ class PlanarRegionExtractor
 		const MapWall& wall, const StereoHead& head, const Eigen::Vector3d& X,
 		const Eigen::Matrix3d& SigmaX, double& dMin, double& dMax) const;
 
-	/** `disparity`: CV_32F left-image disparities, <= 0 where invalid. */
+	/** Per image column, the depth [m] at which its ray first meets a
+	 * wall of `walls` (beyond near_limit; +inf where none): what the map
+	 * says hides what. */
+	std::vector<double> nearestWallDepth(
+		const std::vector<MapWall>& walls, const StereoHead& head, const Eigen::Vector3d& X) const;
+
+	/** `disparity`: CV_32F left-image disparities, <= 0 where invalid.
+	 * `nearest` (from nearestWallDepth, optional): columns where another
+	 * wall of the map is nearer than this one, over the whole 3-sigma
+	 * window of the column, are occluded and not searched (the paper's
+	 * scene has nothing in front of its planes; a room has desks). */
 	PlanarRegion extract(
 		const MapWall& wall, size_t wallIndex, const StereoHead& head, const Eigen::Vector3d& X,
-		const Eigen::Matrix3d& SigmaX, const cv::Mat& disparity) const;
+		const Eigen::Matrix3d& SigmaX, const cv::Mat& disparity,
+		const std::vector<double>* nearest = nullptr) const;
 };
 }  // namespace featloc

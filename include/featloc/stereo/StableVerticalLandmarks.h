@@ -25,9 +25,10 @@ namespace featloc
  *     disparity_tolerance_px away, or too few valid ones) is dropped (2.2);
  *  3. the map's walls as reference planes: predicted region, disparity
  *     pixels and line fit (PlanarRegionExtractor, 2.3);
- *  4. the matches on a plane (most of the band in its region; of several
- *     consistent planes the shortest wall: a whiteboard rather than the
- *     wall it hangs on) (2.4), each constrained to it by the Kalman update
+ *  4. the matches on a plane (most of the band in its region, within
+ *     3 sigma of the wall's extent; the best fitting plane, and of
+ *     collinear walls fitting as well the shortest: a whiteboard rather
+ *     than the wall it hangs on) (2.4), each constrained to it by the Kalman update
  *     of eqs. (12)-(14) (PlaneFit::constrain, 3.1);
  *  5. the plane's boundary at a visible end (BoundarySearch, 3.2), put on
  *     the plane the same way, and each feature's position relative to it,
@@ -60,6 +61,9 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 		unsigned int min_plane_pixels = 300;
 		double min_height = 0.1, max_height = 2.4;	//!< [m] band of wall points used (2.3)
 		double boundary_sigmas = 3;	 //!< paper, section 4
+		/** [deg] least angle between the view ray and the wall at an end
+		 * for its boundary to be searched (featloc's addition). */
+		double min_boundary_angle_deg = 20;
 		bool snap_to_segment = true;
 		double min_length_similarity = 0.7;	 //!< paper, section 4 (threshold not given)
 	};
@@ -78,6 +82,9 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 	 * line covers the end and continues beyond it (a whiteboard on a
 	 * wall). Only there may an intensity edge alone be the boundary. */
 	bool continuesCoplanar(size_t w, bool atA) const;
+	/** Whether walls w and k lie on one line (within kCoplanarAngle and
+	 * kCoplanarDistance). */
+	bool collinear(size_t w, size_t k) const;
 	static constexpr double kCoplanarAngle = 2 * M_PI / 180, kCoplanarDistance = 0.05;
 
 	/** The SAD disparity image of stage 2 alone (CV_32F, <= 0 invalid),

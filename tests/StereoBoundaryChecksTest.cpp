@@ -1,0 +1,144 @@
+// The checks featloc adds to Moon, Miura & Shirai's boundary search and
+// plane association (found on scenes other than the paper's, see
+// doc/benchmarks.md), each on a hand-made case.
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "featloc/registerClasses.h"
+#include "featloc/stereo/BoundarySearch.h"
+#include "featloc/stereo/PlanarRegionExtractor.h"
+#include "featloc/stereo/StableVerticalLandmarks.h"
+#include "support/TempDir.h"
+
+using namespace featloc;
+
+namespace
+{
+/** A plane filling columns 40..100 of every row, predicted to end at
+ * column 100 (end a; its other end b at column 10), and a disparity image
+ * with `beyond` past its end (d = 10 on the plane). */
+struct HandMadeEnd
+{
+	PlanarRegion region;
+	cv::Mat disparity;
+	explicit HandMadeEnd(float beyond)
+	{
+		region.mask = cv::Mat::zeros(60, 200, CV_8U);
+		region.mask.colRange(40, 101).setTo(255);
+		region.uA = 100;
+		region.sigmaUA = 3;
+		region.uB = 10;
+		region.sigmaUB = 3;
+		region.aInView = region.bInView = true;
+		disparity = cv::Mat(60, 200, CV_32F, cv::Scalar(10));
+		disparity.colRange(101, 200).setTo(beyond);
+	}
+};
+}  // namespace
+
+TEST(StereoBoundaryChecks, ABoundaryNeedsTheSurfaceBeyondToBeSeenAndNotNearer)
+{
+	const BoundarySearch search;
+	// A farther surface seen past the end: the end is there (the last
+	// plane pixel is 100, the boundary half a pixel out).
+	const auto farther = search.search(HandMadeEnd(5).region, HandMadeEnd(5).disparity, true, {});
+	ASSERT_TRUE(farther.found);
+	EXPECT_NEAR(farther.u, 100.5, 0.11);
+	EXPECT_EQ(farther.rows, 60u);
+	// SAD fattening is in its sigma: half a 15 px block, uniform.
+	EXPECT_NEAR(farther.sigma, 15 / (2 * std::sqrt(3.0)), 0.05);
+
+	// Nothing valid past it (a blank wall whose texture fades): no boundary.
+	const HandMadeEnd blank(-1);
+	const auto faded = search.search(blank.region, blank.disparity, true, {});
+	EXPECT_FALSE(faded.found);
+	EXPECT_EQ(faded.textureEnds, 60u);
+
+	// Something nearer past it (a person in front): the end is hidden.
+	const HandMadeEnd person(25);
+	const auto hidden = search.search(person.region, person.disparity, true, {});
+	EXPECT_FALSE(hidden.found);
+	EXPECT_EQ(hidden.occludedRows, 60u);
+
+	// Too few rows of the wall's height show the end.
+	EXPECT_FALSE(search.search(HandMadeEnd(5).region, HandMadeEnd(5).disparity, true, {}, {}, 400).found);
+}
+
+TEST(StereoBoundaryChecks, OnlyATallSegmentCanBeTheEdgeAndAloneOnlyWhereThePlaneGoesOn)
+{
+	const BoundarySearch search;
+	const HandMadeEnd blank(-1);  // no disparity boundary
+	// A short texture edge near the end is not the edge; a tall one is.
+	EXPECT_FALSE(search.search(blank.region, blank.disparity, true, {98}, {10}).found);
+	const auto tall = search.search(blank.region, blank.disparity, true, {98}, {50});
+	ASSERT_TRUE(tall.found);
+	EXPECT_EQ(tall.u, 98);
+	EXPECT_EQ(tall.method, "outer segment");
+	// ... but only where the map carries the plane on past the end.
+	EXPECT_FALSE(search.search(blank.region, blank.disparity, true, {98}, {50}, 0, false).found);
+
+	// The paper's rule: a disparity boundary inward of a tall outer segment
+	// moves to it; a short one leaves it.
+	const HandMadeEnd seen(5);
+	const auto moved = search.search(seen.region, seen.disparity, true, {103}, {55});
+	EXPECT_EQ(moved.u, 103);
+	const auto kept = search.search(seen.region, seen.disparity, true, {103}, {8});
+	EXPECT_NEAR(kept.u, 100.5, 0.11);
+}
+
+TEST(StereoBoundaryChecks, CollinearWallsAndWhereAPlaneGoesOn)
+{
+	registerClasses();
+	test::TempDir dir;
+	const std::string map = dir.file("map.txt");
+	std::ofstream(map) << "# wall, whiteboard on it, a face meeting it at a corner, a wall beyond a door\n"
+					   << "0 6 4 6\n1 5.98 2 5.98\n4 6 4 7\n5 6 8 6\n";
+	StableVerticalLandmarks x;
+	mrpt::config::CConfigFileMemory cfg;
+	cfg.write("S", "map", map);
+	x.loadParams(cfg, "S");
+	ASSERT_EQ(x.walls.size(), 4u);
+	EXPECT_TRUE(x.collinear(0, 1));	 // 2 cm apart, parallel
+	EXPECT_FALSE(x.collinear(0, 2));  // a corner
+	EXPECT_TRUE(x.collinear(0, 3));
+	// The whiteboard's ends lie on the wall, which goes on past them.
+	EXPECT_TRUE(x.continuesCoplanar(1, true));
+	EXPECT_TRUE(x.continuesCoplanar(1, false));
+	// The wall's end at x = 4 is a corner and then a door: nothing goes on.
+	EXPECT_FALSE(x.continuesCoplanar(0, false));
+	EXPECT_FALSE(x.continuesCoplanar(3, true));
+}
+
+TEST(StereoBoundaryChecks, NearerWallsHideWhatIsBehindThem)
+{
+	StereoHead head;
+	head.width = 640;
+	head.height = 480;
+	head.fx = head.fy = 500;
+	head.cx = 319.5;
+	head.cy = 239.5;
+	head.baseline = 0.12;
+	head.camZ = 1.0;  // row 240 is 1 m above the floor
+	// Robot at the origin looking along +x: a wall 4 m ahead, a desk face
+	// 2 m ahead covering the middle of the view.
+	const std::vector<MapWall> walls = {{{4, -3}, {4, 3}, "far"}, {{2, -0.4}, {2, 0.4}, "desk"}};
+	const PlanarRegionExtractor px;
+	const auto depth = px.nearestWallDepth(walls, head, Eigen::Vector3d::Zero());
+	ASSERT_EQ(depth.size(), 640u);
+	EXPECT_NEAR(depth[320], 2.0, 1e-9);	 // the desk
+	EXPECT_NEAR(depth[10], 4.0, 1e-9);	// the wall beside it
+	// The far wall's region leaves out the columns the desk hides: with a
+	// disparity image that shows the far wall everywhere, its pixels stop
+	// at the desk's columns (+- the 3-sigma window).
+	cv::Mat disparity(480, 640, CV_32F, cv::Scalar(500 * 0.12 / 4));
+	Eigen::Matrix3d S = Eigen::Matrix3d::Identity() * 1e-8;
+	const auto seen = px.extract(walls[0], 0, head, Eigen::Vector3d::Zero(), S, disparity, &depth);
+	ASSERT_TRUE(seen.fitted) << seen.reason;
+	EXPECT_EQ(seen.mask.at<uchar>(240, 320), 0);  // behind the desk
+	EXPECT_EQ(seen.mask.at<uchar>(240, 20), 255);
+	const auto all = px.extract(walls[0], 0, head, Eigen::Vector3d::Zero(), S, disparity);
+	EXPECT_EQ(all.mask.at<uchar>(240, 320), 255);  // without the map's occlusion
+}
