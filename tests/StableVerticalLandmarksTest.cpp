@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <Eigen/Dense>
@@ -16,6 +17,7 @@
 #include "featloc/sim/StereoRenderer.h"
 #include "featloc/sim/VisibleEdges.h"
 #include "featloc/core/InputError.h"
+#include "featloc/output/StereoDebugPicture.h"
 #include "featloc/stereo/PlaneFit.h"
 #include "featloc/stereo/SegmentStereoMatcher.h"
 #include "featloc/stereo/StableVerticalLandmarks.h"
@@ -349,4 +351,38 @@ TEST(StableVerticalLandmarks, BadMapsAreErrorsNamingTheFileAndPlace)
 	mrpt::config::CConfigFileMemory cfg;
 	cfg.write("S", "block_size", "15");
 	EXPECT_THROW(x.loadParams(cfg, "S"), std::exception);
+}
+
+TEST(StableVerticalLandmarks, DebugPictureDrawsSelectedSegmentsAndBoundaries)
+{
+	// The paper's Figs. 5-6 for one frame: each selected landmark's segment
+	// green over the image, each boundary a magenta line.
+	const auto s = look(mrpt::poses::CPose2D(0, 0, M_PI / 2));
+	const cv::Mat pic = StereoDebugPicture::draw(s.frame.left, s.out);
+	ASSERT_EQ(pic.type(), CV_8UC3);
+	ASSERT_EQ(pic.size(), s.frame.left.size());
+	size_t selected = 0, green = 0;
+	for (const auto& f : s.out.features)
+	{
+		if (!f.selected) continue;
+		const auto& seg = s.out.left[s.out.matches[f.match].left];
+		const double v = seg.vMid();
+		const cv::Vec3b c = pic.at<cv::Vec3b>(static_cast<int>(std::lround(v)), static_cast<int>(std::lround(seg.uAt(v))));
+		selected++;
+		if (c[1] > 180 && c[0] < 100 && c[2] < 100) green++;
+	}
+	ASSERT_GT(selected, 5u);
+	EXPECT_EQ(green, selected);
+	size_t boundaries = 0;
+	for (const auto& b : s.out.boundaries)
+	{
+		if (!b.found) continue;
+		boundaries++;
+		const cv::Vec3b c = pic.at<cv::Vec3b>(5, static_cast<int>(std::lround(b.u)));
+		EXPECT_GT(c[0], 200);  // magenta: blue and red high, green low
+		EXPECT_GT(c[2], 200);
+		EXPECT_LT(c[1], 120);
+	}
+	if (const char* out = std::getenv("FEATLOC_KEEP_PICTURE")) cv::imwrite(out, pic);
+	EXPECT_GE(boundaries, 2u);	// the partition's, the whiteboard's and the lab wall's end
 }
