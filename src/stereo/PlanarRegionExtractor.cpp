@@ -130,7 +130,7 @@ PlanarRegion PlanarRegionExtractor::extract(
 	{
 		const int w = static_cast<int>(std::ceil(k * std::max(r.sigmaUA, r.sigmaUB)));
 		hidden.assign(nearest->size(), 0);
-		for (int u = 0; u < disparity.cols; u++)
+		for (int u = r.uMin; u <= r.uMax; u++)  // the columns searched below
 		{
 			double m = 0;
 			for (int j = std::max(0, u - w); j <= std::min(disparity.cols - 1, u + w); j++)

@@ -316,6 +316,7 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 
 	// 5. Boundaries (3.2) and positions relative to them (3.3); 6. selection (4).
 	f.boundaries.resize(f.planes.size());
+	f.boundaryOffsets.resize(f.planes.size());
 	BoundarySearch::Options bo;
 	bo.sigma_img = options.sigma_img;
 	bo.window_sigmas = options.window_sigmas;
@@ -346,14 +347,12 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			// An end seen at a grazing angle cannot be placed: one pixel
 			// is depth / (fx sin(angle)) along the wall, and the SAD
 			// window spans the corner.
-			{
-				const Eigen::Vector2d ce = head.toCamera(X, atA ? walls[p].a : walls[p].b);
-				const Eigen::Vector2d wd = head.toCamera(X, walls[p].b) - head.toCamera(X, walls[p].a);
-				const double sinAngle = std::abs(ce.x() * wd.y() - ce.y() * wd.x()) / (ce.norm() * wd.norm());
-				if (sinAngle < std::sin(options.min_boundary_angle_deg * M_PI / 180)) continue;
-			}
+			const Eigen::Vector2d ca = head.toCamera(X, walls[p].a), cb = head.toCamera(X, walls[p].b);
+			const Eigen::Vector2d ce = atA ? ca : cb, wd = cb - ca;
+			const double sinAngle = std::abs(ce.x() * wd.y() - ce.y() * wd.x()) / (ce.norm() * wd.norm());
+			if (sinAngle < std::sin(options.min_boundary_angle_deg * M_PI / 180)) continue;
 			// Rows the wall's height band spans at that end.
-			const double depthE = head.toCamera(X, atA ? walls[p].a : walls[p].b).y();
+			const double depthE = ce.y();
 			double rows = 0;
 			if (depthE > 0)
 			{
@@ -458,7 +457,6 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			}
 			const double offset = swd / sw;
 			const double sigma = std::sqrt(1 / sw + e.dot(Pb * e) + pose2);
-			f.boundaryOffsets.resize(f.planes.size());
 			f.boundaryOffsets[p] = {offset, sigma};
 			if (std::abs(offset) > options.window_sigmas * sigma)
 			{

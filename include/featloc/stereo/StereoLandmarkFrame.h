@@ -25,7 +25,7 @@ struct StereoLandmarkFrame
 	std::vector<PlanarRegion> planes;  //!< 2.3, every map wall tried
 	/** Per plane: the boundary found (3.2), and at which end. */
 	std::vector<BoundarySearch::Result> boundaries;
-	/** Per plane with features: how far, along the wall, the features
+	/** Per plane (zero where it has no features): how far, along the wall, the features
 	 * placed from the boundary lie from their own stereo positions
 	 * (weighted mean) and that offset's sigma if the boundary is the
 	 * map's edge [m]. Beyond window_sigmas sigma the boundary is rejected. */
