@@ -119,7 +119,7 @@ TEST(EkfLocalizer, ObservationJacobiansMatchFiniteDifferences)
 	const Eigen::VectorXd x = f.state();
 	auto observe = [&](const Eigen::VectorXd& s) {
 		const double c = std::cos(s[2]), sn = std::sin(s[2]);
-		const Eigen::Vector2d d = s.segment<2>(EkfLocalizer::landmarkIndex(0)) - s.segment<2>(0);
+		const Eigen::Vector2d d = s.segment<2>(f.landmarkIndex(0)) - s.segment<2>(0);
 		return Eigen::Vector2d(c * d.x() + sn * d.y(), -sn * d.x() + c * d.y());
 	};
 	EXPECT_LT((observe(x) - h0).norm(), 1e-12);
@@ -133,7 +133,7 @@ TEST(EkfLocalizer, ObservationJacobiansMatchFiniteDifferences)
 	for (int k = 0; k < 2; k++)
 	{
 		Eigen::VectorXd xp = x;
-		xp[EkfLocalizer::landmarkIndex(0) + k] += eps;
+		xp[f.landmarkIndex(0) + k] += eps;
 		EXPECT_LT(((observe(xp) - h0) / eps - Hl.col(k)).norm(), 1e-5) << "landmark " << k;
 	}
 }
@@ -198,8 +198,8 @@ TEST(EkfLocalizer, LandmarkSeenOnceIsRemovedAfterProbation)
 	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
 	ASSERT_EQ(f.landmarkCount(), 1u);
 	EXPECT_NEAR(f.landmarks()[0].mean.x(), 2, 1e-3);
-	EXPECT_EQ(f.state().size(), EkfLocalizer::landmarkIndex(1));
-	EXPECT_EQ(f.covariance().rows(), EkfLocalizer::landmarkIndex(1));
+	EXPECT_EQ(f.state().size(), EkfLocalizer::kLandmarks + 2);
+	EXPECT_EQ(f.covariance().rows(), EkfLocalizer::kLandmarks + 2);
 }
 
 TEST(EkfLocalizer, KnownIdentityPairsEvenWhenAnotherLandmarkIsNearer)
@@ -317,14 +317,15 @@ TEST(EkfLocalizer, RemovingALandmarkInTheMiddleKeepsTheOthersCovariances)
 	const Eigen::MatrixXd after = f.covariance();
 	// Old indices of the kept rows: robot, clones, landmark 0, landmark 2.
 	std::vector<Eigen::Index> keep;
-	for (Eigen::Index i = 0; i < EkfLocalizer::landmarkIndex(1); i++) keep.push_back(i);
-	keep.push_back(EkfLocalizer::landmarkIndex(2));
-	keep.push_back(EkfLocalizer::landmarkIndex(2) + 1);
+	const Eigen::Index second = EkfLocalizer::kLandmarks + 2, third = EkfLocalizer::kLandmarks + 4;
+	for (Eigen::Index i = 0; i < second; i++) keep.push_back(i);
+	keep.push_back(third);
+	keep.push_back(third + 1);
 	ASSERT_EQ(static_cast<Eigen::Index>(keep.size()), after.rows());
 	EXPECT_LT((after - before(keep, keep)).cwiseAbs().maxCoeff(), 1e-15);
 	EXPECT_LT((f.state() - xBefore(keep)).cwiseAbs().maxCoeff(), 1e-15);
 	EXPECT_EQ(f.landmarks()[1].id, 2);
-	EXPECT_NE(before(EkfLocalizer::landmarkIndex(0), EkfLocalizer::landmarkIndex(2)), 0.0);
+	EXPECT_NE(before(EkfLocalizer::kLandmarks, third), 0.0);
 }
 
 // The scan-match measurement h = x_c^-1 (+) x_a: its Jacobians in the
@@ -391,7 +392,7 @@ TEST(EkfLocalizer, HeldMatchEqualsTheMatchFusedAtItsTime)
 	EXPECT_FALSE(held.hasHeldMotion());
 	// (The match clone's slot is scratch space and differs.)
 	std::vector<Eigen::Index> idx{0, 1, 2, 3, 4, 5};
-	for (Eigen::Index i = EkfLocalizer::landmarkIndex(0); i < held.state().size(); i++)
+	for (Eigen::Index i = EkfLocalizer::kLandmarks; i < held.state().size(); i++)
 		idx.push_back(i);
 	const Eigen::MatrixXd Ph = held.covariance(), Pn = now.covariance();
 	EXPECT_LT((held.state()(idx) - now.state()(idx)).cwiseAbs().maxCoeff(), 1e-9);
@@ -424,7 +425,7 @@ TEST(EkfLocalizer, IncrementalJointDistanceEqualsTheStackedOne)
 			const auto h = f.predictObservation(pairs[a].second, &Hr, &Hl);
 			const Eigen::Index r = 2 * static_cast<Eigen::Index>(a);
 			H.block<2, 3>(r, 0) = Hr;
-			H.block<2, 2>(r, EkfLocalizer::landmarkIndex(pairs[a].second)) = Hl;
+			H.block<2, 2>(r, f.landmarkIndex(pairs[a].second)) = Hl;
 			nu.segment<2>(r) = obs[pairs[a].first].position - h;
 			R.block<2, 2>(r, r) = obs[pairs[a].first].covariance;
 		}

@@ -13,6 +13,7 @@
 
 #include "featloc/ekf/JointCompatibilityBranchAndBound.h"
 #include "featloc/ekf/LandmarkJointInnovation.h"
+#include "featloc/ekf/VerticalLandmarkConstraint.h"
 
 namespace featloc
 {
@@ -284,7 +285,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 		if (obs[i].id >= 0)
 		{
 			for (size_t j = 0; j < L; j++)
-				if (m_info[j].id == obs[i].id)
+				if (!m_info[j].vertical() && m_info[j].id == obs[i].id)
 				{
 					if (individualDistance2(obs[i], j) <= gate2)
 					{
@@ -304,7 +305,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 		unknown[i] = 1;
 		for (size_t j = 0; j < L; j++)
 		{
-			if (m_info[j].id >= 0) continue;  // identified landmarks pair by id only
+			if (m_info[j].id >= 0 || m_info[j].vertical()) continue;  // identified landmarks pair by id only
 			const double d2 = individualDistance2(obs[i], j);
 			if (d2 <= gate2) scored[i].emplace_back(d2, j);
 			if (d2 <= newGate2) nearSome[i] = 1;
@@ -398,30 +399,43 @@ void EkfLocalizer::addLandmark(const LandmarkObservation& o)
 	Gr.block<2, 2>(0, 0).setIdentity();
 	Gr.col(2) << -s * o.position.x() - c * o.position.y(), c * o.position.x() - s * o.position.y();
 	const Eigen::Index n = m_x.size();
-	const Eigen::MatrixXd cross = Gr * P().block(kRobot, 0, 3, n);	 // 2 x n
 	const Eigen::Matrix2d Pll = Gr * P().block<3, 3>(kRobot, kRobot) * Gr.transpose() +
 		Rr * o.covariance * Rr.transpose();
-	reserve(n + 2);
-	m_x.conservativeResize(n + 2);
-	m_x.segment<2>(n) = l;
-	P().block(n, 0, 2, n) = cross;
-	P().block(0, n, n, 2) = cross.transpose();
-	P().block<2, 2>(n, n) = 0.5 * (Pll + Pll.transpose());
-	m_info.push_back({o.id, 1, m_step});
+	LandmarkInfo info;
+	info.id = o.id;
+	info.observations = 1;
+	info.firstStep = m_step;
+	appendLandmark(l, Pll, Gr * P().block(kRobot, 0, 3, n), info);
+}
+
+void EkfLocalizer::appendLandmark(
+	const Eigen::VectorXd& mean, const Eigen::MatrixXd& cov, const Eigen::MatrixXd& cross, LandmarkInfo info)
+{
+	const Eigen::Index n = m_x.size(), m = mean.size();
+	reserve(n + m);
+	m_x.conservativeResize(n + m);
+	m_x.segment(n, m) = mean;
+	P().block(n, 0, m, n) = cross;
+	P().block(0, n, n, m) = cross.transpose();
+	P().block(n, n, m, m) = 0.5 * (cov + cov.transpose());
+	info.index = n;
+	info.size = m;
+	m_info.push_back(info);
 }
 
 void EkfLocalizer::removeLandmark(size_t j)
 {
-	const Eigen::Index k = kLandmarks + 2 * static_cast<Eigen::Index>(j);
-	const Eigen::Index n = m_x.size(), tail = n - k - 2;
+	const Eigen::Index k = m_info[j].index, m = m_info[j].size;
+	const Eigen::Index n = m_x.size(), tail = n - k - m;
 	m_x.segment(k, tail) = m_x.tail(tail).eval();
-	m_x.conservativeResize(n - 2);
-	// Rows, then columns, shifted over the removed pair (in the buffer,
+	m_x.conservativeResize(n - m);
+	// Rows, then columns, shifted over the removed block (in the buffer,
 	// front to back: each source lies after its destination).
 	for (Eigen::Index c = 0; c < n; c++)
-		for (Eigen::Index r = k; r < n - 2; r++) m_Pbuf(r, c) = m_Pbuf(r + 2, c);
-	for (Eigen::Index c = k; c < n - 2; c++) m_Pbuf.col(c).head(n - 2) = m_Pbuf.col(c + 2).head(n - 2);
+		for (Eigen::Index r = k; r < n - m; r++) m_Pbuf(r, c) = m_Pbuf(r + m, c);
+	for (Eigen::Index c = k; c < n - m; c++) m_Pbuf.col(c).head(n - m) = m_Pbuf.col(c + m).head(n - m);
 	m_info.erase(m_info.begin() + static_cast<long>(j));
+	for (size_t i = j; i < m_info.size(); i++) m_info[i].index -= m;
 }
 
 void EkfLocalizer::pruneLandmarks()
@@ -475,6 +489,23 @@ std::vector<EstimatedLandmark> EkfLocalizer::landmarks() const
 			l.covariance -= Kj * c->S * Kj.transpose();
 		}
 		l.observations = m_info[j].observations;
+		if (m_info[j].vertical())
+		{
+			Eigen::Vector2d h = m_x.segment<2>(k + 2);
+			Eigen::Matrix2d Ph = P().block<2, 2>(k + 2, k + 2);
+			if (c)
+			{
+				const Eigen::Matrix<double, 2, 3> Kh = c->K.block<2, 3>(k + 2, 0);
+				h += Kh * c->nu;
+				Ph -= Kh * c->S * Kh.transpose();
+			}
+			l.vertical = true;
+			l.wall = m_info[j].wall;
+			l.lLow = h[0];
+			l.lHigh = h[1];
+			l.sigmaLow = std::sqrt(std::max(0.0, Ph(0, 0)));
+			l.sigmaHigh = std::sqrt(std::max(0.0, Ph(1, 1)));
+		}
 		out.push_back(l);
 	}
 	return out;

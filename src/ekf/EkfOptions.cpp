@@ -12,6 +12,7 @@ void EkfOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, cons
 	read(c, s, "landmark_gate_probability", landmark_gate_probability);
 	read(c, s, "landmark_new_probability", landmark_new_probability);
 	readChoice(c, s, "data_association", data_association, {"jcbb", "nearest"});
+	read(c, s, "stereo_landmarks_per_frame", stereo_landmarks_per_frame);
 	read(c, s, "landmark_probation_steps", landmark_probation_steps);
 	require(matcher_gate_chi2 > 0, c, s, "matcher_gate_chi2", "> 0");
 	require(matcher_covariance_scale > 0, c, s, "matcher_covariance_scale", "> 0");
@@ -34,6 +35,8 @@ void EkfOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::s
 		"an unidentified observation outside this gate of every landmark starts a new one");
 	write(c, s, "data_association", data_association,
 		"jcbb (joint compatibility branch and bound) | nearest");
+	write(c, s, "stereo_landmarks_per_frame", stereo_landmarks_per_frame,
+		"vertical-line (stereo) landmarks used per frame: the least uncertain of those paired");
 	write(c, s, "landmark_probation_steps", landmark_probation_steps,
 		"a landmark seen only once is removed after this many steps");
 }

@@ -10,9 +10,9 @@ namespace featloc
 {
 namespace
 {
-std::array<Eigen::Index, 5> blockIndices(size_t landmark)
+std::array<Eigen::Index, 5> blockIndices(const EkfLocalizer& f, size_t landmark)
 {
-	const Eigen::Index k = EkfLocalizer::landmarkIndex(landmark);
+	const Eigen::Index k = f.landmarkIndex(landmark);
 	return {EkfLocalizer::kRobot, EkfLocalizer::kRobot + 1, EkfLocalizer::kRobot + 2, k, k + 1};
 }
 }  // namespace
@@ -32,7 +32,7 @@ double LandmarkJointInnovation::push(size_t i, size_t j)
 	pr.nu = m_obs[i].position - m_f.predictObservation(j, &Hr, &Hl);
 	pr.H << Hr, Hl;
 	const auto& P = m_f.covariance();
-	const auto idx = blockIndices(j);
+	const auto idx = blockIndices(m_f, j);
 	const Eigen::Matrix2d c = pr.H * P(idx, idx) * pr.H.transpose() + m_obs[i].covariance;
 
 	const Eigen::Index m = 2 * static_cast<Eigen::Index>(m_pairs.size());
@@ -51,7 +51,7 @@ double LandmarkJointInnovation::push(size_t i, size_t j)
 		Eigen::MatrixXd b(m, 2);
 		for (size_t a = 0; a < m_pairs.size(); a++)
 			b.block<2, 2>(2 * static_cast<Eigen::Index>(a), 0) =
-				m_pairs[a].H * P(blockIndices(m_pairs[a].landmark), idx) * pr.H.transpose();
+				m_pairs[a].H * P(blockIndices(m_f, m_pairs[a].landmark), idx) * pr.H.transpose();
 		const Eigen::MatrixXd& Ainv = m_inverse.back();
 		const Eigen::MatrixXd w = Ainv * b;	 // m x 2
 		const Eigen::Matrix2d schur = c - b.transpose() * w;

@@ -10,6 +10,7 @@
 #include "featloc/ekf/EkfOptions.h"
 #include "featloc/ekf/EstimatedLandmark.h"
 #include "featloc/ekf/LandmarkObservation.h"
+#include "featloc/ekf/VerticalLandmarkObservation.h"
 
 namespace featloc
 {
@@ -56,6 +57,16 @@ namespace featloc
  *   ignored; so are known identities whose innovation fails the gate. A
  *   landmark seen only once is removed landmark_probation_steps steps
  *   later.
+ * - updateVerticalLandmarks(observations): vertical-line landmarks
+ *   [x y l_low l_high] of Moon, Miura & Shirai (section 5), observed
+ *   through the constraint of eq. (20) (VerticalLandmarkConstraint). An
+ *   observation pairs only with a landmark on its wall with its polarity,
+ *   by nearest neighbour within the gate; of the pairs, the
+ *   stereo_landmarks_per_frame least uncertain landmarks update the state
+ *   (section 4: "a subset of stable landmarks with less uncertainty").
+ *   Selected features compatible with no landmark start one on-line, at
+ *   their position relative to the map's edge (eq. 15) with its rank-1
+ *   covariance (eq. 17), uncorrelated with the robot: the map is known.
  *
  * Updates use P <- P - K S K^T (symmetrised) with H restricted to the
  * columns it touches; angles are wrapped. */
@@ -104,6 +115,17 @@ class EkfLocalizer
 	};
 	LandmarkUpdate updateLandmarks(const std::vector<LandmarkObservation>& observations);
 
+	struct VerticalUpdate
+	{
+		size_t observed = 0, associated = 0, used = 0, added = 0;
+		size_t ambiguous = 0;  //!< compatible with a landmark, left unpaired
+		double jointMahalanobis2 = 0;  //!< of the innovations used
+		/** Per observation: the landmark it updated or started (index
+		 * after the update), or -1. */
+		std::vector<int> landmarkOf;
+	};
+	VerticalUpdate updateVerticalLandmarks(const std::vector<VerticalLandmarkObservation>& observations);
+
 	/** Posterior views: the held match included. */
 	mrpt::poses::CPosePDFGaussian robotPose() const;
 	mrpt::poses::CPosePDFGaussian keyframePose() const;
@@ -116,11 +138,9 @@ class EkfLocalizer
 	{
 		return m_Pbuf.topLeftCorner(m_x.size(), m_x.size());
 	}
-	/** Index of landmark j's x in the state. */
-	static Eigen::Index landmarkIndex(size_t j)
-	{
-		return kLandmarks + 2 * static_cast<Eigen::Index>(j);
-	}
+	/** Index of landmark j's x in the state (point landmarks take 2
+	 * entries, vertical-line landmarks 4). */
+	Eigen::Index landmarkIndex(size_t j) const { return m_info[j].index; }
 	static constexpr Eigen::Index kRobot = 0, kClone = 3, kMatchClone = 6, kLandmarks = 9;
 
 	/** Predicted observation of landmark j from the current state, and its
@@ -135,6 +155,18 @@ class EkfLocalizer
 		Eigen::Index from, Eigen::Matrix3d* Ha = nullptr, Eigen::Matrix3d* Hc = nullptr) const;
 
    private:
+	struct LandmarkInfo
+	{
+		int64_t id = -1;
+		unsigned int observations = 0;
+		uint64_t firstStep = 0;
+		Eigen::Index index = 0;	 //!< of its x in the state
+		Eigen::Index size = 2;	//!< 2: point (x, y); 4: vertical line (x, y, l_low, l_high)
+		/** Vertical lines: the map wall it lies on, its edge's polarity. */
+		size_t wall = 0;
+		int polarity = 0;
+		bool vertical() const { return size == 4; }
+	};
 	/** x <- x + K nu, P <- P - K S K^T for an observation whose Jacobian is
 	 * `Hc` (m x cols.size()) on the state entries `cols` (zero elsewhere).
 	 * Returns the innovation's Mahalanobis^2, nu^T S^-1 nu. */
@@ -158,16 +190,18 @@ class EkfLocalizer
 	/** Individual squared distance of observation o to landmark j: O(1). */
 	double individualDistance2(const LandmarkObservation& o, size_t j) const;
 	void addLandmark(const LandmarkObservation& o);
+	/** Appends a landmark with mean `mean`, covariance `cov` and
+	 * cross-covariance `cross` (size x n) with the state. */
+	void appendLandmark(
+		const Eigen::VectorXd& mean, const Eigen::MatrixXd& cov, const Eigen::MatrixXd& cross,
+		LandmarkInfo info);
+	/** Mahalanobis^2 of vertical observation z against landmark j (robot and
+	 * landmark blocks only), and the constraint's terms. */
+	double verticalDistance2(const VerticalLandmarkObservation& z, size_t j) const;
 	void removeLandmark(size_t j);
 	void pruneLandmarks();
 	void clonePose(Eigen::Index to);
 
-	struct LandmarkInfo
-	{
-		int64_t id = -1;
-		unsigned int observations = 0;
-		uint64_t firstStep = 0;
-	};
 	Eigen::VectorXd m_x;
 	/** The covariance is the top-left n x n corner of this buffer, which
 	 * grows by doubling. */

@@ -28,6 +28,9 @@ struct EkfOptions : public mrpt::config::CLoadableOptions
 	/** jcbb (joint compatibility branch and bound) | nearest (each
 	 * observation its nearest compatible landmark). */
 	std::string data_association = "jcbb";
+	/** Vertical-line (stereo) landmarks used per frame: the least
+	 * uncertain of those paired (Moon, Miura & Shirai, section 4). */
+	unsigned int stereo_landmarks_per_frame = 10;
 	/** A landmark seen only once is removed after this many steps. */
 	unsigned int landmark_probation_steps = 10;
 

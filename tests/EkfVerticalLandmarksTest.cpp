@@ -1,0 +1,309 @@
+// The vertical-line landmarks of Moon, Miura & Shirai, section 5, in
+// EkfLocalizer: the constraint of eq. (20) against finite differences, its
+// update against a dense EKF built from numeric Jacobians, on-line start
+// from eq. (15)/(17), association by wall and polarity, the subset of least
+// uncertain landmarks, removal beside point landmarks, and consistency
+// (NEES) over Monte-Carlo runs.
+#include <gtest/gtest.h>
+#include <mrpt/math/distributions.h>
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+
+#include "featloc/ekf/EkfLocalizer.h"
+#include "featloc/ekf/VerticalLandmarkConstraint.h"
+
+using namespace featloc;
+using mrpt::poses::CPose2D;
+using mrpt::poses::CPosePDFGaussian;
+
+namespace
+{
+CPosePDFGaussian gaussian(const CPose2D& mean, double vx, double vy, double vyaw)
+{
+	CPosePDFGaussian g;
+	g.mean = mean;
+	g.cov.setZero();
+	g.cov(0, 0) = vx;
+	g.cov(1, 1) = vy;
+	g.cov(2, 2) = vyaw;
+	return g;
+}
+
+/** The observation of landmark l (x, y, low, high) from robot X, exact,
+ * with the given sigmas (position isotropic), on wall `wall`. */
+VerticalLandmarkObservation seen(
+	const Eigen::Vector3d& X, const Eigen::Vector4d& l, double sigma, double sigmaEnd, size_t wall = 0,
+	int polarity = 1)
+{
+	VerticalLandmarkObservation z;
+	const double c = std::cos(X.z()), s = std::sin(X.z());
+	const Eigen::Vector2d d = l.head<2>() - X.head<2>();
+	z.position = {c * d.x() + s * d.y(), -s * d.x() + c * d.y()};
+	z.covariance = Eigen::Matrix2d::Identity() * sigma * sigma;
+	z.lLow = l[2];
+	z.lHigh = l[3];
+	z.sigmaLow = z.sigmaHigh = sigmaEnd;
+	z.wall = wall;
+	z.polarity = polarity;
+	return z;
+}
+
+/** A selected feature on the wall y = 4 (direction x): it may start a
+ * landmark with the rank-1 covariance of eq. (17). */
+VerticalLandmarkObservation startable(
+	const Eigen::Vector3d& X, const Eigen::Vector4d& l, double sigmaAlong, size_t wall = 0, int polarity = 1)
+{
+	auto z = seen(X, l, 0.02, 0.01, wall, polarity);
+	z.canStart = true;
+	z.start = l.head<2>();
+	z.startCovariance = Eigen::Vector2d(1, 0) * Eigen::Vector2d(1, 0).transpose() * sigmaAlong * sigmaAlong;
+	return z;
+}
+}  // namespace
+
+TEST(EkfVerticalLandmarks, ConstraintJacobiansMatchFiniteDifferences)
+{
+	const Eigen::Vector3d X(0.4, -0.3, 0.8);
+	const Eigen::Vector4d l(1.5, 4.0, 0.2, 1.9);
+	for (const bool bothEnds : {true, false})
+	{
+		auto z = seen(X, l, 0.02, 0.01);
+		z.position += Eigen::Vector2d(0.03, -0.05);	 // G != 0
+		if (!bothEnds) z.sigmaLow = 0;
+		const VerticalLandmarkConstraint g(z);
+		ASSERT_EQ(g.size(), bothEnds ? 4 : 3);
+		Eigen::MatrixXd GX, Gl;
+		const Eigen::VectorXd g0 = g.evaluate(X, l, &GX, &Gl);
+		const double eps = 1e-6;
+		for (int k = 0; k < 3; k++)
+		{
+			Eigen::Vector3d a = X, b = X;
+			a[k] += eps;
+			b[k] -= eps;
+			const Eigen::VectorXd fd = (g.evaluate(a, l) - g.evaluate(b, l)) / (2 * eps);
+			EXPECT_LT((fd - GX.col(k)).norm(), 1e-8) << "robot " << k;
+		}
+		for (int k = 0; k < 4; k++)
+		{
+			Eigen::Vector4d a = l, b = l;
+			a[k] += eps;
+			b[k] -= eps;
+			const Eigen::VectorXd fd = (g.evaluate(X, a) - g.evaluate(X, b)) / (2 * eps);
+			EXPECT_LT((fd - Gl.col(k)).norm(), 1e-8) << "landmark " << k;
+		}
+		// The observed position's residual: the landmark seen from X, minus it.
+		EXPECT_NEAR(g0[0], -0.03, 1e-12);
+		EXPECT_NEAR(g0[1], 0.05, 1e-12);
+	}
+}
+
+// The filter's update equals the textbook implicit EKF update (nu = -G,
+// H = dG/dS by finite differences over the whole state, R = Sigma_L),
+// computed densely from the state before.
+TEST(EkfVerticalLandmarks, UpdateEqualsDenseEkfWithNumericJacobians)
+{
+	EkfLocalizer f;
+	f.reset(gaussian(CPose2D(0, 0, 0.1), 0.04, 0.04, 0.003));
+	const Eigen::Vector4d l1(1.0, 4.0, 0.1, 1.8), l2(2.2, 4.0, 0.3, 2.0);
+	f.updateVerticalLandmarks({startable({0, 0, 0.1}, l1, 0.03), startable({0, 0, 0.1}, l2, 0.04, 0, -1)});
+	ASSERT_EQ(f.landmarkCount(), 2u);
+	f.predict(gaussian(CPose2D(0.5, 0.1, 0.05), 0.01, 0.01, 0.001));
+	const Eigen::VectorXd x0 = f.state();
+	const Eigen::MatrixXd P0 = f.covariance();
+	std::vector<VerticalLandmarkObservation> z{
+		seen({0.52, 0.1, 0.16}, l1, 0.03, 0.02), seen({0.52, 0.1, 0.16}, l2, 0.03, 0.02, 0, -1)};
+	z[1].sigmaHigh = 0;	 // top end cut by the image border
+	const auto u = f.updateVerticalLandmarks(z);
+	ASSERT_EQ(u.used, 2u);
+
+	const Eigen::Index n = x0.size();
+	auto G = [&](const Eigen::VectorXd& s) {
+		Eigen::VectorXd out(7);
+		const auto g1 = VerticalLandmarkConstraint(z[0]).evaluate(s.head<3>(), s.segment<4>(f.landmarkIndex(0)));
+		const auto g2 = VerticalLandmarkConstraint(z[1]).evaluate(s.head<3>(), s.segment<4>(f.landmarkIndex(1)));
+		out << g1, g2;
+		return out;
+	};
+	Eigen::MatrixXd H(7, n);
+	for (Eigen::Index k = 0; k < n; k++)
+	{
+		Eigen::VectorXd a = x0, b = x0;
+		a[k] += 1e-6;
+		b[k] -= 1e-6;
+		H.col(k) = (G(a) - G(b)) / 2e-6;
+	}
+	Eigen::MatrixXd R = Eigen::MatrixXd::Zero(7, 7);
+	R.block(0, 0, 4, 4) = VerticalLandmarkConstraint(z[0]).noise();
+	R.block(4, 4, 3, 3) = VerticalLandmarkConstraint(z[1]).noise();
+	const Eigen::MatrixXd S = H * P0 * H.transpose() + R;
+	const Eigen::MatrixXd K = P0 * H.transpose() * S.inverse();
+	const Eigen::VectorXd x1 = x0 - K * G(x0);
+	const Eigen::MatrixXd P1 = (Eigen::MatrixXd::Identity(n, n) - K * H) * P0;
+	EXPECT_LT((f.state() - x1).cwiseAbs().maxCoeff(), 1e-9);
+	EXPECT_LT((f.covariance() - P1).cwiseAbs().maxCoeff(), 1e-9);
+	EXPECT_NEAR(u.jointMahalanobis2, G(x0).dot(S.ldlt().solve(G(x0))), 1e-6);
+}
+
+TEST(EkfVerticalLandmarks, StartsOnTheWallUncorrelatedWithTheRobotAndConstrainsIt)
+{
+	EkfLocalizer f;
+	// An uncertain robot: 0.3 m, 0.2 rad.
+	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.09, 0.09, 0.04));
+	const Eigen::Vector4d l1(-1.0, 4.0, 0.0, 1.2), l2(1.2, 4.0, 0.5, 2.0);
+	const Eigen::Vector3d X(0, 0, M_PI / 2);
+	const auto u = f.updateVerticalLandmarks({startable(X, l1, 0.03), startable(X, l2, 0.03)});
+	EXPECT_EQ(u.added, 2u);
+	const auto lm = f.landmarks();
+	ASSERT_EQ(lm.size(), 2u);
+	EXPECT_TRUE(lm[0].vertical);
+	EXPECT_LT((lm[0].mean - l1.head<2>()).norm(), 1e-12);
+	EXPECT_NEAR(lm[0].lHigh, 1.2, 1e-12);
+	// Eq. (17): along the wall only (the across-wall floor is 1 mm).
+	EXPECT_NEAR(std::sqrt(lm[0].covariance(0, 0)), 0.03, 1e-9);
+	EXPECT_LT(std::sqrt(lm[0].covariance(1, 1)), 1.01e-3);
+	const Eigen::Index k = f.landmarkIndex(0);
+	EXPECT_EQ(f.covariance().block(k, 0, 4, 3).cwiseAbs().maxCoeff(), 0.0);
+	// Seen again from the same place: the robot learns where it is, most
+	// of all across the wall (depth) where the landmarks are exact.
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	const auto v = f.updateVerticalLandmarks({seen(X, l1, 0.02, 0.01), seen(X, l2, 0.02, 0.01)});
+	EXPECT_EQ(v.used, 2u);
+	EXPECT_EQ(v.added, 0u);
+	const auto r = f.robotPose();
+	EXPECT_LT(std::sqrt(r.cov(1, 1)), 0.03);  // across the wall: was 0.3 m
+	EXPECT_LT(std::sqrt(r.cov(2, 2)), 0.02);  // heading: was 0.2 rad
+	EXPECT_LT(std::sqrt(r.cov(0, 0)), 0.06);  // along: bounded by the landmarks' 3 cm
+}
+
+TEST(EkfVerticalLandmarks, PairsOnlyOnItsWallWithItsPolarity)
+{
+	EkfLocalizer f;
+	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.01, 0.01, 0.001));
+	const Eigen::Vector3d X(0, 0, M_PI / 2);
+	const Eigen::Vector4d l(0.5, 4.0, 0.2, 1.5);
+	f.updateVerticalLandmarks({startable(X, l, 0.03, 0, +1)});
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	// The same place with the other polarity, or on another wall: no pair.
+	auto u = f.updateVerticalLandmarks({seen(X, l, 0.02, 0.01, 0, -1), seen(X, l, 0.02, 0.01, 1, +1)});
+	EXPECT_EQ(u.associated, 0u);
+	EXPECT_EQ(u.landmarkOf, (std::vector<int>{-1, -1}));
+	u = f.updateVerticalLandmarks({seen(X, l, 0.02, 0.01, 0, +1)});
+	EXPECT_EQ(u.used, 1u);
+	EXPECT_EQ(u.landmarkOf, (std::vector<int>{0}));
+	// A selected feature inside its landmark's gate does not start another.
+	u = f.updateVerticalLandmarks({startable(X, l + Eigen::Vector4d(0.08, 0, 0, 0), 0.03)});
+	EXPECT_EQ(f.landmarkCount(), 1u);
+}
+
+TEST(EkfVerticalLandmarks, UsesTheLeastUncertainSubset)
+{
+	EkfLocalizer f;
+	f.options.stereo_landmarks_per_frame = 2;
+	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.01, 0.01, 0.001));
+	const Eigen::Vector3d X(0, 0, M_PI / 2);
+	std::vector<VerticalLandmarkObservation> start, again;
+	const double sigmas[4] = {0.08, 0.02, 0.05, 0.01};
+	for (int k = 0; k < 4; k++)
+	{
+		const Eigen::Vector4d l(-1.5 + k, 4.0, 0.2, 1.5);
+		start.push_back(startable(X, l, sigmas[k]));
+		again.push_back(seen(X, l, 0.02, 0.01));
+	}
+	f.updateVerticalLandmarks(start);
+	ASSERT_EQ(f.landmarkCount(), 4u);
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	const auto u = f.updateVerticalLandmarks(again);
+	EXPECT_EQ(u.associated, 4u);
+	EXPECT_EQ(u.used, 2u);
+	EXPECT_EQ(u.landmarkOf, (std::vector<int>{-1, 1, -1, 3}));
+}
+
+TEST(EkfVerticalLandmarks, RemovalBesidePointLandmarksKeepsEveryBlock)
+{
+	EkfLocalizer f;
+	f.options.landmark_probation_steps = 1;
+	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.01, 0.01, 0.001));
+	LandmarkObservation p;
+	p.position = {3, 0};
+	p.covariance = Eigen::Matrix2d::Identity() * 0.01;
+	f.updateLandmarks({p});	 // point, seen once: pruned later
+	const Eigen::Vector3d X(0, 0, M_PI / 2);
+	const Eigen::Vector4d l(0.5, 4.0, 0.2, 1.5);
+	f.updateVerticalLandmarks({startable(X, l, 0.03)});
+	ASSERT_EQ(f.landmarkIndex(1), EkfLocalizer::kLandmarks + 2);
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	f.updateVerticalLandmarks({seen(X, l, 0.02, 0.01)});  // seen twice: kept
+	const Eigen::VectorXd before = f.state().segment<4>(f.landmarkIndex(1));
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	ASSERT_EQ(f.landmarkCount(), 1u);
+	EXPECT_EQ(f.landmarkIndex(0), EkfLocalizer::kLandmarks);
+	EXPECT_EQ(f.state().size(), EkfLocalizer::kLandmarks + 4);
+	EXPECT_LT((f.state().segment<4>(EkfLocalizer::kLandmarks) - before).norm(), 1e-15);
+	EXPECT_TRUE(f.landmarks()[0].vertical);
+}
+
+// The robot drives 2 m along a wall with landmarks started on-line from the
+// first frame, odometry noise and observation noise drawn from the models
+// the filter is given: the robot's NEES averaged over runs lies inside the
+// chi-square 95% band (3 dof), at the end of the run.
+TEST(EkfVerticalLandmarks, MonteCarloNeesIsConsistent)
+{
+	auto& rng = mrpt::random::getRandomGenerator();
+	rng.randomize(7);
+	const int runs = 200, steps = 20;
+	const double sOdo = 0.02, sYaw = 0.01, sObs = 0.02, sEnd = 0.02, sAlong = 0.03;
+	std::vector<Eigen::Vector4d> truth;
+	for (int k = 0; k < 5; k++) truth.emplace_back(-1.0 + 0.8 * k, 4.0, 0.1 * k, 1.5 + 0.1 * k);
+	double nees = 0;
+	for (int run = 0; run < runs; run++)
+	{
+		EkfLocalizer f;
+		Eigen::Vector3d X(0, 0, M_PI / 2);	// true pose; the filter starts exact
+		f.reset(gaussian(CPose2D(X.x(), X.y(), X.z()), 1e-8, 1e-8, 1e-10));
+		auto observe = [&](bool start) {
+			std::vector<VerticalLandmarkObservation> z;
+			for (const auto& l : truth)
+			{
+				// The start position's error along the wall is common to the
+				// landmark's life: drawn once per run (a landmark's start is
+				// its eq. 15 estimate).
+				auto o = start ? startable(X, l, sAlong) : seen(X, l, sObs, sEnd);
+				o.position += Eigen::Vector2d(rng.drawGaussian1D(0, sObs), rng.drawGaussian1D(0, sObs));
+				o.covariance = Eigen::Matrix2d::Identity() * sObs * sObs;
+				o.lLow += rng.drawGaussian1D(0, sEnd);
+				o.lHigh += rng.drawGaussian1D(0, sEnd);
+				o.sigmaLow = o.sigmaHigh = sEnd;
+				if (start) o.start.x() += rng.drawGaussian1D(0, sAlong);
+				z.push_back(o);
+			}
+			return z;
+		};
+		f.updateVerticalLandmarks(observe(true));
+		for (int s = 0; s < steps; s++)
+		{
+			// 0.1 m along the wall (robot frame: x ahead, here +90 deg, so
+			// the robot drives sideways: y in its frame is the world's -x).
+			const Eigen::Vector3d u(0, -0.1, 0);
+			const Eigen::Vector3d noisy(
+				u.x() + rng.drawGaussian1D(0, sOdo), u.y() + rng.drawGaussian1D(0, sOdo),
+				u.z() + rng.drawGaussian1D(0, sYaw));
+			const CPose2D next = CPose2D(X.x(), X.y(), X.z()) + CPose2D(noisy.x(), noisy.y(), noisy.z());
+			X = {next.x(), next.y(), next.phi()};
+			f.predict(gaussian(CPose2D(u.x(), u.y(), u.z()), sOdo * sOdo, sOdo * sOdo, sYaw * sYaw));
+			f.updateVerticalLandmarks(observe(false));
+		}
+		const auto r = f.robotPose();
+		Eigen::Vector3d e(r.mean.x() - X.x(), r.mean.y() - X.y(), mrpt::math::wrapToPi(r.mean.phi() - X.z()));
+		nees += e.dot(r.cov.asEigen().ldlt().solve(e));
+	}
+	nees /= runs;
+	// 95% band of the mean of `runs` chi-square(3) draws.
+	const double lo = mrpt::math::chi2inv(0.025, 3 * runs) / runs, hi = mrpt::math::chi2inv(0.975, 3 * runs) / runs;
+	EXPECT_GT(nees, lo);
+	EXPECT_LT(nees, hi);
+}
