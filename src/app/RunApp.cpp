@@ -33,6 +33,8 @@
 #include "featloc/output/SummaryJsonWriter.h"
 #include "featloc/output/TumTrajectoryWriter.h"
 #include "featloc/pipeline/Pipeline.h"
+#include "featloc/output/StereoDebugPictureWriter.h"
+#include "featloc/output/StereoFeatureTableWriter.h"
 #include "featloc/registerClasses.h"
 
 namespace featloc
@@ -157,6 +159,15 @@ RunOutputs makeOutputs(
 	if (withLandmarks)
 		add(std::make_unique<LandmarkTableWriter>(folder.stagedFile("landmarks.txt")),
 			"landmarks.txt");
+	if (rc.stereo)
+	{
+		add(std::make_unique<StereoFeatureTableWriter>(folder.stagedFile("stereo_features.txt")),
+			"stereo_features.txt");
+		if (rc.output.stereo_debug_every > 0)
+			add(std::make_unique<StereoDebugPictureWriter>(
+					folder.stagedFile("stereo_debug"), rc.output.stereo_debug_every),
+				"stereo_debug");
+	}
 	// Written after the run (see evaluateAndPlot), listed here so that
 	// summary.json names every file of the folder.
 	if (withEvaluation) o.names.push_back("nees.txt");
@@ -203,6 +214,17 @@ void printSummary(const RunStats& s)
 		std::printf(
 			"  %zu range-bearing observations; %zu landmarks in the map at the end\n",
 			s.landmarkObservations, s.landmarksInMap);
+	if (s.stereoFrames)
+	{
+		const ErrorStats st = ErrorStats::of(s.stereoTimes);
+		std::printf(
+			"  %zu stereo pairs: %zu segments on map walls, %zu selected; %zu landmarks started, "
+			"%zu observations used; %.1f ms per pair (median)\n",
+			s.stereoFrames, s.stereoObservations, s.stereoSelected, s.stereoLandmarksStarted, s.stereoUpdates,
+			st.median * 1e3);
+		if (s.stereoFramesWithoutWall)
+			std::printf("    %zu pairs saw no wall of the map '%s'\n", s.stereoFramesWithoutWall, s.stereoMap.c_str());
+	}
 	if (s.matchesAttempted)
 	{
 		const ErrorStats t = ErrorStats::of(s.matchTimes);

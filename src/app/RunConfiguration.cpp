@@ -1,8 +1,10 @@
 #include "featloc/app/RunConfiguration.h"
 
 #include "featloc/config/ConfigValues.h"
+#include "featloc/core/ConfigError.h"
 #include "featloc/estimators/PoseEstimatorFactory.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
+#include "featloc/stereo/StereoLandmarkExtractorFactory.h"
 
 namespace featloc
 {
@@ -16,6 +18,18 @@ RunConfiguration RunConfiguration::load(const mrpt::config::CConfigFileBase& cfg
 	rc.output.loadFromConfigFile(cfg, OutputOptions::kSection);
 	rc.evaluation.loadFromConfigFile(cfg, EvaluationOptions::kSection);
 	rc.matcher = ScanMatcherFactory::createFromConfig(cfg);
+	rc.stereo = StereoLandmarkExtractorFactory::createFromConfig(cfg);
+	if (rc.stereo)
+	{
+		try
+		{
+			rc.estimator->setStereoLandmarks(rc.stereo);
+		}
+		catch (const ConfigError& e)
+		{
+			config::fail(cfg, StereoLandmarkExtractorFactory::kSection, "class", e.what());
+		}
+	}
 	return rc;
 }
 
@@ -51,6 +65,17 @@ void RunConfiguration::save(mrpt::config::CConfigFileBase& cfg) const
 			matcher->saveParams(cfg, section);
 		else
 			ScanMatcherFactory::create(name)->saveParams(cfg, section);
+	}
+	config::write(cfg, StereoLandmarkExtractorFactory::kSection, "class",
+		stereo ? stereo->className() : std::string(),
+		"stereo landmark extractor (empty: none; needs estimator = ekf); parameters in [StereoLandmarks.<ClassName>]");
+	for (const auto& name : StereoLandmarkExtractorFactory::knownClassNames())
+	{
+		const std::string section = StereoLandmarkExtractorFactory::paramsSection(name);
+		if (stereo && name == stereo->className())
+			stereo->saveParams(cfg, section);
+		else
+			StereoLandmarkExtractorFactory::create(name)->saveParams(cfg, section);
 	}
 	output.saveToConfigFile(cfg, OutputOptions::kSection);
 	evaluation.saveToConfigFile(cfg, EvaluationOptions::kSection);

@@ -7,6 +7,7 @@ namespace featloc
 void EkfOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	using namespace featloc::config;
+	read(c, s, "use_scan_matcher", use_scan_matcher);
 	read(c, s, "matcher_gate_chi2", matcher_gate_chi2);
 	read(c, s, "matcher_covariance_scale", matcher_covariance_scale);
 	read(c, s, "landmark_gate_probability", landmark_gate_probability);
@@ -25,6 +26,8 @@ void EkfOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, cons
 void EkfOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
 	using namespace featloc::config;
+	write(c, s, "use_scan_matcher", use_scan_matcher,
+		"fuse the scan matcher's motions (false: odometry and landmarks only)");
 	write(c, s, "matcher_gate_chi2", matcher_gate_chi2,
 		"a matcher motion whose Mahalanobis^2 against the prediction exceeds this is not used (21.1: 99.99% for 3 dof)");
 	write(c, s, "matcher_covariance_scale", matcher_covariance_scale,

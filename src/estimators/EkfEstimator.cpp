@@ -1,5 +1,12 @@
 #include "featloc/estimators/EkfEstimator.h"
 
+#include <mrpt/obs/CObservationStereoImages.h>
+
+#include "featloc/core/InputError.h"
+#include "featloc/estimators/StereoStepResult.h"
+#include "featloc/pipeline/DecodedStereoPair.h"
+#include "featloc/stereo/StereoLandmarkExtractor.h"
+
 namespace featloc
 {
 IMPLEMENTS_MRPT_OBJECT(EkfEstimator, PoseEstimator, featloc)
@@ -19,6 +26,7 @@ void EkfEstimator::initialize(const mrpt::poses::CPosePDFGaussian& initialPose)
 	m_filter.reset(initialPose);
 	m_pose = m_filter.robotPose();
 	m_reason.clear();
+	m_lastStereo.reset();
 }
 
 bool EkfEstimator::process(const EstimationStep& step, const MatchResult* match)
@@ -41,8 +49,32 @@ bool EkfEstimator::process(const EstimationStep& step, const MatchResult* match)
 	else if (match)
 		m_reason = "the match failed: " + match->failureReason;
 	if (!step.landmarks.empty()) m_filter.updateLandmarks(step.landmarks);
+	m_lastStereo.reset();
+	if (m_stereo && step.stereo && step.stereoImages) processStereo(step);
 	m_pose = m_filter.robotPose();
 	return used;
+}
+
+std::vector<EstimatedLandmark> EkfEstimator::landmarks() const
+{
+	auto out = m_filter.landmarks();
+	if (m_stereo)
+		for (auto& l : out)
+			if (l.vertical) l.plane = m_stereo->planeName(l.wall);
+	return out;
+}
+
+void EkfEstimator::processStereo(const EstimationStep& step)
+{
+	const std::string where = "entry #" + std::to_string(step.entryIndex) + " (stereo '" +
+		step.stereo->sensorLabel + "')";
+	const StereoHead head = StereoHead::fromObservation(*step.stereo, where);
+	auto r = std::make_shared<StereoStepResult>();
+	r->frame = m_stereo->process(
+		step.stereoImages->left, step.stereoImages->right, head, m_filter.robotPose());
+	r->update = m_filter.updateVerticalLandmarks(r->frame.observations);
+	r->map = m_stereo->mapFile();
+	m_lastStereo = std::move(r);
 }
 
 void EkfEstimator::markKeyframe()

@@ -1,5 +1,7 @@
 #include "featloc/estimators/PoseEstimator.h"
 
+#include "featloc/core/ConfigError.h"
+
 namespace featloc
 {
 IMPLEMENTS_VIRTUAL_MRPT_OBJECT(PoseEstimator, mrpt::rtti::CObject, featloc)
@@ -8,6 +10,13 @@ void PoseEstimator::start(
 	const mrpt::poses::CPosePDFGaussian& initialPose, const EstimationStep& first)
 {
 	initialize(initialPose);
-	if (!first.landmarks.empty()) process(first, nullptr);
+	if (!first.landmarks.empty() || first.stereoImages) process(first, nullptr);
+}
+
+void PoseEstimator::setStereoLandmarks(std::shared_ptr<StereoLandmarkExtractor>)
+{
+	throw ConfigError(
+		"[StereoLandmarks] class is set but estimator '" + name() +
+		"' keeps no landmarks: use [Pipeline] estimator = ekf");
 }
 }  // namespace featloc

@@ -14,6 +14,7 @@ void OutputOptions::loadFromConfigFile(
 	read(c, s, "pose_label", pose_label);
 	read(c, s, "scene_scan_decimation", scene_scan_decimation);
 	read(c, s, "scene_ellipse_every", scene_ellipse_every);
+	read(c, s, "stereo_debug_every", stereo_debug_every);
 	require(!dir.empty(), c, s, "dir", "a folder name");
 	require(!pose_label.empty(), c, s, "pose_label", "a non-empty label");
 	require(scene_scan_decimation >= 1, c, s, "scene_scan_decimation", ">= 1");
@@ -34,5 +35,7 @@ void OutputOptions::saveToConfigFile(
 		"map.3Dscene shows every N-th scan");
 	write(c, s, "scene_ellipse_every", scene_ellipse_every,
 		"map.3Dscene: robot 3-sigma ellipse every N-th scan (0: none)");
+	write(c, s, "stereo_debug_every", stereo_debug_every,
+		"with stereo landmarks: stereo_debug/<step>.png for every N-th stereo pair (0: none)");
 }
 }  // namespace featloc

@@ -36,6 +36,19 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"match_failures", s.matchFailures},
 		{"fallbacks_to_odometry", s.fallbacks},
 		{"ignored_observations", s.ignoredObservations}};
+	if (s.stereoFrames)
+	{
+		const ErrorStats st = ErrorStats::of(s.stereoTimes);
+		j["stereo_landmarks"] = {
+			{"map", s.stereoMap},
+			{"pairs_processed", s.stereoFrames},
+			{"pairs_without_wall_in_view", s.stereoFramesWithoutWall},
+			{"observations_on_planes", s.stereoObservations},
+			{"features_selected", s.stereoSelected},
+			{"landmarks_started", s.stereoLandmarksStarted},
+			{"observations_used", s.stereoUpdates},
+			{"time_per_pair_s", {{"mean", st.mean}, {"median", st.median}, {"p95", st.p95}, {"max", st.max}}}};
+	}
 	j["failure_examples"] = s.failureExamples;
 	j["rejection_examples"] = s.rejectionExamples;
 	const ErrorStats t = ErrorStats::of(s.matchTimes);

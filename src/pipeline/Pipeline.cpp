@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "featloc/core/InputError.h"
+#include "featloc/estimators/StereoStepResult.h"
 #include "featloc/pipeline/StepAssembler.h"
 #include "featloc/pipeline/StereoImagesHandler.h"
 
@@ -25,6 +26,20 @@ void copyAssemblerStats(const StepAssembler& a, RunStats& s)
 	s.stepsWithoutOdometry = a.stepsWithoutOdometry();
 	s.landmarkObservations = a.landmarkObservations();
 	s.ignoredObservations = a.ignoredObservations();
+}
+
+void countStereo(const StereoStepResult& r, RunStats& s)
+{
+	s.stereoFrames++;
+	s.stereoMap = r.map;
+	bool wallInView = false;
+	for (const auto& p : r.frame.planes) wallInView = wallInView || p.uMax >= p.uMin;
+	if (!wallInView) s.stereoFramesWithoutWall++;
+	s.stereoObservations += r.frame.observations.size();
+	for (const auto& f : r.frame.features) s.stereoSelected += f.selected ? 1 : 0;
+	s.stereoLandmarksStarted += r.update.added;
+	s.stereoUpdates += r.update.used;
+	s.stereoTimes.push_back(r.frame.seconds);
 }
 
 /** "5 CObservationBearingRange, 3 CObservationImage": what the log holds. */
@@ -126,6 +141,12 @@ RunStats Pipeline::run(
 			msg << ")";
 			throw InputError(msg.str());
 		}
+		if (stats.stereoFrames > 0 && stats.stereoFramesWithoutWall == stats.stereoFrames)
+			throw InputError(
+				"no wall of the stereo landmarks' map '" + stats.stereoMap + "' was in view in any of the " +
+				std::to_string(stats.stereoFrames) +
+				" stereo pairs (from the estimated poses): the map does not cover what the camera saw "
+				"(another building, or the map's frame differs from the run's [Pipeline] initial pose)");
 		stats.wallTime = elapsed();
 		for (auto* o : outputs) o->finish(stats);
 	}
@@ -226,7 +247,9 @@ void Pipeline::processStep(
 	stats.logSeconds = std::chrono::duration<double>(step.time - m_firstStepTime).count();
 	const std::vector<EstimatedLandmark> landmarks = m_estimator->landmarks();
 	stats.landmarksInMap = landmarks.size();
-	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch, &landmarks};
+	const StereoStepResult* stereo = m_estimator->lastStereo();
+	if (stereo) countStereo(*stereo, stats);
+	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch, &landmarks, stereo};
 	for (auto* o : outputs) o->onStep(record);
 }
 

@@ -182,7 +182,11 @@ void StepAssembler::onObservation(
 	else if (!s.source)
 		s.source = obs.get();  // the outputs attach the pose after it
 	s.landmarks.insert(s.landmarks.end(), c.landmarks.begin(), c.landmarks.end());
-	if (c.stereo) s.stereo = c.stereo;
+	if (c.stereo)
+	{
+		s.stereo = c.stereo;
+		s.stereoImages = c.stereoImages;
+	}
 	used.push_back({s.index, obs.get()});
 }
 

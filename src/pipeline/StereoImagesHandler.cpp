@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "featloc/core/InputError.h"
+#include "featloc/pipeline/DecodedStereoPair.h"
 
 namespace featloc
 {
@@ -14,9 +15,9 @@ namespace
 {
 std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 
-/** The image's pixel size, loading it from its file when it is stored
- * externally (made absolute in the observation on success). */
-cv::Size checkImage(
+/** The image, grey, loading it from its file when it is stored externally
+ * (the path made absolute in the observation on success). */
+cv::Mat checkImage(
 	mrpt::img::CImage& img, const char* side, const std::string& imagesDir,
 	const std::string& where)
 {
@@ -24,7 +25,7 @@ cv::Size checkImage(
 	{
 		if (img.isEmpty())
 			throw InputError(where + ": the " + side + " image of the stereo pair is empty");
-		return {static_cast<int>(img.getWidth()), static_cast<int>(img.getHeight())};
+		return img.grayscale().asCvMat<cv::Mat>(mrpt::img::DEEP_COPY);
 	}
 	namespace fs = std::filesystem;
 	fs::path file(img.getExternalStorageFile());
@@ -35,13 +36,13 @@ cv::Size checkImage(
 			where + ": the " + side + " image file '" + file.string() +
 			"' is missing (external images are looked up in the rawlog's " +
 			"<name>_Images folder: '" + imagesDir + "')");
-	const cv::Mat m = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+	const cv::Mat m = cv::imread(file.string(), cv::IMREAD_GRAYSCALE);
 	if (m.empty())
 		throw InputError(
 			where + ": the " + side + " image file '" + file.string() +
 			"' does not decode as an image");
 	img.setExternalStorage(fs::absolute(file, ec).string());
-	return m.size();
+	return m;
 }
 
 void checkCamera(const mrpt::img::TCamera& c, const char* side, const std::string& where)
@@ -88,8 +89,10 @@ bool StereoImagesHandler::handle(
 		throw InputError(
 			where + ": stereo observation without a calibration: rightCameraPose gives no "
 					"baseline (the right camera must be offset from the left one)");
-	const cv::Size left = checkImage(obs->imageLeft, "left", m_imagesDirectory, where);
-	const cv::Size right = checkImage(obs->imageRight, "right", m_imagesDirectory, where);
+	auto images = std::make_shared<DecodedStereoPair>();
+	images->left = checkImage(obs->imageLeft, "left", m_imagesDirectory, where);
+	images->right = checkImage(obs->imageRight, "right", m_imagesDirectory, where);
+	const cv::Size left = images->left.size(), right = images->right.size();
 	if (left != right)
 		throw InputError(
 			where + ": left image " + sizeText(left.width, left.height) + " and right image " +
@@ -101,6 +104,7 @@ bool StereoImagesHandler::handle(
 			" but the calibration (leftCamera) is for " +
 			sizeText(static_cast<int>(lc.ncols), static_cast<int>(lc.nrows)));
 	out.stereo = obs;
+	out.stereoImages = images;
 	m_pairs++;
 	return true;
 }

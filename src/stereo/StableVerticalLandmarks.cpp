@@ -55,6 +55,7 @@ void StableVerticalLandmarks::loadParams(const mrpt::config::CConfigFileBase& c,
 	read(c, s, "boundary_sigmas", options.boundary_sigmas);
 	read(c, s, "min_boundary_angle_deg", options.min_boundary_angle_deg);
 	read(c, s, "snap_to_segment", options.snap_to_segment);
+	read(c, s, "sigma_end_px", options.sigma_end_px);
 	read(c, s, "min_length_similarity", options.min_length_similarity);
 	require(options.block_size >= 5 && options.block_size <= 255 && options.block_size % 2 == 1, c, s,
 		"block_size", "odd, in [5, 255]");
@@ -66,6 +67,7 @@ void StableVerticalLandmarks::loadParams(const mrpt::config::CConfigFileBase& c,
 	require(options.max_height > options.min_height, c, s, "max_height", "> min_height");
 	require(options.sigma_img > 0, c, s, "sigma_img", "> 0");
 	require(options.window_sigmas > 0, c, s, "window_sigmas", "> 0");
+	require(options.sigma_end_px > 0, c, s, "sigma_end_px", "> 0");
 	require(options.boundary_sigmas >= 0, c, s, "boundary_sigmas", ">= 0");
 	require(options.min_boundary_angle_deg >= 0 && options.min_boundary_angle_deg < 90, c, s,
 		"min_boundary_angle_deg", "in [0, 90)");
@@ -76,6 +78,7 @@ void StableVerticalLandmarks::loadParams(const mrpt::config::CConfigFileBase& c,
 	std::string path = options.map;
 	if (const auto* tc = dynamic_cast<const TrackedConfig*>(&c)) path = tc->resolvePath(s, "map", path);
 	walls = WallMapFile::load(path);
+	m_mapPath = path;
 }
 
 void StableVerticalLandmarks::saveParams(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -105,6 +108,8 @@ void StableVerticalLandmarks::saveParams(mrpt::config::CConfigFileBase& c, const
 		"[deg] a wall end seen at a smaller angle between the view ray and the wall is not searched (featloc)");
 	write(c, s, "snap_to_segment", options.snap_to_segment,
 		"a segment within 3 sigma outward of the SAD boundary is the boundary (featloc)");
+	write(c, s, "sigma_end_px", options.sigma_end_px,
+		"[px] sigma of a segment end's row (the ends' heights the EKF observes)");
 	write(c, s, "min_length_similarity", options.min_length_similarity,
 		"eq. (18): least min/max length of the left and right segments of a landmark");
 }
@@ -333,6 +338,25 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 		auto& on = byPlane[p];
 		if (on.empty()) continue;
 		const auto& pl = f.planes[p];
+		const size_t firstObservation = f.observations.size();
+		for (const auto& o : on)
+		{
+			const auto& m = f.matches[o.match];
+			const auto& l = f.left[m.left];
+			VerticalLandmarkObservation z;
+			z.wall = p;
+			z.polarity = l.polarity;
+			z.match = o.match;
+			z.position = Eigen::Vector2d(head.camX, head.camY) + camToRobot * o.c;
+			z.covariance = camToRobot * o.P * camToRobot.transpose();
+			const double depth = o.c.y(), sigmaH = depth / head.fy * options.sigma_end_px;
+			z.lHigh = head.heightAt(l.vTop - 0.5, depth);
+			z.lLow = head.heightAt(l.vBottom + 0.5, depth);
+			// An end at the image border is where the view ends, not the line.
+			z.sigmaHigh = l.vTop > 1 ? sigmaH : 0;
+			z.sigmaLow = l.vBottom < H - 2 ? sigmaH : 0;
+			f.observations.push_back(z);
+		}
 		std::vector<double> cols, lengths;
 		for (const auto& o : on)
 		{
@@ -474,6 +498,15 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			return std::abs(a.dp) < std::abs(b.dp);
 		});
 		for (size_t k = 0; k < feats.size(); k++) feats[k].index = static_cast<int>(k + 1);
+		for (const auto& ft : feats)
+			if (ft.selected)
+				for (size_t k = firstObservation; k < f.observations.size(); k++)
+					if (f.observations[k].match == ft.match)
+					{
+						f.observations[k].canStart = true;
+						f.observations[k].start = ft.position;
+						f.observations[k].startCovariance = ft.covariance;
+					}
 		f.features.insert(f.features.end(), feats.begin(), feats.end());
 	}
 	f.seconds = seconds(t0);

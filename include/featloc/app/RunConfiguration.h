@@ -8,6 +8,7 @@
 #include "featloc/odometry/OdometryOptions.h"
 #include "featloc/output/OutputOptions.h"
 #include "featloc/pipeline/PipelineOptions.h"
+#include "featloc/stereo/StereoLandmarkExtractor.h"
 
 namespace featloc
 {
@@ -24,6 +25,9 @@ struct RunConfiguration
 	/** The estimator named by [Pipeline] estimator, its parameters loaded. */
 	PoseEstimator::Ptr estimator;
 	ScanMatcher::Ptr matcher;  //!< always created (keys are validated)
+	/** [StereoLandmarks] class, its parameters loaded, handed to the
+	 * estimator; null when the class is empty (the default). */
+	std::shared_ptr<StereoLandmarkExtractor> stereo;
 
 	/** Loads every section. Throws ConfigError on a bad value. (Unknown keys
 	 * are checked by the caller: TrackedConfig::requireAllKeysRead.) */

@@ -15,6 +15,9 @@ struct EkfOptions : public mrpt::config::CLoadableOptions
 	 * drops about one good match in a hundred, and each costs accuracy in
 	 * turns, where odometry is worst). */
 	double matcher_gate_chi2 = 21.1;
+	/** Fuse the scan matcher's motions (false: odometry and landmarks
+	 * only, e.g. stereo landmarks alone). */
+	bool use_scan_matcher = true;
 	/** The matcher's covariance is scaled by this before fusion (1: as the
 	 * matcher reports it; MRPT's ICP under-reports by about 2). */
 	double matcher_covariance_scale = 1;

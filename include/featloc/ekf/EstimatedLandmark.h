@@ -2,6 +2,7 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace featloc
 {
@@ -16,6 +17,7 @@ struct EstimatedLandmark
 	unsigned int observations = 0;	//!< times it was observed (its first included)
 	bool vertical = false;
 	size_t wall = 0;  //!< vertical: the map wall it lies on
+	std::string plane;	//!< its name (filled by the estimator)
 	double lLow = 0, lHigh = 0;	 //!< vertical: heights of its ends [m]
 	double sigmaLow = 0, sigmaHigh = 0;	 //!< [m]
 };

@@ -4,12 +4,15 @@
 #include <mrpt/poses/CPosePDFGaussian.h>
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "featloc/ekf/LandmarkObservation.h"
 
 namespace featloc
 {
+struct DecodedStereoPair;
+
 /** One observation frame to process: what the sensors saw at one time (a
  * 2-D scan, point landmarks, a stereo pair, or several), with the robot motion since the
  * previous step as measured by odometry. Steps come in time order; every
@@ -44,5 +47,7 @@ struct EstimationStep
 	/** A stereo pair of this frame (checked: calibration, images that
 	 * exist and decode), or null. */
 	std::shared_ptr<mrpt::obs::CObservationStereoImages> stereo;
+	/** Its images, decoded grey (with `stereo`). */
+	std::shared_ptr<const DecodedStereoPair> stereoImages;
 };
 }  // namespace featloc

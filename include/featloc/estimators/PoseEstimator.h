@@ -14,6 +14,9 @@
 
 namespace featloc
 {
+class StereoLandmarkExtractor;
+struct StereoStepResult;
+
 /** Turns the per-step inputs (odometry motion, scan-matcher result,
  * landmark observations) into the robot's global pose with covariance.
  *
@@ -81,6 +84,14 @@ class PoseEstimator : public mrpt::rtti::CObject
 
 	/** The point landmarks the estimator keeps (none for most). */
 	virtual std::vector<EstimatedLandmark> landmarks() const { return {}; }
+
+	/** Stereo landmarks: the extractor that turns each step's stereo pair
+	 * into landmark observations. Estimators that keep no landmarks throw
+	 * ConfigError (the default). */
+	virtual void setStereoLandmarks(std::shared_ptr<StereoLandmarkExtractor> extractor);
+	/** What the last process() made of its step's stereo pair, or null
+	 * (no pair, or no extractor). */
+	virtual const StereoStepResult* lastStereo() const { return nullptr; }
 
 	/** Why the last process() did not use the match ("" if it did, or
 	 * there was none). */

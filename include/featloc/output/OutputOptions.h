@@ -23,6 +23,10 @@ struct OutputOptions : public mrpt::config::CLoadableOptions
 	/** map.3Dscene draws the robot's 3-sigma covariance ellipse at every
 	 * N-th scan (0: none); landmarks always get theirs. */
 	unsigned int scene_ellipse_every = 10;
+	/** With stereo landmarks: stereo_debug/<step>.png, the left image of
+	 * every N-th stereo pair with detected, matched, on-plane and selected
+	 * segments (Moon et al.'s Figs. 5-6; 0: none). */
+	unsigned int stereo_debug_every = 0;
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& c,

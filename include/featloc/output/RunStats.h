@@ -19,6 +19,13 @@ struct RunStats
 	size_t scans = 0;  //!< steps that held a 2-D scan
 	std::map<std::string, size_t> scansPerLabel;  //!< every 2-D scan seen
 	size_t stereoPairs = 0;	 //!< checked CObservationStereoImages
+	/** Stereo landmarks ([StereoLandmarks] class): pairs processed, pairs
+	 * with no map wall in view, observations on a plane, selected
+	 * features, landmarks started, observations that updated the EKF. */
+	size_t stereoFrames = 0, stereoFramesWithoutWall = 0, stereoObservations = 0;
+	size_t stereoSelected = 0, stereoLandmarksStarted = 0, stereoUpdates = 0;
+	std::vector<double> stereoTimes;  //!< [s] extractor per pair
+	std::string stereoMap;	//!< its map file
 	size_t odometryReadings = 0;  //!< CObservationOdometry (format #2)
 	size_t odometryActions = 0;	 //!< CActionRobotMovement2D (format #1)
 	size_t stepsWithoutOdometry = 0;

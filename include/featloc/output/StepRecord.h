@@ -9,6 +9,8 @@
 
 namespace featloc
 {
+struct StereoStepResult;
+
 /** What the pipeline produced for one step, handed to every output. */
 struct StepRecord
 {
@@ -23,5 +25,8 @@ struct StepRecord
 	/** The estimator's point landmarks after this step (empty for all but
 	 * the EKF). */
 	const std::vector<EstimatedLandmark>* landmarks = nullptr;
+	/** What the stereo landmark extractor and the EKF made of this step's
+	 * stereo pair, or nullptr. */
+	const StereoStepResult* stereo = nullptr;
 };
 }  // namespace featloc

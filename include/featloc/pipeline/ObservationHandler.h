@@ -21,8 +21,9 @@ struct ObservationContribution
 	mrpt::obs::CObservation2DRangeScan::Ptr scan;
 	/** Point landmarks in the robot frame. */
 	std::vector<LandmarkObservation> landmarks;
-	/** A checked stereo pair. */
+	/** A checked stereo pair, and its images decoded grey. */
 	std::shared_ptr<mrpt::obs::CObservationStereoImages> stereo;
+	std::shared_ptr<const struct DecodedStereoPair> stereoImages;
 	/** An absolute odometry reading (format #2 CObservationOdometry). */
 	std::optional<mrpt::poses::CPose2D> odometryReading;
 };

@@ -33,7 +33,10 @@ namespace featloc
  *  5. the plane's boundary at a visible end (BoundarySearch, 3.2), put on
  *     the plane the same way, and each feature's position relative to it,
  *     eqs. (15)-(17) (3.3);
- *  6. selection (4): a feature within boundary_sigmas sigma of the
+ *  6. every match on a plane, boundary or not, becomes an observation for
+ *     the EKF (section 5), with its ends' heights (an end at the image
+ *     border is not observed); a selected feature may start a landmark;
+ *  7. selection (4): a feature within boundary_sigmas sigma of the
  *     boundary (|d_p| < 3 sigma_dp), or whose left and right segments'
  *     length similarity (eq. 18) is below min_length_similarity, is not a
  *     landmark; the reason is kept.
@@ -65,6 +68,9 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 		 * for its boundary to be searched (featloc's addition). */
 		double min_boundary_angle_deg = 20;
 		bool snap_to_segment = true;
+		/** [px] sigma of a segment end's row: the ends' heights in the
+		 * EKF's observations (section 5). */
+		double sigma_end_px = 2;
 		double min_length_similarity = 0.7;	 //!< paper, section 4 (threshold not given)
 	};
 	Options options;
@@ -72,6 +78,12 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 
 	void loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section) override;
 	void saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const override;
+
+	std::string planeName(size_t wall) const override
+	{
+		return wall < walls.size() ? walls[wall].name : StereoLandmarkExtractor::planeName(wall);
+	}
+	std::string mapFile() const override { return m_mapPath; }
 
 	StereoLandmarkFrame process(
 		const cv::Mat& left, const cv::Mat& right, const StereoHead& head,
@@ -91,5 +103,8 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 	 * searching minDisparity .. minDisparity + numDisparities - 1 (0: the
 	 * option's whole range). */
 	cv::Mat disparity(const cv::Mat& left, const cv::Mat& right, int minDisparity = 0, int numDisparities = 0) const;
+
+   private:
+	std::string m_mapPath;	//!< options.map resolved
 };
 }  // namespace featloc

@@ -35,5 +35,9 @@ class StereoLandmarkExtractor : public mrpt::rtti::CObject
 		const mrpt::poses::CPosePDFGaussian& robot) const = 0;
 
 	std::string className() const;
+	/** Name of map wall `wall` (the reference plane of a landmark). */
+	virtual std::string planeName(size_t wall) const { return "wall " + std::to_string(wall); }
+	/** The map file the extractor reads ("" if none), for messages. */
+	virtual std::string mapFile() const { return ""; }
 };
 }  // namespace featloc

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "featloc/ekf/VerticalLandmarkObservation.h"
 #include "featloc/stereo/BoundarySearch.h"
 #include "featloc/stereo/ModelledFeature.h"
 #include "featloc/stereo/PlanarRegion.h"
@@ -35,6 +36,10 @@ struct StereoLandmarkFrame
 	};
 	std::vector<BoundaryCheck> boundaryOffsets;
 	std::vector<ModelledFeature> features;	//!< 3.3 and 4
+	/** Every match on a plane (2.4), constrained to it (3.1), boundary
+	 * found or not: the EKF's observations (section 5); the selected
+	 * features among them may start landmarks. */
+	std::vector<VerticalLandmarkObservation> observations;
 	double seconds = 0, disparitySeconds = 0;
 };
 }  // namespace featloc
