@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 #include "featloc/ekf/EkfLocalizer.h"
@@ -36,6 +37,52 @@ double EkfLocalizer::verticalDistance2(const VerticalLandmarkObservation& z, siz
 	return nu.dot(S.ldlt().solve(nu));
 }
 
+EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(
+	const std::vector<VerticalLandmarkObservation>& obs, const std::vector<int>& pairing,
+	const std::vector<std::pair<double, size_t>>& paired) const
+{
+	// An observed end enters the update only where it agrees with the
+	// landmark's (1 dof gate): a shorter piece of the line moves neither.
+	const double endGate2 = mrpt::math::chi2inv(options.landmark_gate_probability, 1);
+	std::vector<VerticalLandmarkObservation> used;
+	Eigen::Index m = 0;
+	for (const auto& pr : paired)
+	{
+		VerticalLandmarkObservation z = obs[pr.second];
+		const Eigen::Index k = m_info[static_cast<size_t>(pairing[pr.second])].index;
+		auto check = [&](double measured, double& sigma, Eigen::Index e) {
+			const double d = measured - m_x[e];
+			if (sigma > 0 && d * d > endGate2 * (sigma * sigma + P()(e, e))) sigma = 0;
+		};
+		check(z.lLow, z.sigmaLow, k + 2);
+		check(z.lHigh, z.sigmaHigh, k + 3);
+		used.push_back(z);
+		m += VerticalLandmarkConstraint(z).size();
+	}
+	// Stacked constraint on [robot; landmarks used]: nu = -G, H = dG/dS.
+	VerticalStack st;
+	st.cols = {kRobot, kRobot + 1, kRobot + 2};
+	st.H = Eigen::MatrixXd::Zero(m, 3 + 4 * static_cast<Eigen::Index>(paired.size()));
+	st.nu.resize(m);
+	st.R = Eigen::MatrixXd::Zero(m, m);
+	Eigen::Index row = 0, col = 3;
+	for (size_t a = 0; a < paired.size(); a++)
+	{
+		const size_t j = static_cast<size_t>(pairing[paired[a].second]);
+		const VerticalLandmarkConstraint g(used[a]);
+		const Eigen::Index k = m_info[j].index, r = g.size();
+		Eigen::MatrixXd GX, Gl;
+		st.nu.segment(row, r) = -g.evaluate(m_x.segment<3>(kRobot), m_x.segment<4>(k), &GX, &Gl);
+		st.H.block(row, 0, r, 3) = GX;
+		st.H.block(row, col, r, 4) = Gl;
+		st.R.block(row, row, r, r) = g.noise();
+		for (Eigen::Index c = 0; c < 4; c++) st.cols.push_back(k + c);
+		row += r;
+		col += 4;
+	}
+	return st;
+}
+
 EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 	const std::vector<VerticalLandmarkObservation>& obs)
 {
@@ -45,24 +92,28 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 	const double p = options.landmark_gate_probability;
 	const size_t L = m_info.size();
 
-	// Candidates: same wall, same polarity, inside the gate (its dof: 2
-	// for the position, one per observed end).
+	// Candidates: same wall, same polarity, overlapping heights, position
+	// inside the gate (2 dof). The ends do not decide: a segment broken by
+	// an occluder or a weak stretch of edge is still the same line.
 	std::vector<std::tuple<double, size_t, size_t>> all;  // (d2, observation, landmark)
-	std::vector<char> nearSome(obs.size(), 0);
+	const double gate2 = mrpt::math::chi2inv(p, 2);
+	const double newGate2 = mrpt::math::chi2inv(options.landmark_new_probability, 2);
+	auto positionDistance2 = [&](const VerticalLandmarkObservation& z, size_t j) {
+		const auto& info = m_info[j];
+		if (!info.vertical() || info.wall != z.wall || info.polarity != z.polarity)
+			return std::numeric_limits<double>::infinity();
+		const Eigen::Index k = info.index;
+		if (z.lHigh < m_x[k + 2] || z.lLow > m_x[k + 3]) return std::numeric_limits<double>::infinity();
+		VerticalLandmarkObservation position = z;
+		position.sigmaLow = position.sigmaHigh = 0;
+		return verticalDistance2(position, j);
+	};
 	for (size_t i = 0; i < obs.size(); i++)
-	{
-		const auto dof = static_cast<unsigned>(VerticalLandmarkConstraint(obs[i]).size());
-		const double gate2 = mrpt::math::chi2inv(p, dof);
-		const double newGate2 = mrpt::math::chi2inv(options.landmark_new_probability, dof);
 		for (size_t j = 0; j < L; j++)
 		{
-			const auto& info = m_info[j];
-			if (!info.vertical() || info.wall != obs[i].wall || info.polarity != obs[i].polarity) continue;
-			const double d2 = verticalDistance2(obs[i], j);
+			const double d2 = positionDistance2(obs[i], j);
 			if (d2 <= gate2) all.emplace_back(d2, i, j);
-			if (d2 <= newGate2) nearSome[i] = 1;
 		}
-	}
 	// Nearest neighbour, the most certain pairs first, each landmark once.
 	std::sort(all.begin(), all.end());
 	std::vector<int> pairing(obs.size(), -1);
@@ -85,31 +136,32 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 	std::sort(paired.begin(), paired.end());
 	if (paired.size() > options.stereo_landmarks_per_frame) paired.resize(options.stereo_landmarks_per_frame);
 
+	// The pairs used must be jointly compatible (chi-square, all their
+	// rows): while they are not, the pair farthest from its prediction
+	// is dropped. Individually plausible pairs can still share one wrong
+	// cause (a landmark started from a misplaced boundary).
+	while (!paired.empty())
+	{
+		const auto joint = stackVertical(obs, pairing, paired);
+		const double limit = mrpt::math::chi2inv(p, static_cast<unsigned>(joint.nu.size()));
+		const double d2 = joint.nu.dot(
+			(joint.H * P()(joint.cols, joint.cols) * joint.H.transpose() + joint.R).ldlt().solve(joint.nu));
+		if (d2 <= limit) break;
+		size_t worst = 0;
+		double worstD2 = -1;
+		for (size_t a = 0; a < paired.size(); a++)
+		{
+			const double da = verticalDistance2(obs[paired[a].second], static_cast<size_t>(pairing[paired[a].second]));
+			if (da > worstD2) worstD2 = da, worst = a;
+		}
+		pairing[paired[worst].second] = -1;
+		paired.erase(paired.begin() + static_cast<long>(worst));
+		out.inconsistent++;
+	}
 	if (!paired.empty())
 	{
-		// Stacked constraint on [robot; landmarks used]: nu = -G, H = dG/dS.
-		Eigen::Index m = 0;
-		for (const auto& pr : paired) m += VerticalLandmarkConstraint(obs[pr.second]).size();
-		std::vector<Eigen::Index> cols{kRobot, kRobot + 1, kRobot + 2};
-		Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m, 3 + 4 * static_cast<Eigen::Index>(paired.size()));
-		Eigen::VectorXd nu(m);
-		Eigen::MatrixXd R = Eigen::MatrixXd::Zero(m, m);
-		Eigen::Index row = 0, col = 3;
-		for (const auto& pr : paired)
-		{
-			const size_t i = pr.second, j = static_cast<size_t>(pairing[i]);
-			const VerticalLandmarkConstraint g(obs[i]);
-			const Eigen::Index k = m_info[j].index, r = g.size();
-			Eigen::MatrixXd GX, Gl;
-			nu.segment(row, r) = -g.evaluate(m_x.segment<3>(kRobot), m_x.segment<4>(k), &GX, &Gl);
-			H.block(row, 0, r, 3) = GX;
-			H.block(row, col, r, 4) = Gl;
-			R.block(row, row, r, r) = g.noise();
-			for (Eigen::Index c = 0; c < 4; c++) cols.push_back(k + c);
-			row += r;
-			col += 4;
-		}
-		out.jointMahalanobis2 = update(cols, H, nu, R);
+		const auto joint = stackVertical(obs, pairing, paired);
+		out.jointMahalanobis2 = update(joint.cols, joint.H, joint.nu, joint.R);
 		for (const auto& pr : paired)
 		{
 			const size_t j = static_cast<size_t>(pairing[pr.second]);
@@ -120,10 +172,29 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 	}
 	// Landmarks started on-line (section 5): selected features compatible
 	// with no landmark of their wall.
+	const size_t firstNew = m_info.size();
+	std::vector<size_t> started;
 	for (size_t i = 0; i < obs.size(); i++)
 	{
 		if (pairing[i] >= 0 || !obs[i].canStart) continue;
-		if (nearSome[i])
+		// Near a landmark: ambiguous, not new. Against this frame's new
+		// ones the start positions are compared (both relative to the map,
+		// the robot's uncertainty not in between): two pieces of one line
+		// start one landmark, two lines of one frame two.
+		bool nearSome = false;
+		for (size_t j = 0; j < firstNew && !nearSome; j++)
+			nearSome = positionDistance2(obs[i], j) <= newGate2;
+		for (const size_t a : started)
+		{
+			const auto& o = obs[a];
+			if (nearSome || o.wall != obs[i].wall || o.polarity != obs[i].polarity ||
+				o.lHigh < obs[i].lLow || o.lLow > obs[i].lHigh)
+				continue;
+			const Eigen::Vector2d d = o.start - obs[i].start;
+			const double var = (o.startCovariance + obs[i].startCovariance).trace() + 2 * kAcrossWallVariance;
+			nearSome = d.squaredNorm() <= mrpt::math::chi2inv(options.landmark_new_probability, 1) * var;
+		}
+		if (nearSome)
 		{
 			out.ambiguous++;
 			continue;
@@ -147,6 +218,7 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 		appendLandmark(mean, cov, Eigen::MatrixXd::Zero(4, m_x.size()), info);
 		out.landmarkOf[i] = static_cast<int>(m_info.size() - 1);
 		out.added++;
+		started.push_back(i);
 	}
 	return out;
 }

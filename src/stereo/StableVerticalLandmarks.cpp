@@ -498,15 +498,24 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			return std::abs(a.dp) < std::abs(b.dp);
 		});
 		for (size_t k = 0; k < feats.size(); k++) feats[k].index = static_cast<int>(k + 1);
+		// Selected features may start landmarks; features the paper calls
+		// unstable (near the boundary, dissimilar lengths) are not observed
+		// either (section 4).
+		std::vector<char> unstable(f.observations.size(), 0);
 		for (const auto& ft : feats)
-			if (ft.selected)
-				for (size_t k = firstObservation; k < f.observations.size(); k++)
-					if (f.observations[k].match == ft.match)
+			for (size_t k = firstObservation; k < f.observations.size(); k++)
+				if (f.observations[k].match == ft.match)
+				{
+					if (ft.selected)
 					{
 						f.observations[k].canStart = true;
 						f.observations[k].start = ft.position;
 						f.observations[k].startCovariance = ft.covariance;
 					}
+					unstable[k] = ft.reason == "near boundary" || ft.lengthSimilarity < options.min_length_similarity;
+				}
+		for (size_t k = f.observations.size(); k-- > firstObservation;)
+			if (unstable[k]) f.observations.erase(f.observations.begin() + static_cast<long>(k));
 		f.features.insert(f.features.end(), feats.begin(), feats.end());
 	}
 	f.seconds = seconds(t0);

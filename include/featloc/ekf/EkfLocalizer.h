@@ -60,11 +60,17 @@ namespace featloc
  * - updateVerticalLandmarks(observations): vertical-line landmarks
  *   [x y l_low l_high] of Moon, Miura & Shirai (section 5), observed
  *   through the constraint of eq. (20) (VerticalLandmarkConstraint). An
- *   observation pairs only with a landmark on its wall with its polarity,
- *   by nearest neighbour within the gate; of the pairs, the
+ *   observation pairs only with a landmark on its wall with its polarity
+ *   whose height range it overlaps, by nearest neighbour within the
+ *   position gate (2 dof: a line broken into pieces is still one line);
+ *   an observed end enters the update only if it agrees with the
+ *   landmark's (1 dof gate). Of the pairs, the
  *   stereo_landmarks_per_frame least uncertain landmarks update the state
- *   (section 4: "a subset of stable landmarks with less uncertainty").
- *   Selected features compatible with no landmark start one on-line, at
+ *   (section 4: "a subset of stable landmarks with less uncertainty"),
+ *   after dropping, while the subset is not jointly compatible, the pair
+ *   farthest from its prediction.
+ *   Selected features outside the new-landmark gate of every landmark (this
+ *   frame's new ones included) start one on-line, at
  *   their position relative to the map's edge (eq. 15) with its rank-1
  *   covariance (eq. 17), uncorrelated with the robot: the map is known.
  *
@@ -119,6 +125,7 @@ class EkfLocalizer
 	{
 		size_t observed = 0, associated = 0, used = 0, added = 0;
 		size_t ambiguous = 0;  //!< compatible with a landmark, left unpaired
+		size_t inconsistent = 0;  //!< paired, dropped by the joint gate
 		double jointMahalanobis2 = 0;  //!< of the innovations used
 		/** Per observation: the landmark it updated or started (index
 		 * after the update), or -1. */
@@ -198,6 +205,17 @@ class EkfLocalizer
 	/** Mahalanobis^2 of vertical observation z against landmark j (robot and
 	 * landmark blocks only), and the constraint's terms. */
 	double verticalDistance2(const VerticalLandmarkObservation& z, size_t j) const;
+	/** The stacked eq. (20) constraint of the pairs `paired` (landmark
+	 * pairing[i] for observation i = paired[a].second). */
+	struct VerticalStack
+	{
+		std::vector<Eigen::Index> cols;
+		Eigen::MatrixXd H, R;
+		Eigen::VectorXd nu;
+	};
+	VerticalStack stackVertical(
+		const std::vector<VerticalLandmarkObservation>& obs, const std::vector<int>& pairing,
+		const std::vector<std::pair<double, size_t>>& paired) const;
 	void removeLandmark(size_t j);
 	void pruneLandmarks();
 	void clonePose(Eigen::Index to);
