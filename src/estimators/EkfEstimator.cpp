@@ -4,7 +4,7 @@
 
 #include "featloc/core/InputError.h"
 #include "featloc/estimators/StereoStepResult.h"
-#include "featloc/pipeline/DecodedStereoPair.h"
+#include "featloc/io/DecodedStereoPair.h"
 #include "featloc/stereo/StereoLandmarkExtractor.h"
 
 namespace featloc

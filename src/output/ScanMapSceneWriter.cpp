@@ -112,8 +112,15 @@ void ScanMapSceneWriter::finish(const RunStats&)
 		auto points = mrpt::opengl::CPointCloud::Create();
 		points->setColor(0.9f, 0.1f, 0.1f);
 		points->setPointSize(6.0f);
+		// Vertical-line landmarks (Moon et al.) as their segments, from
+		// l_low to l_high above their foot.
+		auto vertical = mrpt::opengl::CSetOfLines::Create();
+		vertical->setColor(0.1f, 0.7f, 0.1f);
+		vertical->setLineWidth(3.0f);
 		for (const auto& l : m_landmarks)
 		{
+			if (l.vertical)
+				vertical->appendLine(l.mean.x(), l.mean.y(), l.lLow, l.mean.x(), l.mean.y(), l.lHigh);
 			points->insertPoint(
 				static_cast<float>(l.mean.x()), static_cast<float>(l.mean.y()), 0.03f);
 			auto e = ellipse(l.mean, l.covariance);
@@ -121,6 +128,7 @@ void ScanMapSceneWriter::finish(const RunStats&)
 			scene.insert(e);
 		}
 		scene.insert(points);
+		if (vertical->size() > 0) scene.insert(vertical);
 	}
 
 	if (!m_path3d.empty())

@@ -9,7 +9,7 @@
 #include "featloc/estimators/StereoStepResult.h"
 #include "featloc/output/StepRecord.h"
 #include "featloc/output/StereoDebugPicture.h"
-#include "featloc/pipeline/DecodedStereoPair.h"
+#include "featloc/io/DecodedStereoPair.h"
 
 namespace featloc
 {

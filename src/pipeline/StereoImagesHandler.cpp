@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "featloc/core/InputError.h"
-#include "featloc/pipeline/DecodedStereoPair.h"
+#include "featloc/io/DecodedStereoPair.h"
 
 namespace featloc
 {

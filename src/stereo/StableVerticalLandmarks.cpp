@@ -73,12 +73,20 @@ void StableVerticalLandmarks::loadParams(const mrpt::config::CConfigFileBase& c,
 		"min_boundary_angle_deg", "in [0, 90)");
 	require(options.min_length_similarity >= 0 && options.min_length_similarity <= 1, c, s,
 		"min_length_similarity", "in [0, 1]");
-	require(!options.map.empty(), c, s, "map",
-		"a map of the walls (a featloc-sim world file or lines 'x1 y1 x2 y2'): the reference planes");
+	walls.clear();
+	m_mapPath.clear();
+	if (options.map.empty()) return;  // requireComplete() says so when it is used
 	std::string path = options.map;
 	if (const auto* tc = dynamic_cast<const TrackedConfig*>(&c)) path = tc->resolvePath(s, "map", path);
 	walls = WallMapFile::load(path);
 	m_mapPath = path;
+}
+
+void StableVerticalLandmarks::requireComplete(const mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	using namespace featloc::config;
+	require(!options.map.empty(), c, s, "map",
+		"a map of the walls (a featloc-sim world file or lines 'x1 y1 x2 y2'): the reference planes");
 }
 
 void StableVerticalLandmarks::saveParams(mrpt::config::CConfigFileBase& c, const std::string& s) const

@@ -66,6 +66,7 @@ std::shared_ptr<StereoLandmarkExtractor> StereoLandmarkExtractorFactory::createF
 		}
 		mySection = paramsSection(className);
 		selected->loadParams(cfg, mySection);
+		selected->requireComplete(cfg, mySection);
 	}
 	std::vector<std::string> sections;
 	cfg.getAllSections(sections);

@@ -10,7 +10,7 @@
 #include "featloc/ekf/EkfOptions.h"
 #include "featloc/ekf/EstimatedLandmark.h"
 #include "featloc/ekf/LandmarkObservation.h"
-#include "featloc/ekf/VerticalLandmarkObservation.h"
+#include "featloc/stereo/VerticalLandmarkObservation.h"
 
 namespace featloc
 {

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "featloc/ekf/VerticalLandmarkObservation.h"
+#include "featloc/stereo/VerticalLandmarkObservation.h"
 
 namespace featloc
 {

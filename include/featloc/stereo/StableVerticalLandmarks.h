@@ -78,6 +78,8 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 
 	void loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section) override;
 	void saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const override;
+	/** The map is required. */
+	void requireComplete(const mrpt::config::CConfigFileBase& cfg, const std::string& section) const override;
 
 	std::string planeName(size_t wall) const override
 	{

@@ -26,6 +26,9 @@ class StereoLandmarkExtractor : public mrpt::rtti::CObject
 
 	/** Throws ConfigError on a bad value, InputError on a bad map file. */
 	virtual void loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section) = 0;
+	/** For the extractor a run uses (not for sections only validated):
+	 * throws ConfigError when a required key was left empty. */
+	virtual void requireComplete(const mrpt::config::CConfigFileBase&, const std::string&) const {}
 	virtual void saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const = 0;
 
 	/** One pair: grey CV_8U images of equal size, the head's geometry,

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "featloc/ekf/VerticalLandmarkObservation.h"
+#include "featloc/stereo/VerticalLandmarkObservation.h"
 #include "featloc/stereo/BoundarySearch.h"
 #include "featloc/stereo/ModelledFeature.h"
 #include "featloc/stereo/PlanarRegion.h"
