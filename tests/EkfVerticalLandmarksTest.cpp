@@ -15,6 +15,7 @@
 
 #include "featloc/ekf/EkfLocalizer.h"
 #include "featloc/ekf/VerticalLandmarkConstraint.h"
+#include "featloc/math/DiagonalPoseGaussian.h"
 
 using namespace featloc;
 using mrpt::poses::CPose2D;
@@ -22,15 +23,10 @@ using mrpt::poses::CPosePDFGaussian;
 
 namespace
 {
-CPosePDFGaussian gaussian(const CPose2D& mean, double vx, double vy, double vyaw)
+/** Variance vxy in x and y, vyaw in yaw. */
+CPosePDFGaussian gaussian(const CPose2D& mean, double vxy, double vyaw)
 {
-	CPosePDFGaussian g;
-	g.mean = mean;
-	g.cov.setZero();
-	g.cov(0, 0) = vx;
-	g.cov(1, 1) = vy;
-	g.cov(2, 2) = vyaw;
-	return g;
+	return diagonalPoseGaussian(mean, std::sqrt(vxy), std::sqrt(vyaw));
 }
 
 /** The observation of landmark l (x, y, low, high) from robot X, exact,
@@ -107,11 +103,11 @@ TEST(EkfVerticalLandmarks, ConstraintJacobiansMatchFiniteDifferences)
 TEST(EkfVerticalLandmarks, UpdateEqualsDenseEkfWithNumericJacobians)
 {
 	EkfLocalizer f;
-	f.reset(gaussian(CPose2D(0, 0, 0.1), 0.04, 0.04, 0.003));
+	f.reset(gaussian(CPose2D(0, 0, 0.1), 0.04, 0.003));
 	const Eigen::Vector4d l1(1.0, 4.0, 0.1, 1.8), l2(2.2, 4.0, 0.3, 2.0);
 	f.updateVerticalLandmarks({startable({0, 0, 0.1}, l1, 0.03), startable({0, 0, 0.1}, l2, 0.04, 0, -1)});
 	ASSERT_EQ(f.landmarkCount(), 2u);
-	f.predict(gaussian(CPose2D(0.5, 0.1, 0.05), 0.01, 0.01, 0.001));
+	f.predict(gaussian(CPose2D(0.5, 0.1, 0.05), 0.01, 0.001));
 	const Eigen::VectorXd x0 = f.state();
 	const Eigen::MatrixXd P0 = f.covariance();
 	std::vector<VerticalLandmarkObservation> z{
@@ -152,7 +148,7 @@ TEST(EkfVerticalLandmarks, StartsOnTheWallUncorrelatedWithTheRobotAndConstrainsI
 {
 	EkfLocalizer f;
 	// An uncertain robot: 0.3 m, 0.2 rad.
-	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.09, 0.09, 0.04));
+	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.09, 0.04));
 	const Eigen::Vector4d l1(-1.0, 4.0, 0.0, 1.2), l2(1.2, 4.0, 0.5, 2.0);
 	const Eigen::Vector3d X(0, 0, M_PI / 2);
 	const auto u = f.updateVerticalLandmarks({startable(X, l1, 0.03), startable(X, l2, 0.03)});
@@ -169,7 +165,7 @@ TEST(EkfVerticalLandmarks, StartsOnTheWallUncorrelatedWithTheRobotAndConstrainsI
 	EXPECT_EQ(f.covariance().block(k, 0, 4, 3).cwiseAbs().maxCoeff(), 0.0);
 	// Seen again from the same place: the robot learns where it is, most
 	// of all across the wall (depth) where the landmarks are exact.
-	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-8));
 	const auto v = f.updateVerticalLandmarks({seen(X, l1, 0.02, 0.01), seen(X, l2, 0.02, 0.01)});
 	EXPECT_EQ(v.used, 2u);
 	EXPECT_EQ(v.added, 0u);
@@ -182,11 +178,11 @@ TEST(EkfVerticalLandmarks, StartsOnTheWallUncorrelatedWithTheRobotAndConstrainsI
 TEST(EkfVerticalLandmarks, PairsOnlyOnItsWallWithItsPolarity)
 {
 	EkfLocalizer f;
-	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.01, 0.01, 0.001));
+	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.01, 0.001));
 	const Eigen::Vector3d X(0, 0, M_PI / 2);
 	const Eigen::Vector4d l(0.5, 4.0, 0.2, 1.5);
 	f.updateVerticalLandmarks({startable(X, l, 0.03, 0, +1)});
-	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-8));
 	// The same place with the other polarity, or on another wall: no pair.
 	auto u = f.updateVerticalLandmarks({seen(X, l, 0.02, 0.01, 0, -1), seen(X, l, 0.02, 0.01, 1, +1)});
 	EXPECT_EQ(u.associated, 0u);
@@ -203,7 +199,7 @@ TEST(EkfVerticalLandmarks, UsesTheLeastUncertainSubset)
 {
 	EkfLocalizer f;
 	f.options.stereo_landmarks_per_frame = 2;
-	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.01, 0.01, 0.001));
+	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.01, 0.001));
 	const Eigen::Vector3d X(0, 0, M_PI / 2);
 	std::vector<VerticalLandmarkObservation> start, again;
 	const double sigmas[4] = {0.08, 0.02, 0.05, 0.01};
@@ -215,7 +211,7 @@ TEST(EkfVerticalLandmarks, UsesTheLeastUncertainSubset)
 	}
 	f.updateVerticalLandmarks(start);
 	ASSERT_EQ(f.landmarkCount(), 4u);
-	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-8));
 	const auto u = f.updateVerticalLandmarks(again);
 	EXPECT_EQ(u.associated, 4u);
 	EXPECT_EQ(u.used, 2u);
@@ -226,7 +222,7 @@ TEST(EkfVerticalLandmarks, RemovalBesidePointLandmarksKeepsEveryBlock)
 {
 	EkfLocalizer f;
 	f.options.landmark_probation_steps = 1;
-	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.01, 0.01, 0.001));
+	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.01, 0.001));
 	LandmarkObservation p;
 	p.position = {3, 0};
 	p.covariance = Eigen::Matrix2d::Identity() * 0.01;
@@ -235,11 +231,11 @@ TEST(EkfVerticalLandmarks, RemovalBesidePointLandmarksKeepsEveryBlock)
 	const Eigen::Vector4d l(0.5, 4.0, 0.2, 1.5);
 	f.updateVerticalLandmarks({startable(X, l, 0.03)});
 	ASSERT_EQ(f.landmarkIndex(1), EkfLocalizer::kLandmarks + 2);
-	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-8));
 	f.updateVerticalLandmarks({seen(X, l, 0.02, 0.01)});  // seen twice: kept
 	const Eigen::VectorXd before = f.state().segment<4>(f.landmarkIndex(1));
-	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
-	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-8));
+	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-8));
 	ASSERT_EQ(f.landmarkCount(), 1u);
 	EXPECT_EQ(f.landmarkIndex(0), EkfLocalizer::kLandmarks);
 	EXPECT_EQ(f.state().size(), EkfLocalizer::kLandmarks + 4);
@@ -264,7 +260,7 @@ TEST(EkfVerticalLandmarks, MonteCarloNeesIsConsistent)
 	{
 		EkfLocalizer f;
 		Eigen::Vector3d X(0, 0, M_PI / 2);	// true pose; the filter starts exact
-		f.reset(gaussian(CPose2D(X.x(), X.y(), X.z()), 1e-8, 1e-8, 1e-10));
+		f.reset(gaussian(CPose2D(X.x(), X.y(), X.z()), 1e-8, 1e-10));
 		auto observe = [&](bool start) {
 			std::vector<VerticalLandmarkObservation> z;
 			for (const auto& l : truth)
@@ -294,7 +290,7 @@ TEST(EkfVerticalLandmarks, MonteCarloNeesIsConsistent)
 				u.z() + rng.drawGaussian1D(0, sYaw));
 			const CPose2D next = CPose2D(X.x(), X.y(), X.z()) + CPose2D(noisy.x(), noisy.y(), noisy.z());
 			X = {next.x(), next.y(), next.phi()};
-			f.predict(gaussian(CPose2D(u.x(), u.y(), u.z()), sOdo * sOdo, sOdo * sOdo, sYaw * sYaw));
+			f.predict(gaussian(CPose2D(u.x(), u.y(), u.z()), sOdo * sOdo, sYaw * sYaw));
 			f.updateVerticalLandmarks(observe(false));
 		}
 		const auto r = f.robotPose();
