@@ -475,30 +475,27 @@ std::vector<EstimatedLandmark> EkfLocalizer::landmarks() const
 {
 	const auto c = heldCorrection();
 	std::vector<EstimatedLandmark> out;
+	// The 2-entry block at state index i, with the held match applied.
+	auto block = [&](Eigen::Index i, Eigen::Vector2d& mean, Eigen::Matrix2d& cov) {
+		mean = m_x.segment<2>(i);
+		cov = P().block<2, 2>(i, i);
+		if (!c) return;
+		const Eigen::Matrix<double, 2, 3> Ki = c->K.block<2, 3>(i, 0);
+		mean += Ki * c->nu;
+		cov -= Ki * c->S * Ki.transpose();
+	};
 	for (size_t j = 0; j < m_info.size(); j++)
 	{
 		const Eigen::Index k = landmarkIndex(j);
 		EstimatedLandmark l;
 		l.id = m_info[j].id;
-		l.mean = m_x.segment<2>(k);
-		l.covariance = P().block<2, 2>(k, k);
-		if (c)
-		{
-			const Eigen::Matrix<double, 2, 3> Kj = c->K.block<2, 3>(k, 0);
-			l.mean += Kj * c->nu;
-			l.covariance -= Kj * c->S * Kj.transpose();
-		}
+		block(k, l.mean, l.covariance);
 		l.observations = m_info[j].observations;
 		if (m_info[j].vertical())
 		{
-			Eigen::Vector2d h = m_x.segment<2>(k + 2);
-			Eigen::Matrix2d Ph = P().block<2, 2>(k + 2, k + 2);
-			if (c)
-			{
-				const Eigen::Matrix<double, 2, 3> Kh = c->K.block<2, 3>(k + 2, 0);
-				h += Kh * c->nu;
-				Ph -= Kh * c->S * Kh.transpose();
-			}
+			Eigen::Vector2d h;
+			Eigen::Matrix2d Ph;
+			block(k + 2, h, Ph);
 			l.vertical = true;
 			l.wall = m_info[j].wall;
 			l.lLow = h[0];

@@ -140,9 +140,10 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 	// rows): while they are not, the pair farthest from its prediction
 	// is dropped. Individually plausible pairs can still share one wrong
 	// cause (a landmark started from a misplaced boundary).
+	VerticalStack joint;  // of the pairs left: the update's terms
 	while (!paired.empty())
 	{
-		const auto joint = stackVertical(obs, pairing, paired);
+		joint = stackVertical(obs, pairing, paired);
 		const double limit = mrpt::math::chi2inv(p, static_cast<unsigned>(joint.nu.size()));
 		const double d2 = joint.nu.dot(
 			(joint.H * P()(joint.cols, joint.cols) * joint.H.transpose() + joint.R).ldlt().solve(joint.nu));
@@ -160,7 +161,6 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 	}
 	if (!paired.empty())
 	{
-		const auto joint = stackVertical(obs, pairing, paired);
 		out.jointMahalanobis2 = update(joint.cols, joint.H, joint.nu, joint.R);
 		for (const auto& pr : paired)
 		{

@@ -2,7 +2,6 @@
 
 #include <mrpt/obs/CObservationStereoImages.h>
 
-#include "featloc/core/InputError.h"
 #include "featloc/estimators/StereoStepResult.h"
 #include "featloc/io/DecodedStereoPair.h"
 #include "featloc/stereo/StereoLandmarkExtractor.h"

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "featloc/output/TextRowWriter.h"
+
 namespace featloc
 {
 void LandmarkTableWriter::onStep(const StepRecord& r)
@@ -27,12 +29,9 @@ void LandmarkTableWriter::finish(const RunStats&)
 		int n = std::snprintf(
 			row, sizeof(row), "%lld %.6f %.6f %.6e %.6e %.6e %u", static_cast<long long>(l.id), l.mean.x(),
 			l.mean.y(), l.covariance(0, 0), l.covariance(0, 1), l.covariance(1, 1), l.observations);
-		std::string plane = l.plane.empty() ? "-" : l.plane;
-		for (char& ch : plane)
-			if (ch == ' ') ch = '_';
 		if (l.vertical)
 			std::snprintf(row + n, sizeof(row) - static_cast<size_t>(n),
-				" vertical %s %.4f %.4f %.4f %.5f %.5f %.5f %.5f\n", plane.c_str(),
+				" vertical %s %.4f %.4f %.4f %.5f %.5f %.5f %.5f\n", TextRowWriter::token(l.plane).c_str(),
 				l.lLow, l.lHigh, l.lHigh - l.lLow, std::sqrt(l.covariance(0, 0)), std::sqrt(l.covariance(1, 1)),
 				l.sigmaLow, l.sigmaHigh);
 		else

@@ -2,20 +2,19 @@
 
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 
 #include "featloc/estimators/StereoStepResult.h"
 #include "featloc/output/StepRecord.h"
 
 namespace featloc
 {
-StereoFeatureTableWriter::StereoFeatureTableWriter(std::string path) : m_path(std::move(path)), m_out(m_path)
+StereoFeatureTableWriter::StereoFeatureTableWriter(std::string path)
+	: TextRowWriter(std::move(path),
+		  "featloc stereo features (Moon, Miura & Shirai, Table 1), one row per modelled feature:\n"
+		  "# step plane index x y l sigma_x sigma_y l_s selected landmark reason\n"
+		  "# (world frame, m; index counted from the plane's boundary; landmark: the EKF landmark it "
+		  "updated or started, -1 none; reason: why not selected)")
 {
-	if (!m_out) throw std::runtime_error("cannot write '" + m_path + "'");
-	m_out << "# featloc stereo features (Moon, Miura & Shirai, Table 1), one row per modelled feature:\n"
-			 "# step plane index x y l sigma_x sigma_y l_s selected landmark reason\n"
-			 "# (world frame, m; index counted from the plane's boundary; landmark: the EKF landmark it "
-			 "updated or started, -1 none; reason: why not selected)\n";
 }
 
 void StereoFeatureTableWriter::onStep(const StepRecord& r)
@@ -29,21 +28,11 @@ void StereoFeatureTableWriter::onStep(const StepRecord& r)
 		for (size_t k = 0; k < f.observations.size(); k++)
 			if (f.observations[k].match == ft.match && k < r.stereo->update.landmarkOf.size())
 				landmark = r.stereo->update.landmarkOf[k];
-		std::string plane = ft.plane.empty() ? "-" : ft.plane;
-		for (char& c : plane)
-			if (c == ' ') c = '_';
-		std::snprintf(row, sizeof(row), "%zu %s %d %.4f %.4f %.4f %.5f %.5f %.3f %s %d %s\n", r.step.index,
-			plane.c_str(), ft.index, ft.position.x(), ft.position.y(), ft.length(),
+		std::snprintf(row, sizeof(row), "%zu %s %d %.4f %.4f %.4f %.5f %.5f %.3f %s %d %s", r.step.index,
+			token(ft.plane).c_str(), ft.index, ft.position.x(), ft.position.y(), ft.length(),
 			std::sqrt(ft.covariance(0, 0)), std::sqrt(ft.covariance(1, 1)), ft.lengthSimilarity,
 			ft.selected ? "Yes" : "No", landmark, ft.reason.c_str());
-		m_out << row;
+		writeRow(row);
 	}
-	m_out.flush();
-}
-
-void StereoFeatureTableWriter::finish(const RunStats&)
-{
-	m_out.close();
-	if (m_out.fail()) throw std::runtime_error("cannot write '" + m_path + "'");
 }
 }  // namespace featloc

@@ -17,4 +17,12 @@ void TextRowWriter::writeRow(const char* row)
 }
 
 void TextRowWriter::finish(const RunStats&) { m_out.close(); }
+
+std::string TextRowWriter::token(std::string text)
+{
+	if (text.empty()) return "-";
+	for (char& c : text)
+		if (c == ' ') c = '_';
+	return text;
+}
 }  // namespace featloc

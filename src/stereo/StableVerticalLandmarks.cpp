@@ -443,9 +443,9 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			const Eigen::Vector2d u = (M2 - M1) / dM;
 			mf.position = M1 + mf.dp * u;  // eq. (15)
 			mf.covariance = u * u.transpose() * mf.sigmaDp * mf.sigmaDp;  // eq. (17), rank 1
-			const double depthF = o.c.y();
-			mf.lHigh = head.heightAt(l.vTop - 0.5, depthF);
-			mf.lLow = head.heightAt(l.vBottom + 0.5, depthF);
+			const auto& z = f.observations[firstObservation + feats.size()];	 // same order as `on`
+			mf.lHigh = z.lHigh;
+			mf.lLow = z.lLow;
 			mf.lengthSimilarity = std::min(l.length(), r.length()) / std::max(l.length(), r.length());
 			// Without the plane: stereo point and robot pose uncertainty.
 			mf.unconstrained = head.toWorld(X, o.cTilde);
@@ -457,8 +457,6 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 				JX.col(k) = (head.toWorld(X + dx, o.cTilde) - head.toWorld(X - dx, o.cTilde)) / 2e-6;
 			}
 			mf.unconstrainedCovariance = Rw * o.PTilde * Rw.transpose() + JX * SX * JX.transpose();
-			mf.robotFrame = Eigen::Vector2d(head.camX, head.camY) + camToRobot * o.c;
-			mf.robotFrameCovariance = camToRobot * o.P * camToRobot.transpose();
 			// Section 4.
 			if (std::abs(mf.dp) < options.boundary_sigmas * mf.sigmaDp)
 				mf.reason = "near boundary";
@@ -502,28 +500,26 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 				}
 			}
 		}
+		// Selected features may start landmarks; features the paper calls
+		// unstable (near the boundary, dissimilar lengths) are not observed
+		// either (section 4). feats[k] is the observation firstObservation + k.
+		for (size_t k = feats.size(); k-- > 0;)
+		{
+			const auto& ft = feats[k];
+			auto& z = f.observations[firstObservation + k];
+			if (ft.selected)
+			{
+				z.canStart = true;
+				z.start = ft.position;
+				z.startCovariance = ft.covariance;
+			}
+			if (ft.reason == "near boundary" || ft.lengthSimilarity < options.min_length_similarity)
+				f.observations.erase(f.observations.begin() + static_cast<long>(firstObservation + k));
+		}
 		std::sort(feats.begin(), feats.end(), [](const ModelledFeature& a, const ModelledFeature& b) {
 			return std::abs(a.dp) < std::abs(b.dp);
 		});
 		for (size_t k = 0; k < feats.size(); k++) feats[k].index = static_cast<int>(k + 1);
-		// Selected features may start landmarks; features the paper calls
-		// unstable (near the boundary, dissimilar lengths) are not observed
-		// either (section 4).
-		std::vector<char> unstable(f.observations.size(), 0);
-		for (const auto& ft : feats)
-			for (size_t k = firstObservation; k < f.observations.size(); k++)
-				if (f.observations[k].match == ft.match)
-				{
-					if (ft.selected)
-					{
-						f.observations[k].canStart = true;
-						f.observations[k].start = ft.position;
-						f.observations[k].startCovariance = ft.covariance;
-					}
-					unstable[k] = ft.reason == "near boundary" || ft.lengthSimilarity < options.min_length_similarity;
-				}
-		for (size_t k = f.observations.size(); k-- > firstObservation;)
-			if (unstable[k]) f.observations.erase(f.observations.begin() + static_cast<long>(k));
 		f.features.insert(f.features.end(), feats.begin(), feats.end());
 	}
 	f.seconds = seconds(t0);

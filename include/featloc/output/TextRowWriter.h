@@ -16,6 +16,10 @@ class TextRowWriter : public RunOutput
 	void finish(const RunStats& stats) override;
 	std::string path() const override { return m_path; }
 
+	/** `text` as one whitespace-separated column: spaces become '_', an
+	 * empty text '-'. */
+	static std::string token(std::string text);
+
    protected:
 	/** Appends one line (without its newline) and flushes. */
 	void writeRow(const char* row);

@@ -26,10 +26,6 @@ struct ModelledFeature
 	 * world frame (stereo and robot uncertainty), for comparison. */
 	Eigen::Vector2d unconstrained = Eigen::Vector2d::Zero();
 	Eigen::Matrix2d unconstrainedCovariance = Eigen::Matrix2d::Zero();
-	/** The segment in the robot frame after the plane constraint, with its
-	 * covariance (stereo and plane fit only): the EKF's observation. */
-	Eigen::Vector2d robotFrame = Eigen::Vector2d::Zero();
-	Eigen::Matrix2d robotFrameCovariance = Eigen::Matrix2d::Zero();
 
 	double length() const { return lHigh - lLow; }
 };
