@@ -274,6 +274,7 @@ int StereoImportApp::main(int argc, char** argv)
 	}
 
 	mrpt::img::TStereoCamera params = calib.stereo;
+	mrpt::poses::CPose3D leftCameraOnBody = calib.leftCameraOnBody;
 	mrpt::vision::CStereoRectifyMap rectifier;
 	if (argRectify.getValue())
 	{
@@ -287,6 +288,14 @@ int StereoImportApp::main(int argc, char** argv)
 		params.rightCameraPose = mrpt::math::TPose3DQuat(baseline, 0, 0, 1, 0, 0, 0);
 		params.leftCamera.distortion = params.rightCamera.distortion =
 			mrpt::img::DistortionModel::none;
+		// The rectified left camera is the raw one turned: getLeftCameraRot()
+		// holds OpenCV's R1, which takes points from the raw camera's frame
+		// to the rectified one's, so the rectified camera's pose on the raw
+		// one has the rotation R1^T. (MRPT 2.5.8's own
+		// rectify(CObservationStereoImages&) composes R1 itself, the inverse;
+		// the test StereoImport.RealPairsBecomeRawlogsThatRunReads checks the
+		// rays through both images.)
+		leftCameraOnBody = leftCameraOnBody + (-mrpt::poses::CPose3D(rectifier.getLeftCameraRot()));
 	}
 
 	const fs::path out = argOut.getValue();
@@ -330,7 +339,7 @@ int StereoImportApp::main(int argc, char** argv)
 		obs.sensorLabel = argLabel.getValue();
 		obs.timestamp = mrpt::Clock::fromDouble(p.time);
 		obs.setStereoCameraParams(params);
-		obs.cameraPose = mrpt::poses::CPose3DQuat(calib.leftCameraOnBody);
+		obs.cameraPose = mrpt::poses::CPose3DQuat(leftCameraOnBody);
 		obs.hasImageRight = true;
 		obs.imageLeft = left;
 		obs.imageRight = right;
