@@ -21,6 +21,7 @@
 #include "featloc/core/InputError.h"
 #include "featloc/eval/TrajectoryFile.h"
 #include "featloc/io/StereoCalibrationFile.h"
+#include "featloc/io/TumPoseFile.h"
 #include "featloc/registerClasses.h"
 #include "featloc/sim/StereoOutputWriter.h"
 
@@ -234,39 +235,11 @@ int StereoImportApp::main(int argc, char** argv)
 	const std::string gtPath = (outPath.parent_path() / (outPath.stem().string() + ".gt.txt")).string();
 	if (argGt.isSet())
 	{
-		std::ifstream in(argGt.getValue());
-		if (!in) throw InputError("cannot read '" + argGt.getValue() + "'");
-		std::vector<std::pair<double, std::string>> gtAll;
-		std::string line;
-		size_t lineNo = 0;
-		while (std::getline(in, line))
-		{
-			lineNo++;
-			const auto first = line.find_first_not_of(" \t\r");
-			if (first == std::string::npos || line[first] == '#' || line[first] == '%') continue;
-			// TUM: t x y z qx qy qz qw; anything else is an error, not a
-			// row quietly left out of the ground truth.
-			std::istringstream ss(line);
-			double t = 0, v[7];
-			bool ok = static_cast<bool>(ss >> t);
-			for (double& x : v) ok = ok && static_cast<bool>(ss >> x);
-			if (!ok)
-				throw InputError(
-					argGt.getValue() + ":" + std::to_string(lineNo) +
-					": expected a TUM row 't x y z qx qy qz qw'");
-			gtAll.emplace_back(t, line);
-		}
+		const auto gtAll = TumPoseFile::read(argGt.getValue());
 		// Per frame, the nearest row within 5 ms (Vicon and motion capture
 		// run at 100-200 Hz, cameras at 10-30 Hz).
 		for (const auto& p : pairs)
-		{
-			const std::pair<double, std::string>* best = nullptr;
-			for (const auto& row : gtAll)
-				if (std::abs(row.first - p.time) < 0.005 &&
-					(!best || std::abs(row.first - p.time) < std::abs(best->first - p.time)))
-					best = &row;
-			if (best) gtRows.push_back(best->second);
-		}
+			if (const auto* row = TumPoseFile::nearest(gtAll, p.time, 0.005)) gtRows.push_back(row->text);
 		if (gtRows.empty())
 			throw InputError(
 				"'" + argGt.getValue() + "' has no row within 5 ms of any stereo frame's time (first frame at " +
