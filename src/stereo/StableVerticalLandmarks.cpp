@@ -1,7 +1,5 @@
 #include "featloc/stereo/StableVerticalLandmarks.h"
 
-#include <opencv2/calib3d.hpp>
-
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
@@ -11,6 +9,7 @@
 #include "featloc/config/ConfigValues.h"
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/stereo/PlaneFit.h"
+#include "featloc/stereo/SegmentBand.h"
 
 namespace featloc
 {
@@ -23,17 +22,6 @@ double seconds(std::chrono::steady_clock::time_point t0)
 	return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/** The band of left-image pixels a match covers: its common rows, +-2 px
- * around the left segment. */
-template <typename F>
-void forBand(const VerticalSegment& l, const SegmentMatch& m, int W, int H, int halfWidth, F&& f)
-{
-	for (int v = std::max(0, static_cast<int>(std::ceil(m.vLow))); v <= std::min(H - 1, static_cast<int>(m.vHigh)); v += 2)
-	{
-		const int u0 = static_cast<int>(std::lround(l.uAt(v)));
-		for (int u = std::max(0, u0 - halfWidth); u <= std::min(W - 1, u0 + halfWidth); u++) f(u, v);
-	}
-}
 }  // namespace
 
 void StableVerticalLandmarks::loadParams(const mrpt::config::CConfigFileBase& c, const std::string& s)
@@ -155,16 +143,17 @@ bool StableVerticalLandmarks::continuesCoplanar(size_t w, bool atA) const
 cv::Mat StableVerticalLandmarks::disparity(
 	const cv::Mat& left, const cv::Mat& right, int minDisparity, int numDisparities) const
 {
-	// Eq. (2): SAD in both directions, kept where they agree within 1 px.
-	auto bm = cv::StereoBM::create(numDisparities > 0 ? numDisparities : options.num_disparities, options.block_size);
-	bm->setMinDisparity(minDisparity);
-	bm->setDisp12MaxDiff(1);
-	bm->setUniquenessRatio(options.uniqueness_ratio);
-	bm->setTextureThreshold(options.texture_threshold);
-	cv::Mat d16, d;
-	bm->compute(left, right, d16);
-	d16.convertTo(d, CV_32F, 1.0 / 16);
-	return d;
+	return sad().compute(left, right, minDisparity, numDisparities > 0 ? numDisparities : options.num_disparities);
+}
+
+SadDisparity StableVerticalLandmarks::sad() const
+{
+	SadDisparity::Options o;
+	o.block_size = options.block_size;
+	o.uniqueness_ratio = options.uniqueness_ratio;
+	o.texture_threshold = options.texture_threshold;
+	o.tolerance_px = options.disparity_tolerance_px;
+	return SadDisparity(o);
 }
 
 StereoLandmarkFrame StableVerticalLandmarks::process(
@@ -218,31 +207,14 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 	}
 	f.disparitySeconds = seconds(tD);
 	f.matchRejection.assign(f.matches.size(), "");
+	const SadDisparity sadCheck = sad();
 	for (size_t i = 0; i < f.matches.size(); i++)
 	{
 		const auto& m = f.matches[i];
-		std::vector<float> d;
-		size_t band = 0;
-		forBand(f.left[m.left], m, W, H, 3, [&](int u, int v) {
-			band++;
-			const float x = f.disparity.at<float>(v, u);
-			if (x > 0) d.push_back(x);
-		});
 		if (m.disparity < f.sadMin || m.disparity > f.sadMin + f.sadRange - 1)
-		{
 			f.matchRejection[i] = "disparity outside every visible wall's";
-			continue;
-		}
-		if (d.size() < std::max<size_t>(3, band * 3 / 10))
-		{
-			f.matchRejection[i] = "no SAD disparity around it";
-			continue;
-		}
-		std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
-		const double med = d[d.size() / 2];
-		if (std::abs(med - m.disparity) > options.disparity_tolerance_px)
-			f.matchRejection[i] = "disparity " + std::to_string(m.disparity).substr(0, 5) +
-				" px, SAD image " + std::to_string(med).substr(0, 5) + " px";
+		else
+			f.matchRejection[i] = sadCheck.support(f.disparity, f.left[m.left], m);
 	}
 
 	// 3. Reference planes (2.3).
@@ -285,7 +257,7 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			const auto& pl = f.planes[p];
 			if (!pl.fitted) continue;
 			size_t band = 0, in = 0;
-			forBand(l, m, W, H, 2, [&](int u, int v) {
+			forSegmentBand(l, m, W, H, 2, [&](int u, int v) {
 				band++;
 				if (pl.mask.at<uchar>(v, u)) in++;
 			});

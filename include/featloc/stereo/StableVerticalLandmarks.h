@@ -6,6 +6,7 @@
 #include "featloc/io/WallMapFile.h"
 #include "featloc/stereo/BoundarySearch.h"
 #include "featloc/stereo/PlanarRegionExtractor.h"
+#include "featloc/stereo/SadDisparity.h"
 #include "featloc/stereo/SegmentStereoMatcher.h"
 #include "featloc/stereo/StereoLandmarkExtractor.h"
 #include "featloc/stereo/VerticalSegmentDetector.h"
@@ -105,6 +106,8 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 	 * searching minDisparity .. minDisparity + numDisparities - 1 (0: the
 	 * option's whole range). */
 	cv::Mat disparity(const cv::Mat& left, const cv::Mat& right, int minDisparity = 0, int numDisparities = 0) const;
+	/** Stage 2 with this extractor's options. */
+	SadDisparity sad() const;
 
    private:
 	std::string m_mapPath;	//!< options.map resolved

@@ -1,0 +1,43 @@
+#include "featloc/stereo/SadDisparity.h"
+
+#include <opencv2/calib3d.hpp>
+
+#include <algorithm>
+#include <vector>
+
+#include "featloc/stereo/SegmentBand.h"
+
+namespace featloc
+{
+cv::Mat SadDisparity::compute(const cv::Mat& left, const cv::Mat& right, int minDisparity, int numDisparities) const
+{
+	// Eq. (2): SAD in both directions, kept where they agree within 1 px.
+	auto bm = cv::StereoBM::create(numDisparities, options.block_size);
+	bm->setMinDisparity(minDisparity);
+	bm->setDisp12MaxDiff(1);
+	bm->setUniquenessRatio(options.uniqueness_ratio);
+	bm->setTextureThreshold(options.texture_threshold);
+	cv::Mat d16, d;
+	bm->compute(left, right, d16);
+	d16.convertTo(d, CV_32F, 1.0 / 16);
+	return d;
+}
+
+std::string SadDisparity::support(const cv::Mat& disparity, const VerticalSegment& l, const SegmentMatch& m) const
+{
+	std::vector<float> d;
+	size_t band = 0;
+	forSegmentBand(l, m, disparity.cols, disparity.rows, 3, [&](int u, int v) {
+		band++;
+		const float x = disparity.at<float>(v, u);
+		if (x > 0) d.push_back(x);
+	});
+	if (d.size() < std::max<size_t>(3, band * 3 / 10)) return "no SAD disparity around it";
+	std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+	const double med = d[d.size() / 2];
+	if (std::abs(med - m.disparity) > options.tolerance_px)
+		return "disparity " + std::to_string(m.disparity).substr(0, 5) + " px, SAD image " +
+			   std::to_string(med).substr(0, 5) + " px";
+	return "";
+}
+}  // namespace featloc
