@@ -2,6 +2,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "featloc/output/PictureLegend.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -76,16 +78,8 @@ cv::Mat StereoDebugPicture::draw(const cv::Mat& left, const StereoLandmarkFrame&
 			cv::line(img, px(b.u - 3 * b.sigma, v), px(b.u + 3 * b.sigma, v), kBoundary, 2, cv::LINE_AA);
 	}
 	// Legend.
-	const std::pair<const char*, cv::Scalar> legend[] = {{"detected", kDetected}, {"matched, rejected", kRejected},
-		{"on plane", kOnPlane}, {"selected", kSelected}, {"boundary +-3 sigma", kBoundary}};
-	int x = 4;
-	cv::rectangle(img, cv::Rect(0, H - 16, img.cols, 16), cv::Scalar(0, 0, 0), cv::FILLED);
-	for (const auto& [text, colour] : legend)
-	{
-		cv::line(img, {x, H - 8}, {x + 12, H - 8}, colour, 3);
-		cv::putText(img, text, {x + 15, H - 4}, cv::FONT_HERSHEY_PLAIN, 0.8, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
-		x += 22 + 7 * static_cast<int>(std::string(text).size());
-	}
+	PictureLegend::draw(img, {{"detected", kDetected}, {"matched, rejected", kRejected}, {"on plane", kOnPlane},
+								 {"selected", kSelected}, {"boundary +-3 sigma", kBoundary}});
 	return img;
 }
 }  // namespace featloc

@@ -1,0 +1,19 @@
+#include "featloc/output/PictureLegend.h"
+
+#include <opencv2/imgproc.hpp>
+
+namespace featloc
+{
+void PictureLegend::draw(cv::Mat& img, const std::vector<std::pair<std::string, cv::Scalar>>& items)
+{
+	const int H = img.rows;
+	int x = 4;
+	cv::rectangle(img, cv::Rect(0, H - 16, img.cols, 16), cv::Scalar(0, 0, 0), cv::FILLED);
+	for (const auto& [text, colour] : items)
+	{
+		cv::line(img, {x, H - 8}, {x + 12, H - 8}, colour, 3);
+		cv::putText(img, text, {x + 15, H - 4}, cv::FONT_HERSHEY_PLAIN, 0.8, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
+		x += 26 + 8 * static_cast<int>(text.size());
+	}
+}
+}  // namespace featloc
