@@ -22,7 +22,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "featloc/io/RawlogReader.h"
+#include "featloc/pipeline/StereoPairReader.h"
 #include "featloc/registerClasses.h"
 #include "featloc/sim/SimConfiguration.h"
 #include "featloc/sim/Simulator.h"
@@ -358,14 +358,13 @@ TEST(StereoCamera, StereoObservationWithoutCalibrationIsAnInputError)
 
 namespace
 {
-/** The stereo observations of a rawlog, in file order. */
-std::vector<mrpt::obs::CObservationStereoImages::Ptr> readStereoObservations(const std::string& path)
+/** The stereo observations of a rawlog, in file order, read as featloc-run reads them. */
+std::vector<std::shared_ptr<mrpt::obs::CObservationStereoImages>> readStereoObservations(const std::string& path)
 {
-	std::vector<mrpt::obs::CObservationStereoImages::Ptr> out;
-	RawlogReader reader(path);
-	RawlogEntry e;
-	while (reader.next(e))
-		if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(e.object)) out.push_back(o);
+	std::vector<std::shared_ptr<mrpt::obs::CObservationStereoImages>> out;
+	StereoPairReader reader(path);
+	StereoPairReader::Pair p;
+	while (reader.next(p)) out.push_back(p.observation);
 	return out;
 }
 
