@@ -3,10 +3,13 @@
 // a segment match, and the pairing of lines seen from two poses.
 #include <gtest/gtest.h>
 
+#include <opencv2/imgproc.hpp>
+
 #include <Eigen/Dense>
 #include <cmath>
 #include <filesystem>
 
+#include "featloc/core/InputError.h"
 #include "featloc/eval/LineAgreement.h"
 #include "featloc/io/DecodedStereoPair.h"
 #include "featloc/pipeline/StereoPairReader.h"
@@ -139,4 +142,25 @@ TEST(StereoRealPairs, HallDoorFramesAreFoundMatchedAndSupportedBySad)
 	for (const auto& why : r.matchRejection) supported += why.empty();
 	EXPECT_GE(supported * 10, r.matches.size() * 8) << supported << " of " << r.matches.size();
 	EXPECT_GE(r.lines.size(), 20u);
+}
+
+TEST(StereoVerticalLines, BlankOrTinyImagesGiveNoLinesAndAMissingCalibrationIsAnError)
+{
+	mrpt::img::TStereoCamera c;
+	c.leftCamera.setIntrinsicParamsFromValues(480, 480, 32, 24);
+	c.leftCamera.ncols = 64;
+	c.leftCamera.nrows = 48;
+	c.rightCamera = c.leftCamera;
+	c.rightCameraPose = mrpt::math::TPose3DQuat(0.12, 0, 0, 1, 0, 0, 0);
+	const StereoVerticalLines x;
+	for (const cv::Mat& img : {cv::Mat(48, 64, CV_8U, cv::Scalar(128)), cv::Mat(20, 20, CV_8U, cv::Scalar(0))})
+	{
+		const auto r = x.extract(img, img, c, mrpt::poses::CPose3D(), "blank");
+		EXPECT_TRUE(r.lines.empty());
+	}
+	cv::Mat l(48, 64, CV_8U, cv::Scalar(40));
+	cv::line(l, {30, 0}, {30, 47}, cv::Scalar(220), 3);
+	mrpt::img::TStereoCamera none;
+	none.rightCameraPose = mrpt::math::TPose3DQuat(0, 0, 0, 1, 0, 0, 0);
+	EXPECT_THROW(x.extract(l, l, none, mrpt::poses::CPose3D(), "no calibration"), InputError);
 }
