@@ -2,7 +2,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "featloc/output/PictureLegend.h"
+#include "featloc/output/StereoPictureDrawing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,12 +15,7 @@ namespace
 const cv::Scalar kDetected(150, 150, 150), kRejected(0, 140, 255), kOnPlane(0, 230, 255),
 	kSelected(40, 220, 40), kBoundary(255, 80, 255);
 
-cv::Point px(double u, double v) { return {static_cast<int>(std::lround(u)), static_cast<int>(std::lround(v))}; }
-
-void segmentLine(cv::Mat& img, const VerticalSegment& s, double vTop, double vBottom, const cv::Scalar& c, int w)
-{
-	cv::line(img, px(s.uAt(vTop), vTop), px(s.uAt(vBottom), vBottom), c, w, cv::LINE_AA);
-}
+using D = StereoPictureDrawing;
 
 cv::Scalar planeTint(size_t k)
 {
@@ -32,11 +27,7 @@ cv::Scalar planeTint(size_t k)
 
 cv::Mat StereoDebugPicture::draw(const cv::Mat& left, const StereoLandmarkFrame& f)
 {
-	cv::Mat img;
-	if (left.channels() == 1)
-		cv::cvtColor(left, img, cv::COLOR_GRAY2BGR);
-	else
-		img = left.clone();
+	cv::Mat img = D::toBgr(left);
 	const int H = img.rows;
 
 	// Planar regions: a translucent tint over each plane's pixels.
@@ -50,7 +41,7 @@ cv::Mat StereoDebugPicture::draw(const cv::Mat& left, const StereoLandmarkFrame&
 		mixed.copyTo(img, pl.mask);
 	}
 	// Segments, least interesting first so the selected ones end on top.
-	for (const auto& s : f.left) segmentLine(img, s, s.vTop, s.vBottom, kDetected, 1);
+	for (const auto& s : f.left) D::segment(img, s, s.vTop, s.vBottom, 0, kDetected, 1);
 	std::vector<bool> onPlane(f.matches.size(), false);
 	for (const auto& ft : f.features)
 		if (ft.match < onPlane.size()) onPlane[ft.match] = true;
@@ -58,27 +49,27 @@ cv::Mat StereoDebugPicture::draw(const cv::Mat& left, const StereoLandmarkFrame&
 	{
 		if (onPlane[i]) continue;
 		const auto& m = f.matches[i];
-		segmentLine(img, f.left[m.left], m.vLow, m.vHigh, kRejected, 1);
+		D::segment(img, f.left[m.left], m.vLow, m.vHigh, 0, kRejected, 1);
 	}
 	for (const auto& ft : f.features)
 	{
 		const auto& m = f.matches[ft.match];
 		const auto& s = f.left[m.left];
-		segmentLine(img, s, s.vTop, s.vBottom, ft.selected ? kSelected : kOnPlane, ft.selected ? 3 : 2);
+		D::segment(img, s, s.vTop, s.vBottom, 0, ft.selected ? kSelected : kOnPlane, ft.selected ? 3 : 2);
 		if (ft.selected)
-			cv::putText(img, std::to_string(ft.index), px(s.uAt(s.vTop) + 3, s.vTop + 12),
+			cv::putText(img, std::to_string(ft.index), D::pixel(s.uAt(s.vTop) + 3, s.vTop + 12),
 				cv::FONT_HERSHEY_PLAIN, 0.9, kSelected, 1, cv::LINE_AA);
 	}
 	// Boundaries: the line and its 3-sigma bars (Fig. 6).
 	for (const auto& b : f.boundaries)
 	{
 		if (!b.found) continue;
-		cv::line(img, px(b.u, 0), px(b.u, H - 1), kBoundary, 1, cv::LINE_AA);
+		cv::line(img, D::pixel(b.u, 0), D::pixel(b.u, H - 1), kBoundary, 1, cv::LINE_AA);
 		for (const int v : {2, H - 3})
-			cv::line(img, px(b.u - 3 * b.sigma, v), px(b.u + 3 * b.sigma, v), kBoundary, 2, cv::LINE_AA);
+			cv::line(img, D::pixel(b.u - 3 * b.sigma, v), D::pixel(b.u + 3 * b.sigma, v), kBoundary, 2, cv::LINE_AA);
 	}
 	// Legend.
-	PictureLegend::draw(img, {{"detected", kDetected}, {"matched, rejected", kRejected}, {"on plane", kOnPlane},
+	D::legend(img, {{"detected", kDetected}, {"matched, rejected", kRejected}, {"on plane", kOnPlane},
 								 {"selected", kSelected}, {"boundary +-3 sigma", kBoundary}});
 	return img;
 }
