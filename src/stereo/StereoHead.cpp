@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "featloc/core/InputError.h"
+#include "featloc/stereo/SegmentTriangulator.h"
 
 namespace featloc
 {
@@ -20,16 +21,15 @@ StereoHead StereoHead::fromCalibration(
 	double maxTiltDeg)
 {
 	StereoHead h;
-	const auto& c = calibration.leftCamera;
-	h.fx = c.fx();
-	h.fy = c.fy();
-	h.cx = c.cx();
-	h.cy = c.cy();
-	h.width = static_cast<int>(c.ncols);
-	h.height = static_cast<int>(c.nrows);
-	const auto& rp = calibration.rightCameraPose;
-	h.baseline = std::sqrt(rp.x * rp.x + rp.y * rp.y + rp.z * rp.z);
-	if (!(h.fx > 0 && h.fy > 0 && h.baseline > 0 && h.width > 0 && h.height > 0))
+	const SegmentTriangulator t = SegmentTriangulator::fromCalibration(calibration, where);
+	h.fx = t.fx;
+	h.fy = t.fy;
+	h.cx = t.cx;
+	h.cy = t.cy;
+	h.baseline = t.baseline;
+	h.width = static_cast<int>(calibration.leftCamera.ncols);
+	h.height = static_cast<int>(calibration.leftCamera.nrows);
+	if (!(h.width > 0 && h.height > 0))
 		throw InputError(where + ": stereo observation without a usable calibration");
 	const auto R = cam.getRotationMatrix();
 	// Optical axes: z ahead, x right, y down. A level camera has z and x

@@ -40,14 +40,14 @@ StereoVerticalLines::Result StereoVerticalLines::extract(
 		if (!res.matchRejection[i].empty()) continue;
 		const TriangulatedSegment s = tri.triangulate(res.left[m.left], res.right[m.right], m);
 		if (!(s.middle.z() >= options.min_depth && s.middle.z() <= options.max_depth)) continue;
-		if (!(s.top.z() > 0 && s.bottom.z() > 0)) continue;
+		// Ends whose disparity is not positive (segments that cross within
+		// the common rows) lie behind the camera or at infinity: no line.
+		if (!(s.top.z() > 0 && s.bottom.z() > 0 && std::isfinite(s.top.z()) && std::isfinite(s.bottom.z()))) continue;
 		const Eigen::Vector3d top = R * s.top + t, bottom = R * s.bottom + t;
 		const Eigen::Vector3d dir = (top - bottom).normalized();
 		WorldVerticalLine w;
 		w.tiltDeg = std::acos(std::min(1.0, std::abs(dir.z()))) * 180 / M_PI;
-		// Ends whose disparity is not positive (segments that cross within
-		// the common rows) give no finite point: such a match is no line.
-		if (!(w.tiltDeg <= options.max_tilt_deg) || !top.allFinite() || !bottom.allFinite()) continue;
+		if (w.tiltDeg > options.max_tilt_deg) continue;
 		// The middle point, turned into the world; the camera pose's
 		// uncertainty: a turn dtheta moves it by -[R p]_x dtheta.
 		const Eigen::Vector3d rp = R * s.middle;
