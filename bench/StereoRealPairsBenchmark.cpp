@@ -222,7 +222,7 @@ int main(int argc, char** argv)
 		const double travel = std::sqrt(vicon.x() * vicon.x() + vicon.y() * vicon.y() + vicon.z() * vicon.z());
 		const mrpt::poses::CPose3D fromImages = relativePoseFromImages(A, B, travel, inliers);
 		const auto rowVicon = agreement(A.result.lines, B.result.lines);
-		const auto linesE = x.extract(B.left, B.right, B.calibration, A.camera + fromImages, B.where).lines;
+		const auto linesE = x.place(B.result, B.calibration, A.camera + fromImages, B.where);
 		const auto rowImages = agreement(A.result.lines, linesE);
 		auto print = [&](const char* what, double turn, const AgreementRow& r)
 		{

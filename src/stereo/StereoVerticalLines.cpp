@@ -19,8 +19,6 @@ StereoVerticalLines::Result StereoVerticalLines::extract(
 	const cv::Mat& left, const cv::Mat& right, const mrpt::img::TStereoCamera& calibration,
 	const mrpt::poses::CPose3D& cameraInWorld, const std::string& where) const
 {
-	SegmentTriangulator tri = SegmentTriangulator::fromCalibration(calibration, where);
-	tri.sigmaColumn = options.sigma_img;
 	Result res;
 	const VerticalSegmentDetector detector(options.segments);
 	res.left = detector.detect(left);
@@ -29,7 +27,17 @@ StereoVerticalLines::Result StereoVerticalLines::extract(
 	const SadDisparity sad(options.sad);
 	res.disparity = sad.compute(left, right, 0, options.num_disparities);
 	for (const auto& m : res.matches) res.matchRejection.push_back(sad.support(res.disparity, res.left[m.left], m));
+	res.lines = place(res, calibration, cameraInWorld, where);
+	return res;
+}
 
+std::vector<WorldVerticalLine> StereoVerticalLines::place(const Result& res,
+	const mrpt::img::TStereoCamera& calibration, const mrpt::poses::CPose3D& cameraInWorld,
+	const std::string& where) const
+{
+	SegmentTriangulator tri = SegmentTriangulator::fromCalibration(calibration, where);
+	tri.sigmaColumn = options.sigma_img;
+	std::vector<WorldVerticalLine> lines;
 	const Eigen::Matrix3d R = cameraInWorld.getRotationMatrix().asEigen();
 	const Eigen::Vector3d t(cameraInWorld.x(), cameraInWorld.y(), cameraInWorld.z());
 	const double sp2 = options.sigma_position * options.sigma_position;
@@ -60,8 +68,8 @@ StereoVerticalLines::Result StereoVerticalLines::extract(
 		w.polarity = res.left[m.left].polarity;
 		w.depth = s.middle.z();
 		w.match = i;
-		res.lines.push_back(w);
+		lines.push_back(w);
 	}
-	return res;
+	return lines;
 }
 }  // namespace featloc

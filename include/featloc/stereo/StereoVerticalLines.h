@@ -63,5 +63,10 @@ class StereoVerticalLines
 	Result extract(
 		const cv::Mat& left, const cv::Mat& right, const mrpt::img::TStereoCamera& calibration,
 		const mrpt::poses::CPose3D& cameraInWorld, const std::string& where) const;
+
+	/** The vertical lines of an extracted pair's supported matches placed
+	 * by another camera pose (the image stages do not depend on it). */
+	std::vector<WorldVerticalLine> place(const Result& extracted, const mrpt::img::TStereoCamera& calibration,
+		const mrpt::poses::CPose3D& cameraInWorld, const std::string& where) const;
 };
 }  // namespace featloc
