@@ -12,6 +12,7 @@
 #include "featloc/estimators/MatcherChainEstimator.h"
 #include "featloc/estimators/OdometryEstimator.h"
 #include "featloc/estimators/PoseEstimator.h"
+#include "featloc/live/TcpOdometrySensor.h"
 #include "featloc/matchers/CfIdcMatcher.h"
 #include "featloc/matchers/IcpMatcher.h"
 #include "featloc/matchers/IdcMatcher.h"
@@ -44,6 +45,9 @@ void registerClasses()
 		mrpt::rtti::registerClass(CLASS_ID(OdometryEstimator));
 		mrpt::rtti::registerClass(CLASS_ID(MatcherChainEstimator));
 		mrpt::rtti::registerClass(CLASS_ID(EkfEstimator));
+
+		// featloc's sensor plugin, for featloc-live's driver = TcpOdometrySensor.
+		TcpOdometrySensor::doRegister();
 	});
 }
 }  // namespace featloc

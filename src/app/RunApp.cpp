@@ -12,29 +12,21 @@
 #include "featloc/app/AppMain.h"
 #include "featloc/app/ConfigCommandLine.h"
 #include "featloc/app/InterruptSignals.h"
+#include "featloc/app/RunOutputs.h"
+#include "featloc/app/RunReport.h"
 #include "featloc/app/RunConfiguration.h"
 #include "featloc/app/UsageError.h"
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/ConfigError.h"
 #include "featloc/core/InputError.h"
 #include "featloc/estimators/PoseEstimatorFactory.h"
-#include "featloc/eval/ErrorStats.h"
-#include "featloc/eval/TrajectoryEvaluator.h"
 #include "featloc/eval/TrajectoryFile.h"
-#include "featloc/eval/TrajectoryPlot.h"
 #include "featloc/io/CarmenLogSource.h"
 #include "featloc/io/EntrySource.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
-#include "featloc/output/EstimatedRawlogWriter.h"
-#include "featloc/output/LandmarkTableWriter.h"
-#include "featloc/output/PoseCovarianceWriter.h"
 #include "featloc/output/ResultsFolder.h"
-#include "featloc/output/ScanMapSceneWriter.h"
 #include "featloc/output/SummaryJsonWriter.h"
-#include "featloc/output/TumTrajectoryWriter.h"
 #include "featloc/pipeline/Pipeline.h"
-#include "featloc/output/StereoDebugPictureWriter.h"
-#include "featloc/output/StereoFeatureTableWriter.h"
 #include "featloc/registerClasses.h"
 
 namespace featloc
@@ -63,19 +55,12 @@ std::string classesText()
 		joinedNames(ScanMatcherFactory::knownClassNames(), ", ") + "\n";
 }
 
-/** The reference trajectory of a run and where it came from. */
-struct Reference
-{
-	Trajectory trajectory;
-	std::string description;
-};
-
 /** The ground truth named by [Evaluation] ground_truth, read now (a wrong
  * path fails before the first scan); for a CARMEN log without one, the
  * log's own corrected poses. The ini's ground truth belongs to the ini's
  * rawlog: with another input on the command line it only applies when
  * given with --set. */
-std::optional<Reference> loadReference(
+std::optional<RunReport::Reference> loadReference(
 	const TrackedConfig& cfg, const RunConfiguration& rc, bool inputOnCommandLine,
 	const EntrySource& source)
 {
@@ -87,7 +72,7 @@ std::optional<Reference> loadReference(
 		const std::string path =
 			cfg.resolvePath(EvaluationOptions::kSection, "ground_truth", gt);
 		TrajectoryFile::Format format = TrajectoryFile::Format::Auto;
-		Reference r;
+		RunReport::Reference r;
 		try
 		{
 			r.trajectory = TrajectoryFile::read(path, format, &format);
@@ -105,7 +90,7 @@ std::optional<Reference> loadReference(
 			"rawlog; give --set Evaluation:ground_truth=FILE for this input\n");
 	if (const auto* carmen = dynamic_cast<const CarmenLogSource*>(&source))
 	{
-		Reference r;
+		RunReport::Reference r;
 		for (const auto& s : carmen->scans())
 		{
 			TimedPose p;
@@ -118,159 +103,6 @@ std::optional<Reference> loadReference(
 		return r;
 	}
 	return std::nullopt;
-}
-
-/** Every output of the run, writing into the staging folder. */
-struct RunOutputs
-{
-	std::vector<std::unique_ptr<RunOutput>> owned;
-	SummaryJsonWriter* summary = nullptr;
-	std::vector<std::string> names;	 //!< file names, for summary.json and the console
-
-	std::vector<RunOutput*> pointers() const
-	{
-		std::vector<RunOutput*> out;
-		for (const auto& o : owned) out.push_back(o.get());
-		return out;
-	}
-};
-
-RunOutputs makeOutputs(
-	const RunConfiguration& rc, const ResultsFolder& folder, bool withLandmarks,
-	bool withEvaluation)
-{
-	RunOutputs o;
-	auto add = [&](std::unique_ptr<RunOutput> out, const std::string& name) {
-		o.owned.push_back(std::move(out));
-		o.names.push_back(name);
-	};
-	add(std::make_unique<TumTrajectoryWriter>(folder.stagedFile("trajectory.tum")),
-		"trajectory.tum");
-	add(std::make_unique<PoseCovarianceWriter>(folder.stagedFile("poses_cov.txt")),
-		"poses_cov.txt");
-	if (rc.output.write_rawlog)
-		add(std::make_unique<EstimatedRawlogWriter>(
-				folder.stagedFile("estimated.rawlog"), rc.output.pose_label),
-			"estimated.rawlog");
-	if (rc.output.write_scene)
-		add(std::make_unique<ScanMapSceneWriter>(folder.stagedFile("map.3Dscene"),
-				rc.output.scene_scan_decimation, rc.output.scene_ellipse_every),
-			"map.3Dscene");
-	if (withLandmarks)
-		add(std::make_unique<LandmarkTableWriter>(folder.stagedFile("landmarks.txt")),
-			"landmarks.txt");
-	if (rc.stereo)
-	{
-		add(std::make_unique<StereoFeatureTableWriter>(folder.stagedFile("stereo_features.txt")),
-			"stereo_features.txt");
-		if (rc.output.stereo_debug_every > 0)
-			add(std::make_unique<StereoDebugPictureWriter>(
-					folder.stagedFile("stereo_debug"), rc.output.stereo_debug_every),
-				"stereo_debug");
-	}
-	// Written after the run (see evaluateAndPlot), listed here so that
-	// summary.json names every file of the folder.
-	if (withEvaluation) o.names.push_back("nees.txt");
-	o.names.push_back("trajectory.png");
-	o.names.push_back("config_used.ini");
-	o.names.push_back("summary.json");
-	auto summary =
-		std::make_unique<SummaryJsonWriter>(folder.stagedFile("summary.json"), o.names);
-	o.summary = summary.get();
-	o.owned.push_back(std::move(summary));
-	return o;
-}
-
-void writeUsedConfig(const TrackedConfig& cfg, const std::string& path)
-{
-	std::ofstream f(path);
-	f << "# effective configuration of this run (ini + --set)\n" << cfg.content();
-	if (!f) throw std::runtime_error("cannot write '" + path + "'");
-}
-
-void printSummary(const RunStats& s)
-{
-	std::printf(
-		"%s %zu steps (%zu with a scan) from %zu entries",
-		s.interrupted ? "interrupted after" : "processed", s.steps, s.scans, s.entries);
-	if (s.invalidatedBeams) std::printf(" (%zu beams invalidated)", s.invalidatedBeams);
-	std::printf("\n");
-	// "N s of log in M s": the whole run, matcher and I/O included.
-	if (s.logSeconds > 0 && s.wallTime > 0)
-		std::printf(
-			"  %.1f s of log in %.2f s (%.1fx real time, everything included)\n",
-			s.logSeconds, s.wallTime, s.logSeconds / s.wallTime);
-	if (s.stepsWithoutOdometry)
-		std::printf(
-			"  %zu steps had no odometry (zero-motion prior used)\n", s.stepsWithoutOdometry);
-	if (s.odometryCovarianceScale > 1)
-		std::printf(
-			"  odometry covariance: the log's is too small for the motion the matches "
-			"show; inflated x%.1f (see [Odometry] covariance_check)\n",
-			s.odometryCovarianceScale);
-	for (const auto& [cls, n] : s.ignoredObservations)
-		std::printf("  %zu %s ignored (nothing in featloc uses them)\n", n, cls.c_str());
-	if (s.landmarkObservations || s.landmarksInMap)
-		std::printf(
-			"  %zu range-bearing observations; %zu landmarks in the map at the end\n",
-			s.landmarkObservations, s.landmarksInMap);
-	if (s.stereoFrames)
-	{
-		const ErrorStats st = ErrorStats::of(s.stereoTimes);
-		std::printf(
-			"  %zu stereo pairs: %zu segments on map walls, %zu selected; %zu landmarks started, "
-			"%zu observations used; %.1f ms per pair (median)\n",
-			s.stereoFrames, s.stereoObservations, s.stereoSelected, s.stereoLandmarksStarted, s.stereoUpdates,
-			st.median * 1e3);
-		if (s.stereoFramesWithoutWall)
-			std::printf("    %zu pairs saw no wall of the map '%s'\n", s.stereoFramesWithoutWall, s.stereoMap.c_str());
-	}
-	if (s.matchesAttempted)
-	{
-		const ErrorStats t = ErrorStats::of(s.matchTimes);
-		std::printf(
-			"  %zu matches: %zu failed (%zu fell back to odometry); time per "
-			"match mean %.2f ms, median %.2f ms, p95 %.2f ms\n",
-			s.matchesAttempted, s.matchFailures, s.fallbacks, t.mean * 1e3, t.median * 1e3,
-			t.p95 * 1e3);
-		for (const auto& ex : s.failureExamples) std::printf("    failed: %s\n", ex.c_str());
-		for (const auto& ex : s.rejectionExamples) std::printf("    not used: %s\n", ex.c_str());
-	}
-	if (!s.estimatorTimes.empty())
-	{
-		const ErrorStats e = ErrorStats::of(s.estimatorTimes);
-		std::printf(
-			"  estimator %s: mean %.1f us per step (matcher excluded)\n", s.estimator.c_str(),
-			e.mean * 1e6);
-	}
-}
-
-/** The evaluation against the reference (summary.json, nees.txt) and
- * trajectory.png, with or without a reference. */
-void evaluateAndPlot(
-	const RunConfiguration& rc, const std::optional<Reference>& reference,
-	const ResultsFolder& folder, const RunStats& stats, SummaryJsonWriter& summary)
-{
-	if (stats.steps == 0) return;
-	Trajectory est = TrajectoryFile::read(folder.stagedFile("poses_cov.txt"));
-	est.source = folder.finalFile("poses_cov.txt");	// where the user will find it
-	char title[160];
-	if (!reference)
-	{
-		std::snprintf(title, sizeof(title), "%s: %zu poses (no ground truth)",
-			stats.estimator.c_str(), est.poses.size());
-		TrajectoryPlot::write(folder.stagedFile("trajectory.png"), Trajectory{}, est, {}, title);
-		return;
-	}
-	const TrajectoryEvaluator evaluator(rc.evaluation.max_time_difference);
-	const EvaluationReport rep = evaluator.evaluate(reference->trajectory, est);
-	std::printf("against %s:\n%s", reference->description.c_str(), rep.toText().c_str());
-	summary.writeWithEvaluation(stats, rep.toJson());
-	if (rep.hasNees) rep.writeNeesSeries(folder.stagedFile("nees.txt"));
-	std::snprintf(title, sizeof(title), "%s: ATE rmse %.3f m over %zu poses",
-		stats.estimator.c_str(), rep.ate.rmse, rep.associated);
-	TrajectoryPlot::write(
-		folder.stagedFile("trajectory.png"), reference->trajectory, est, rep.alignment, title);
 }
 
 /** featloc-run's command line: CONFIG [INPUT], --out, --list-classes and
@@ -323,7 +155,7 @@ struct PreparedRun
 	RunConfiguration rc;
 	std::string inputPath;
 	EntrySource::Ptr source;
-	std::optional<Reference> reference;
+	std::optional<RunReport::Reference> reference;
 	std::unique_ptr<ResultsFolder> folder;
 	RunOutputs outputs;
 };
@@ -354,9 +186,9 @@ void prepare(RunCommandLine& cl, const std::vector<std::string>& files, Prepared
 	run.folder->requireOutside(run.inputPath, "input");
 	if (run.reference && run.reference->trajectory.source != run.inputPath)
 		run.folder->requireOutside(run.reference->trajectory.source, "ground truth");
-	run.outputs = makeOutputs(
+	run.outputs = RunOutputs::make(
 		run.rc, *run.folder, run.rc.estimator->keepsLandmarks(), run.reference.has_value());
-	writeUsedConfig(run.cfg, run.folder->stagedFile("config_used.ini"));
+	RunReport::writeUsedConfig(run.cfg, run.folder->stagedFile("config_used.ini"));
 }
 
 /** 4. The run, then the evaluation. Whatever happens, the results are
@@ -371,10 +203,10 @@ RunStats execute(PreparedRun& run, bool quiet, InterruptSignals& signals)
 		ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
 		stats = pipeline.run(
 			*run.source, run.outputs.pointers(), quiet ? nullptr : &progress, &signals.flag());
-		printSummary(stats);
+		RunReport::printSummary(stats);
 		try
 		{
-			evaluateAndPlot(run.rc, run.reference, *run.folder, stats, *run.outputs.summary);
+			RunReport::evaluateAndPlot(run.rc, run.reference, *run.folder, stats, *run.outputs.summary);
 		}
 		catch (const std::exception& e)
 		{

@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -11,17 +13,66 @@
 
 #include "featloc/app/AppMain.h"
 #include "featloc/app/ConfigCommandLine.h"
+#include "featloc/app/InterruptSignals.h"
 #include "featloc/app/UsageError.h"
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/pipeline/ProgressBar.h"
 #include "featloc/registerClasses.h"
 #include "featloc/sim/SimConfiguration.h"
+#include "featloc/sim/OdometryLineServer.h"
+#include "featloc/sim/RealTimeLogPlayer.h"
+#include "featloc/sim/ScipLaserServer.h"
 #include "featloc/sim/Simulator.h"
 #include "featloc/sim/WorldPlot.h"
 #include "featloc/sim/WorldSceneWriter.h"
 
 namespace featloc
 {
+namespace
+{
+unsigned short tcpPort(unsigned value, const char* option)
+{
+	if (value > 65535) throw UsageError(std::string(option) + " must be a TCP port (0-65535)");
+	return static_cast<unsigned short>(value);
+}
+
+/** --serve: the simulated log, in real time, through emulated devices. */
+void serve(const SimConfiguration& sc, const std::string& rawlog,
+	const std::vector<mrpt::poses::CPose2D>& truths, const std::string& gtPath,
+	unsigned laserPort, unsigned odometryPort, bool quiet)
+{
+	// A driver that hangs up must not kill the emulator (SIGPIPE).
+	std::signal(SIGPIPE, SIG_IGN);
+	const auto items = RealTimeLogPlayer::load(rawlog, truths);
+	const auto device = ScipLaserServer::deviceFor(sc.laser.beams, sc.laser.aperture,
+		sc.laser.max_range, static_cast<int>(std::lround(sc.laser.rate)));
+	ScipLaserServer laser(device, tcpPort(laserPort, "--laser-port"));
+	std::unique_ptr<OdometryLineServer> odometry;
+	if (odometryPort)
+		odometry = std::make_unique<OdometryLineServer>(tcpPort(odometryPort, "--odometry-port"));
+	std::printf(
+		"serving %s in real time:\n  laser: Hokuyo %s, SCIP 2.0 on 127.0.0.1:%u (%d beams, "
+		"ARES %d, %d rpm)\n  odometry: %s\nwaiting for the drivers to connect...\n",
+		rawlog.c_str(), device.model.c_str(), laserPort, device.amax - device.amin + 1,
+		device.ares, device.scanRpm,
+		odometry ? ("featloc line protocol on 127.0.0.1:" + std::to_string(odometryPort)).c_str()
+				 : "none");
+	std::fflush(stdout);
+	InterruptSignals signals;
+	RealTimeLogPlayer player(laser, odometry.get(), gtPath);
+	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
+	const auto r = player.play(items, &signals.flag(), [&](double f) {
+		if (!quiet) progress.update(f, laser.scansSent());
+	});
+	if (!quiet) progress.done(laser.scansSent());
+	std::printf(
+		"%s after %.1f s: %zu of %zu scans delivered, %zu of %zu odometry readings "
+		"delivered; %zu laser connections\n  truth: %s\n",
+		r.stopped ? "stopped" : "log served", r.seconds, r.scansDelivered, r.scans,
+		r.readingsDelivered, r.readings, laser.connections(), gtPath.c_str());
+}
+}  // namespace
+
 int SimApp::main(int argc, char** argv)
 {
 	registerClasses();
@@ -40,6 +91,18 @@ int SimApp::main(int argc, char** argv)
 		false, "", "PREFIX", cmd);
 	TCLAP::ValueArg<unsigned int> argSeed(
 		"", "seed", "Random seed; overrides [Simulation] seed", false, 1, "N", cmd);
+	TCLAP::SwitchArg argServe("", "serve",
+		"After simulating, serve the log in real time as devices on 127.0.0.1: the "
+		"laser as a Hokuyo in SCIP 2.0 (MRPT's CHokuyoURG with IP_DIR/PORT_DIR) and "
+		"the odometry in featloc's line protocol (featloc-live's TcpOdometrySensor); "
+		"writes PREFIX.served.gt.txt, the truth on this computer's clock. Forces "
+		"[Simulation] format = 2. Ctrl-C stops.",
+		cmd);
+	TCLAP::ValueArg<unsigned> argLaserPort(
+		"", "laser-port", "--serve: the laser's TCP port", false, 10940, "PORT", cmd);
+	TCLAP::ValueArg<unsigned> argOdometryPort("", "odometry-port",
+		"--serve: the odometry's TCP port (0: a robot without odometry)", false, 10950,
+		"PORT", cmd);
 	ConfigCommandLine config(cmd, "Laser:preset=hokuyo_utm30lx",
 		"the settings sections with every key, default and unit");
 	int exitCode = 0;
@@ -59,6 +122,7 @@ int SimApp::main(int argc, char** argv)
 	SimConfiguration sc = SimConfiguration::load(cfg);
 	cfg.requireAllKeysRead();
 	if (argSeed.isSet()) sc.simulation.seed = argSeed.getValue();
+	if (argServe.getValue()) sc.simulation.format = 2;	// odometry readings to serve
 
 	const std::string prefix = argOut.getValue();
 	const auto parent = std::filesystem::path(prefix).parent_path();
@@ -71,8 +135,13 @@ int SimApp::main(int argc, char** argv)
 		sc.world, sc.robot, sc.laser, sc.odometry, sc.simulation, sc.beacons, sc.stereo);
 	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
 	size_t scans = 0;
+	std::vector<mrpt::poses::CPose2D> truths;
 	const auto res = sim.run(
-		rawlog, gt, [&](const SimulatedScan&) { scans++; },
+		rawlog, gt,
+		[&](const SimulatedScan& s) {
+			scans++;
+			truths.push_back(s.robot);
+		},
 		[&](double f) {
 			if (!config.quiet()) progress.update(f, scans);
 		});
@@ -112,6 +181,9 @@ int SimApp::main(int argc, char** argv)
 			sc.stereo.rate, (dir / (stem + "_Images")).string().c_str(), prefix.c_str(),
 			prefix.c_str(), prefix.c_str());
 	}
+	if (argServe.getValue())
+		serve(sc, rawlog, truths, prefix + ".served.gt.txt", argLaserPort.getValue(),
+			argOdometryPort.getValue(), config.quiet());
 	return 0;
 }
 }  // namespace featloc

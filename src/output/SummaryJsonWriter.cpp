@@ -89,14 +89,20 @@ SummaryJsonWriter::SummaryJsonWriter(
 
 void SummaryJsonWriter::finish(const RunStats& stats)
 {
-	writeJson(m_path, toJson(stats, m_outputs));
+	auto j = toJson(stats, m_outputs);
+	for (const auto& [key, text] : m_members) j[key] = nlohmann::json::parse(text);
+	writeJson(m_path, j);
+}
+
+void SummaryJsonWriter::addMember(const std::string& key, const std::string& json)
+{
+	m_members.emplace_back(key, json);
 }
 
 void SummaryJsonWriter::writeWithEvaluation(
 	const RunStats& stats, const std::string& evaluationJson)
 {
-	auto j = toJson(stats, m_outputs);
-	j["evaluation"] = nlohmann::json::parse(evaluationJson);
-	writeJson(m_path, j);
+	addMember("evaluation", evaluationJson);
+	finish(stats);
 }
 }  // namespace featloc

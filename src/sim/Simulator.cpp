@@ -19,6 +19,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "featloc/io/TumRow.h"
 #include "featloc/math/DiagonalPoseGaussian.h"
 #include "featloc/sim/RayCaster.h"
 #include "featloc/sim/StereoOutputWriter.h"
@@ -34,14 +35,6 @@ mrpt::random::CRandomGenerator& rng()
 	return mrpt::random::getRandomGenerator();
 }
 
-std::string tumRow(double t, const mrpt::poses::CPose2D& p)
-{
-	char row[256];
-	std::snprintf(
-		row, sizeof(row), "%.9f %.12f %.12f 0 0 0 %.15f %.15f\n", t, p.x(), p.y(),
-		std::sin(p.phi() / 2), std::cos(p.phi() / 2));
-	return row;
-}
 }  // namespace
 
 Simulator::Simulator(

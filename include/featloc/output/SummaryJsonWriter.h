@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "featloc/output/RunOutput.h"
@@ -24,8 +25,13 @@ class SummaryJsonWriter : public RunOutput
 	void writeWithEvaluation(
 		const RunStats& stats, const std::string& evaluationJson);
 
+	/** An extra top-level member (JSON text) in every later write, e.g.
+	 * featloc-live's "live" report; finish() writes the file again. */
+	void addMember(const std::string& key, const std::string& json);
+
    private:
 	std::string m_path;
 	std::vector<std::string> m_outputs;
+	std::vector<std::pair<std::string, std::string>> m_members;
 };
 }  // namespace featloc

@@ -1,0 +1,35 @@
+#pragma once
+#include <chrono>
+#include <cstdio>
+#include <vector>
+
+#include "featloc/output/RunOutput.h"
+
+namespace featloc
+{
+class LiveSource;
+
+/** featloc-live's console while it runs: every `period` seconds one line
+ * with the run time, the latest pose, each sensor's rate, the late
+ * observations and the latency of the poses (from a scan's arrival from
+ * its driver to its pose). Keeps every latency for the final report. */
+class LiveStatusLine : public RunOutput
+{
+   public:
+	LiveStatusLine(const LiveSource& source, double period, std::FILE* out);
+
+	void onStep(const StepRecord& record) override;
+	void finish(const RunStats&) override {}
+	std::string path() const override { return {}; }
+
+	/** [s] arrival-to-pose latency of every scan's pose. */
+	const std::vector<double>& latencies() const { return m_latencies; }
+
+   private:
+	const LiveSource& m_source;
+	double m_period;
+	std::FILE* m_out;
+	std::chrono::steady_clock::time_point m_lastLine;
+	std::vector<double> m_latencies;
+};
+}  // namespace featloc

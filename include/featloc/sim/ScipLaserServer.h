@@ -1,0 +1,96 @@
+#pragma once
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace mrpt::comms
+{
+class CClientTCPSocket;
+class CServerTCPSocket;
+}
+
+namespace featloc
+{
+/** A Hokuyo laser scanner emulated over TCP in SCIP 2.0, the protocol
+ * MRPT's CHokuyoURG speaks in Ethernet mode (`IP_DIR`, `PORT_DIR`), so that
+ * the real driver runs unchanged against simulated scans.
+ *
+ * Protocol (SCIP 2.0 as the UTM-30LX speaks it): every command line is
+ * echoed, then a status line `SS sum LF`, data lines `data sum LF` and an
+ * empty line; sum = (sum of the bytes & 0x3F) + 0x30, over a parameter
+ * line's bytes before its ';'. `PP` gives DMIN DMAX ARES AMIN AMAX AFRT
+ * SCAN MODL; `MD` (continuous distance data) is acknowledged with status
+ * 00, then every scan repeats the MD echo with status 99, a 4-character
+ * timestamp (device ms) and the ranges, 3 characters of 6 bits (+0x30,
+ * mm), cut in lines of 64. `QT` stops streaming. MRPT 2.5.8 runs the whole
+ * handshake twice (on connect and in initialize()), so commands are
+ * accepted while streaming.
+ *
+ * One driver at a time; a new connection replaces the old one. Faults for
+ * tests: a device that accepts connections and never answers (Silent). */
+class ScipLaserServer
+{
+   public:
+	/** What PP reports: the scanner's geometry. Beam i (AMIN..AMAX) points
+	 * at (i - AFRT) * 2 pi / ARES from the front. */
+	struct Device
+	{
+		std::string model = "UTM-30LX";
+		int dminMm = 23, dmaxMm = 30000;
+		int ares = 1440, amin = 0, amax = 1080, afrt = 540;
+		int scanRpm = 2400;	 //!< 40 Hz
+	};
+	enum class Fault
+	{
+		None,
+		Silent	//!< accepts connections, never answers
+	};
+
+	/** Listens on 127.0.0.1:port. Throws std::runtime_error naming the
+	 * port when it cannot. */
+	ScipLaserServer(Device device, unsigned short port, Fault fault = Fault::None);
+	~ScipLaserServer();
+	ScipLaserServer(const ScipLaserServer&) = delete;
+	ScipLaserServer& operator=(const ScipLaserServer&) = delete;
+
+	/** A Hokuyo-like device for a scan of `beams` beams over `aperture`
+	 * [rad] centred on the front (ARES = 2 pi / step, rounded; throws
+	 * std::invalid_argument when the step is not 2 pi / an integer within
+	 * 0.1%, since SCIP cannot describe such a scanner). */
+	static Device deviceFor(size_t beams, double aperture, double maxRange, int rate);
+
+	/** Sends one scan to the driver if it asked for data (MD); ranges in
+	 * metres, beam AMIN first; a range <= 0 or not finite is sent as
+	 * "no return" (error code 1, which the driver marks invalid).
+	 * `deviceTimeMs`: the scanner's clock. False when no driver streams. */
+	bool publish(const std::vector<float>& ranges, uint32_t deviceTimeMs);
+
+	unsigned short port() const { return m_port; }
+	size_t scansSent() const { return m_scansSent; }
+	size_t connections() const { return m_connections; }
+	bool streaming() const { return m_streaming; }
+	/** The link drops (as when a cable is pulled); the server keeps
+	 * listening for the driver to reconnect. */
+	void dropConnection();
+
+   private:
+	void serve();
+	void handleCommand(const std::string& command);
+	bool send(const std::string& bytes);  //!< under m_mutex
+
+	Device m_device;
+	unsigned short m_port;
+	Fault m_fault;
+	std::atomic<bool> m_stop{false}, m_streaming{false};
+	std::atomic<size_t> m_scansSent{0}, m_connections{0};
+	std::mutex m_mutex;	 //!< guards m_client, m_mdEcho and writes
+	std::string m_mdEcho;  //!< the MD command being served
+	std::unique_ptr<mrpt::comms::CClientTCPSocket> m_client;
+	std::thread m_thread;
+	std::unique_ptr<mrpt::comms::CServerTCPSocket> m_listener;
+};
+}  // namespace featloc

@@ -1,0 +1,187 @@
+#include "featloc/app/LiveApp.h"
+
+#include <csignal>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "featloc/app/AppMain.h"
+#include "featloc/app/ConfigCommandLine.h"
+#include "featloc/app/InterruptSignals.h"
+#include "featloc/app/LiveStatusLine.h"
+#include "featloc/app/RunConfiguration.h"
+#include "featloc/app/RunOutputs.h"
+#include "featloc/app/RunReport.h"
+#include "featloc/app/UsageError.h"
+#include "featloc/config/TrackedConfig.h"
+#include "featloc/core/InputError.h"
+#include "featloc/eval/ErrorStats.h"
+#include "featloc/live/LiveSource.h"
+#include "featloc/live/TcpOdometrySensor.h"
+#include "featloc/output/ResultsFolder.h"
+#include "featloc/output/SummaryJsonWriter.h"
+#include "featloc/pipeline/Pipeline.h"
+#include "featloc/registerClasses.h"
+
+namespace featloc
+{
+namespace
+{
+constexpr const char* kRecording = "live.rawlog";
+constexpr const char* kLateRecording = "live-late.rawlog";
+
+/** The ground truth, read after the run (a live emulator writes it while
+ * the run goes). */
+std::optional<RunReport::Reference> loadReference(const TrackedConfig& cfg, const RunConfiguration& rc)
+{
+	if (rc.evaluation.ground_truth.empty()) return std::nullopt;
+	const std::string path =
+		cfg.resolvePath(EvaluationOptions::kSection, "ground_truth", rc.evaluation.ground_truth);
+	TrajectoryFile::Format format = TrajectoryFile::Format::Auto;
+	RunReport::Reference r;
+	try
+	{
+		r.trajectory = TrajectoryFile::read(path, format, &format);
+	}
+	catch (const InputError& e)
+	{
+		throw InputError(std::string("[Evaluation] ground_truth: ") + e.what());
+	}
+	r.description = path + " (" + TrajectoryFile::formatDescription(format) + ")";
+	return r;
+}
+
+std::string liveJson(const LiveSource& source, const std::vector<double>& latencies)
+{
+	nlohmann::json j;
+	j["stopped_by"] = source.stopReason();
+	j["seconds"] = source.secondsRunning();
+	j["late_observations"] = source.lateObservations();
+	for (const auto& s : source.report())
+		j["sensors"].push_back({{"section", s.section}, {"driver", s.driver},
+			{"received", s.received}, {"passed_on", s.passedOn}, {"late", s.late},
+			{"restarts", s.failures}, {"rate_hz", s.rate}, {"last_error", s.lastError}});
+	const ErrorStats l = ErrorStats::of(latencies);
+	j["pose_latency_s"] = {
+		{"count", l.count}, {"median", l.median}, {"p95", l.p95}, {"max", l.max}};
+	return j.dump();
+}
+
+void printLiveReport(const LiveSource& source, const std::vector<double>& latencies)
+{
+	std::printf("live run stopped (%s) after %.1f s:\n", source.stopReason().c_str(),
+		source.secondsRunning());
+	for (const auto& s : source.report())
+	{
+		std::printf("  [%s] %s: %zu observations (%.1f Hz), %zu passed on, %zu late",
+			s.section.c_str(), s.driver.c_str(), s.received, s.rate, s.passedOn, s.late);
+		if (s.failures)
+			std::printf(", %zu driver restarts (last: %s)", s.failures, s.lastError.c_str());
+		std::printf("\n");
+	}
+	if (!latencies.empty())
+	{
+		const ErrorStats l = ErrorStats::of(latencies);
+		std::printf("  pose latency (scan arrival to pose): median %.1f ms, p95 %.1f ms, max %.1f ms\n",
+			l.median * 1e3, l.p95 * 1e3, l.max * 1e3);
+	}
+}
+}  // namespace
+
+int LiveApp::main(int argc, char** argv)
+{
+	registerClasses();
+	TCLAP::CmdLine cmd(
+		"featloc-live: localize live from MRPT hardware drivers. CONFIG is a featloc ini "
+		"plus sensor sections in rawlog-grabber's style ([Live] sensors = LASER ODOMETRY; "
+		"[LASER] driver = CHokuyoURG and its keys; featloc's own TcpOdometrySensor reads a "
+		"robot base's odometry over TCP). Everything received is recorded to "
+		"DIR/live.rawlog (featloc-run replays it to the same poses). Ctrl-C or --duration "
+		"stops; nothing received is lost.",
+		' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> argConfig(
+		"config", "The INI configuration file (see configs/live-emulator.ini)", false, "",
+		"CONFIG", cmd);
+	TCLAP::ValueArg<std::string> argOut(
+		"o", "out", "Results folder; overrides [Output] dir", false, "", "DIR", cmd);
+	TCLAP::ValueArg<double> argDuration("", "duration",
+		"Stop after S seconds of data (from the first observation); default: until Ctrl-C",
+		false, 0, "S", cmd);
+	ConfigCommandLine config(cmd, "LASER:PORT_DIR=10941",
+		"the reference configuration with a [Live] section");
+	int exitCode = 0;
+	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
+	if (config.writeConfigIfAsked(
+			"# featloc-live reference configuration: every featloc key with its default;\n"
+			"# add one section per sensor (driver = ... and the driver's keys).\n",
+			[](mrpt::config::CConfigFileBase& c) {
+				RunConfiguration::defaults().save(c);
+				LiveOptions live;
+				live.sensors = {"LASER", "ODOMETRY"};
+				live.saveToConfigFile(c, LiveOptions::kSection);
+			}))
+		return 0;
+	if (argConfig.getValue().empty()) throw UsageError("missing CONFIG (the ini file)");
+	if (argDuration.getValue() < 0) throw UsageError("--duration must be >= 0");
+	// A device that hangs up must not kill the run (SIGPIPE on write).
+	std::signal(SIGPIPE, SIG_IGN);
+	InterruptSignals signals;
+
+	TrackedConfig cfg;
+	config.load(cfg, argConfig.getValue());
+	const RunConfiguration rc = RunConfiguration::load(cfg);
+	LiveOptions liveOptions;
+	liveOptions.loadFromConfigFile(cfg, LiveOptions::kSection);
+	ResultsFolder folder(argOut.isSet()
+			? argOut.getValue()
+			: cfg.resolvePath(OutputOptions::kSection, "dir", rc.output.dir));
+	LiveSource source(cfg, liveOptions, folder.stagedFile(kRecording),
+		folder.stagedFile(kLateRecording), argDuration.getValue(), &signals.flag());
+	cfg.requireAllKeysRead();  // the drivers have read their keys by now
+
+	RunOutputs outputs = RunOutputs::make(rc, folder, rc.estimator->keepsLandmarks(),
+		!rc.evaluation.ground_truth.empty(), {kRecording, kLateRecording});
+	RunReport::writeUsedConfig(cfg, folder.stagedFile("config_used.ini"));
+	std::printf("featloc-live: %s\n  estimator: %s%s\n  results:   %s\n",
+		source.description().c_str(), rc.estimator->name().c_str(),
+		rc.estimator->usesScanMatcher() ? (", matcher " + rc.matcher->className()).c_str() : "",
+		folder.dir().c_str());
+	std::printf("starting the drivers (each must answer within %.0f s)...\n",
+		liveOptions.startup_timeout);
+	std::fflush(stdout);
+	source.start();	 // throws for a silent device: the old results stay
+	if (signals.requested())
+	{
+		std::fprintf(stderr, "featloc-live: interrupted before the run started; nothing was written\n");
+		return 128 + SIGINT;
+	}
+	std::printf("running: Ctrl-C stops%s\n",
+		argDuration.getValue() > 0
+			? (" (or after " + std::to_string(argDuration.getValue()) + " s)").c_str()
+			: "");
+	std::fflush(stdout);
+
+	LiveStatusLine status(source, config.quiet() ? 0.0 : liveOptions.status_period, stderr);
+	std::vector<RunOutput*> all = outputs.pointers();
+	all.push_back(&status);
+	RunStats stats;
+	try
+	{
+		Pipeline pipeline(rc.input, rc.odometry, rc.pipeline, rc.estimator, rc.matcher);
+		stats = pipeline.run(source, all);
+		printLiveReport(source, status.latencies());
+		RunReport::printSummary(stats);
+		outputs.summary->addMember("live", liveJson(source, status.latencies()));
+		outputs.summary->finish(stats);
+		RunReport::evaluateAndPlot(rc, loadReference(cfg, rc), folder, stats, *outputs.summary);
+	}
+	catch (...)
+	{
+		folder.publish();  // what was recorded and estimated is kept
+		throw;
+	}
+	folder.publish();
+	std::printf("results in %s:\n", folder.dir().c_str());
+	for (const auto& f : outputs.names) std::printf("  %s\n", f.c_str());
+	return 0;
+}
+}  // namespace featloc

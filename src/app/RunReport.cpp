@@ -1,0 +1,109 @@
+#include "featloc/app/RunReport.h"
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include "featloc/app/RunConfiguration.h"
+#include "featloc/config/TrackedConfig.h"
+#include "featloc/eval/ErrorStats.h"
+#include "featloc/eval/TrajectoryEvaluator.h"
+#include "featloc/eval/TrajectoryPlot.h"
+#include "featloc/output/ResultsFolder.h"
+#include "featloc/output/SummaryJsonWriter.h"
+
+namespace featloc
+{
+void RunReport::writeUsedConfig(const TrackedConfig& cfg, const std::string& path)
+{
+	std::ofstream f(path);
+	f << "# effective configuration of this run (ini + --set)\n" << cfg.content();
+	if (!f) throw std::runtime_error("cannot write '" + path + "'");
+}
+
+void RunReport::printSummary(const RunStats& s)
+{
+	std::printf(
+		"%s %zu steps (%zu with a scan) from %zu entries",
+		s.interrupted ? "interrupted after" : "processed", s.steps, s.scans, s.entries);
+	if (s.invalidatedBeams) std::printf(" (%zu beams invalidated)", s.invalidatedBeams);
+	std::printf("\n");
+	// "N s of log in M s": the whole run, matcher and I/O included.
+	if (s.logSeconds > 0 && s.wallTime > 0)
+		std::printf(
+			"  %.1f s of log in %.2f s (%.1fx real time, everything included)\n",
+			s.logSeconds, s.wallTime, s.logSeconds / s.wallTime);
+	if (s.stepsWithoutOdometry)
+		std::printf(
+			"  %zu steps had no odometry (zero-motion prior used)\n", s.stepsWithoutOdometry);
+	if (s.odometryCovarianceScale > 1)
+		std::printf(
+			"  odometry covariance: the log's is too small for the motion the matches "
+			"show; inflated x%.1f (see [Odometry] covariance_check)\n",
+			s.odometryCovarianceScale);
+	for (const auto& [cls, n] : s.ignoredObservations)
+		std::printf("  %zu %s ignored (nothing in featloc uses them)\n", n, cls.c_str());
+	if (s.landmarkObservations || s.landmarksInMap)
+		std::printf(
+			"  %zu range-bearing observations; %zu landmarks in the map at the end\n",
+			s.landmarkObservations, s.landmarksInMap);
+	if (s.stereoFrames)
+	{
+		const ErrorStats st = ErrorStats::of(s.stereoTimes);
+		std::printf(
+			"  %zu stereo pairs: %zu segments on map walls, %zu selected; %zu landmarks started, "
+			"%zu observations used; %.1f ms per pair (median)\n",
+			s.stereoFrames, s.stereoObservations, s.stereoSelected, s.stereoLandmarksStarted, s.stereoUpdates,
+			st.median * 1e3);
+		if (s.stereoFramesWithoutWall)
+			std::printf("    %zu pairs saw no wall of the map '%s'\n", s.stereoFramesWithoutWall, s.stereoMap.c_str());
+	}
+	if (s.matchesAttempted)
+	{
+		const ErrorStats t = ErrorStats::of(s.matchTimes);
+		std::printf(
+			"  %zu matches: %zu failed (%zu fell back to odometry); time per "
+			"match mean %.2f ms, median %.2f ms, p95 %.2f ms\n",
+			s.matchesAttempted, s.matchFailures, s.fallbacks, t.mean * 1e3, t.median * 1e3,
+			t.p95 * 1e3);
+		for (const auto& ex : s.failureExamples) std::printf("    failed: %s\n", ex.c_str());
+		for (const auto& ex : s.rejectionExamples) std::printf("    not used: %s\n", ex.c_str());
+	}
+	if (!s.estimatorTimes.empty())
+	{
+		const ErrorStats e = ErrorStats::of(s.estimatorTimes);
+		std::printf(
+			"  estimator %s: mean %.1f us per step (matcher excluded)\n", s.estimator.c_str(),
+			e.mean * 1e6);
+	}
+}
+
+/** The evaluation against the reference (summary.json, nees.txt) and
+ * trajectory.png, with or without a reference. */
+void RunReport::evaluateAndPlot(
+	const RunConfiguration& rc, const std::optional<Reference>& reference,
+	const ResultsFolder& folder, const RunStats& stats, SummaryJsonWriter& summary)
+{
+	if (stats.steps == 0) return;
+	Trajectory est = TrajectoryFile::read(folder.stagedFile("poses_cov.txt"));
+	est.source = folder.finalFile("poses_cov.txt");	// where the user will find it
+	char title[160];
+	if (!reference)
+	{
+		std::snprintf(title, sizeof(title), "%s: %zu poses (no ground truth)",
+			stats.estimator.c_str(), est.poses.size());
+		TrajectoryPlot::write(folder.stagedFile("trajectory.png"), Trajectory{}, est, {}, title);
+		return;
+	}
+	const TrajectoryEvaluator evaluator(rc.evaluation.max_time_difference);
+	const EvaluationReport rep = evaluator.evaluate(reference->trajectory, est);
+	std::printf("against %s:\n%s", reference->description.c_str(), rep.toText().c_str());
+	summary.writeWithEvaluation(stats, rep.toJson());
+	if (rep.hasNees) rep.writeNeesSeries(folder.stagedFile("nees.txt"));
+	std::snprintf(title, sizeof(title), "%s: ATE rmse %.3f m over %zu poses",
+		stats.estimator.c_str(), rep.ate.rmse, rep.associated);
+	TrajectoryPlot::write(
+		folder.stagedFile("trajectory.png"), reference->trajectory, est, rep.alignment, title);
+}
+
+}  // namespace featloc

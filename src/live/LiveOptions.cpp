@@ -1,0 +1,47 @@
+#include "featloc/live/LiveOptions.h"
+
+#include <sstream>
+
+#include "featloc/config/ConfigValues.h"
+
+namespace featloc
+{
+void LiveOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace featloc::config;
+	std::string list;
+	read(c, s, "sensors", list);
+	sensors.clear();
+	std::istringstream ss(list);
+	for (std::string name; ss >> name;) sensors.push_back(name);
+	require(!sensors.empty(), c, s, "sensors",
+		"the sensor sections to run, e.g. 'LASER ODOMETRY' (each with a driver key)");
+	for (const auto& name : sensors)
+		require(c.sectionExists(name), c, s, "sensors", "section [" + name + "] does not exist");
+	read(c, s, "max_wait", max_wait);
+	read(c, s, "startup_timeout", startup_timeout);
+	read(c, s, "status_period", status_period);
+	read(c, s, "restart_pause", restart_pause);
+	require(max_wait >= 0, c, s, "max_wait", ">= 0");
+	require(startup_timeout > 0, c, s, "startup_timeout", "> 0");
+	require(status_period >= 0, c, s, "status_period", ">= 0");
+	require(restart_pause >= 0, c, s, "restart_pause", ">= 0");
+}
+
+void LiveOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	using namespace featloc::config;
+	std::string list;
+	for (const auto& n : sensors) list += (list.empty() ? "" : " ") + n;
+	write(c, s, "sensors", list,
+		"sensor sections to run (rawlog-grabber style: driver = CHokuyoURG | CLMS100Eth | "
+		"TcpOdometrySensor | ..., plus the driver's keys)");
+	write(c, s, "max_wait", max_wait,
+		"[s] an observation waits at most this long for the other sensors (time order)");
+	write(c, s, "startup_timeout", startup_timeout,
+		"[s] a sensor silent this long after its start is an error");
+	write(c, s, "status_period", status_period, "[s] console status line period (0: none)");
+	write(c, s, "restart_pause", restart_pause,
+		"[s] pause before a failed driver is restarted");
+}
+}  // namespace featloc

@@ -1,0 +1,230 @@
+#include "featloc/live/LiveSource.h"
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/obs/CObservation.h>
+
+#include <thread>
+
+#include "featloc/config/TrackedConfig.h"
+#include "featloc/core/InputError.h"
+
+namespace featloc
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double secondsBetween(Clock::time_point a, Clock::time_point b)
+{
+	return std::chrono::duration<double>(b - a).count();
+}
+
+constexpr size_t kRecentArrivals = 4096;
+// [s] added to a sensor's largest delay seen (scheduling jitter).
+constexpr double kDelayMargin = 0.003;
+}  // namespace
+
+LiveSource::LiveSource(const TrackedConfig& cfg, const LiveOptions& options,
+	std::string recordingPath, std::string lateRecordingPath, double duration,
+	const std::atomic<bool>* stop)
+	: m_options(options),
+	  m_duration(duration),
+	  m_stop(stop),
+	  m_recording(std::move(recordingPath)),
+	  m_late(std::move(lateRecordingPath))
+{
+	for (size_t i = 0; i < m_options.sensors.size(); i++)
+		m_sensors.push_back(std::make_unique<LiveSensor>(cfg, m_options.sensors[i], i,
+			m_options.restart_pause, [this](LiveSensor::Arrival a) { onArrival(std::move(a)); }));
+	m_latest.resize(m_sensors.size());
+	m_maxDelay.resize(m_sensors.size());
+	m_passedOn.assign(m_sensors.size(), 0);
+	m_lateCount.assign(m_sensors.size(), 0);
+}
+
+LiveSource::~LiveSource() { stopSensors(); }
+
+void LiveSource::onArrival(LiveSensor::Arrival a)
+{
+	const double t = mrpt::Clock::toDouble(a.observation->timestamp);
+	const double delay = mrpt::Clock::toDouble(mrpt::Clock::now()) - t;
+	{
+		std::lock_guard<std::mutex> lock(m_mutex);
+		if (!m_firstArrival) m_firstArrival = a.arrival;
+		auto& latest = m_latest[a.sensor];
+		if (!latest || t > *latest) latest = t;
+		auto& maxDelay = m_maxDelay[a.sensor];
+		if (!maxDelay || delay > *maxDelay) maxDelay = delay;
+		m_pending.push(Pending{std::move(a), t, m_arrivals++});
+	}
+	m_arrived.notify_one();
+}
+
+void LiveSource::start()
+{
+	for (auto& s : m_sensors) s->start();
+	// Every device must answer: a silent one is an error, in bounded time.
+	for (;;)
+	{
+		if (m_stop && m_stop->load()) return;
+		bool all = true;
+		for (const auto& s : m_sensors)
+		{
+			const auto st = s->status();
+			if (st.delivered) continue;
+			all = false;
+			if (secondsBetween(s->startedAt(), Clock::now()) > m_options.startup_timeout)
+				throw InputError("[" + s->section() + "] driver " + s->driver() + " (" +
+					s->address() + "): no observation within " +
+					std::to_string(static_cast<int>(m_options.startup_timeout)) +
+					" s of its start ([Live] startup_timeout)" +
+					(st.lastError.empty() ? ": the device does not answer"
+										  : "; the driver said: " + st.lastError));
+		}
+		if (all) return;
+		std::this_thread::sleep_for(std::chrono::milliseconds(10));
+	}
+}
+
+bool LiveSource::releasable(const Pending& p, Clock::time_point now) const
+{
+	if (secondsBetween(p.arrival.arrival, now) >= m_options.max_wait) return true;
+	const double wallNow = mrpt::Clock::toDouble(mrpt::Clock::now());
+	for (size_t s = 0; s < m_latest.size(); s++)
+	{
+		if (s == p.arrival.sensor || (m_latest[s] && *m_latest[s] >= p.t)) continue;
+		// Nothing sent later by s yet; but what s sends from now on is
+		// stamped at least wallNow - its largest delay so far (arrival -
+		// stamp), so once that passes p.t nothing older can come.
+		if (m_maxDelay[s] && wallNow - *m_maxDelay[s] - kDelayMargin > p.t) continue;
+		return false;
+	}
+	return true;
+}
+
+bool LiveSource::stopping()
+{
+	std::lock_guard<std::mutex> lock(m_mutex);
+	if (m_stopReason.empty())
+	{
+		if (m_stop && m_stop->load())
+			m_stopReason = "Ctrl-C / SIGTERM";
+		else if (m_duration > 0 && m_firstArrival &&
+			secondsBetween(*m_firstArrival, Clock::now()) >= m_duration)
+			m_stopReason = "--duration reached";
+	}
+	return !m_stopReason.empty();
+}
+
+void LiveSource::stopSensors()
+{
+	for (auto& s : m_sensors) s->stop();
+	std::lock_guard<std::mutex> lock(m_mutex);
+	m_sensorsStopped = true;
+}
+
+bool LiveSource::next(RawlogEntry& entry)
+{
+	for (;;)
+	{
+		// Stop the drivers first (outside the lock: their last
+		// observations still arrive), then pass on everything they sent.
+		if (!m_sensorsStopped && stopping()) stopSensors();
+		std::unique_lock<std::mutex> lock(m_mutex);
+		if (m_pending.empty())
+		{
+			if (m_sensorsStopped) return false;
+			m_arrived.wait_for(lock, std::chrono::milliseconds(5));
+			continue;
+		}
+		const auto now = Clock::now();
+		if (!m_sensorsStopped && !releasable(m_pending.top(), now))
+		{
+			m_arrived.wait_for(lock, std::chrono::milliseconds(2));
+			continue;
+		}
+		Pending p = m_pending.top();
+		m_pending.pop();
+		const size_t sensor = p.arrival.sensor;
+		if (m_lastReleased && p.t < *m_lastReleased)
+		{
+			m_lateCount[sensor]++;
+			lock.unlock();
+			m_late.record(*p.arrival.observation);
+			continue;
+		}
+		m_lastReleased = p.t;
+		m_passedOn[sensor]++;
+		m_recentArrivals.emplace_back(p.arrival.observation.get(), p.arrival.arrival);
+		if (m_recentArrivals.size() > kRecentArrivals) m_recentArrivals.pop_front();
+		entry.index = m_released++;
+		lock.unlock();
+		m_recording.record(*p.arrival.observation);
+		entry.object = p.arrival.observation;
+		return true;
+	}
+}
+
+double LiveSource::secondsRunning() const
+{
+	std::lock_guard<std::mutex> lock(m_mutex);
+	return m_firstArrival ? secondsBetween(*m_firstArrival, Clock::now()) : 0.0;
+}
+
+double LiveSource::progress() const
+{
+	if (m_duration <= 0) return 0;
+	return std::min(0.999, secondsRunning() / m_duration);
+}
+
+std::string LiveSource::description() const
+{
+	std::string out = "live:";
+	for (const auto& s : m_sensors) out += " [" + s->section() + "] " + s->driver();
+	return out + "; recording " + m_recording.path();
+}
+
+std::vector<LiveSource::SensorReport> LiveSource::report() const
+{
+	const double secs = secondsRunning();
+	std::vector<SensorReport> out;
+	std::lock_guard<std::mutex> lock(m_mutex);
+	for (size_t i = 0; i < m_sensors.size(); i++)
+	{
+		const auto st = m_sensors[i]->status();
+		SensorReport r;
+		r.section = m_sensors[i]->section();
+		r.driver = m_sensors[i]->driver();
+		r.received = st.received;
+		r.passedOn = m_passedOn[i];
+		r.late = m_lateCount[i];
+		r.failures = st.failures;
+		r.lastError = st.lastError;
+		r.rate = secs > 0 ? static_cast<double>(st.received) / secs : 0;
+		out.push_back(r);
+	}
+	return out;
+}
+
+std::string LiveSource::stopReason() const
+{
+	std::lock_guard<std::mutex> lock(m_mutex);
+	return m_stopReason;
+}
+
+size_t LiveSource::lateObservations() const
+{
+	std::lock_guard<std::mutex> lock(m_mutex);
+	size_t n = 0;
+	for (auto c : m_lateCount) n += c;
+	return n;
+}
+
+std::optional<Clock::time_point> LiveSource::arrivalOf(const void* observation) const
+{
+	std::lock_guard<std::mutex> lock(m_mutex);
+	for (auto it = m_recentArrivals.rbegin(); it != m_recentArrivals.rend(); ++it)
+		if (it->first == observation) return it->second;
+	return std::nullopt;
+}
+}  // namespace featloc

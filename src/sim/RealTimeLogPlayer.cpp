@@ -1,0 +1,124 @@
+#include "featloc/sim/RealTimeLogPlayer.h"
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include "featloc/core/InputError.h"
+#include "featloc/io/RawlogReader.h"
+#include "featloc/io/TumRow.h"
+
+namespace featloc
+{
+std::vector<RealTimeLogPlayer::Item> RealTimeLogPlayer::load(
+	const std::string& rawlogPath, const std::vector<mrpt::poses::CPose2D>& truths)
+{
+	using namespace mrpt::obs;
+	RawlogReader reader(rawlogPath);
+	std::vector<Item> items;
+	RawlogEntry entry;
+	size_t scans = 0;
+	while (reader.next(entry))
+	{
+		Item item;
+		if (auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(entry.object))
+		{
+			if (scans >= truths.size())
+				throw InputError(
+					"rawlog '" + rawlogPath + "': more scans than true poses (" +
+					std::to_string(truths.size()) + ")");
+			item.isScan = true;
+			item.t = mrpt::Clock::toDouble(scan->timestamp);
+			item.truth = truths[scans++];
+			item.ranges.resize(scan->getScanSize());
+			for (size_t i = 0; i < item.ranges.size(); i++)
+				item.ranges[i] = scan->getScanRangeValidity(i) ? scan->getScanRange(i) : 0.f;
+		}
+		else if (auto odo = std::dynamic_pointer_cast<CObservationOdometry>(entry.object))
+		{
+			item.t = mrpt::Clock::toDouble(odo->timestamp);
+			item.odometry.time = item.t;
+			item.odometry.pose = odo->odometry;
+			item.odometry.hasVelocities = odo->hasVelocities;
+			item.odometry.v = odo->velocityLocal.vx;
+			item.odometry.w = odo->velocityLocal.omega;
+		}
+		else
+			throw InputError(
+				"rawlog '" + rawlogPath + "': entry #" + std::to_string(entry.index) +
+				" is not a 2-D scan or an odometry reading; the device emulator plays "
+				"format-#2 logs of those two");
+		items.push_back(std::move(item));
+	}
+	if (scans != truths.size())
+		throw InputError(
+			"rawlog '" + rawlogPath + "': " + std::to_string(scans) + " scans for " +
+			std::to_string(truths.size()) + " true poses");
+	return items;
+}
+
+RealTimeLogPlayer::RealTimeLogPlayer(
+	ScipLaserServer& laser, OdometryLineServer* odometry, std::string groundTruthPath)
+	: m_laser(laser), m_odometry(odometry), m_gtPath(std::move(groundTruthPath))
+{
+}
+
+RealTimeLogPlayer::Result RealTimeLogPlayer::play(
+	const std::vector<Item>& items, const std::atomic<bool>* stop,
+	const std::function<void(double)>& onProgress)
+{
+	Result r;
+	auto stopped = [&] { return stop && stop->load(); };
+	// The device starts when its driver asks for data (and the base when
+	// its client is there), so the whole log reaches the drivers.
+	while (!stopped() && !(m_laser.streaming() && (!m_odometry || m_odometry->clients() > 0)))
+		std::this_thread::sleep_for(std::chrono::milliseconds(5));
+	std::ofstream gt(m_gtPath);
+	if (!gt) throw std::runtime_error("cannot write '" + m_gtPath + "'");
+	gt << "# featloc-sim --serve ground truth (TUM format): t x y z qx qy qz qw of the robot "
+		  "at every scan sent, t on this computer's clock\n";
+	if (items.empty() || stopped())
+	{
+		r.stopped = stopped();
+		return r;
+	}
+	const double tFirst = items.front().t;
+	const double wall0 = mrpt::Clock::toDouble(mrpt::Clock::now());
+	const auto steady0 = std::chrono::steady_clock::now();
+	size_t k = 0;
+	for (const Item& item : items)
+	{
+		if (stopped())
+		{
+			r.stopped = true;
+			break;
+		}
+		std::this_thread::sleep_until(
+			steady0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+						  std::chrono::duration<double>(item.t - tFirst)));
+		const double wallT = wall0 + (item.t - tFirst);
+		if (item.isScan)
+		{
+			r.scans++;
+			const auto deviceMs = static_cast<uint32_t>((item.t - tFirst) * 1000.0 + 0.5);
+			if (m_laser.publish(item.ranges, deviceMs)) r.scansDelivered++;
+			gt << tumRow(wallT, item.truth) << std::flush;
+		}
+		else
+		{
+			r.readings++;
+			OdometryLine line = item.odometry;
+			line.time = wallT;
+			if (m_odometry && m_odometry->publish(line) > 0) r.readingsDelivered++;
+		}
+		if (onProgress && (++k % 64 == 0)) onProgress(static_cast<double>(k) / items.size());
+	}
+	r.seconds =
+		std::chrono::duration<double>(std::chrono::steady_clock::now() - steady0).count();
+	return r;
+}
+}  // namespace featloc

@@ -1,0 +1,228 @@
+#include "featloc/sim/ScipLaserServer.h"
+
+#include <mrpt/comms/CClientTCPSocket.h>
+#include <mrpt/comms/CServerTCPSocket.h>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace featloc
+{
+namespace
+{
+// SCIP 2.0: sum = (sum of the bytes & 0x3F) + 0x30.
+char checksum(const std::string& bytes)
+{
+	unsigned sum = 0;
+	for (unsigned char c : bytes) sum += c;
+	return static_cast<char>((sum & 0x3F) + 0x30);
+}
+
+std::string dataLine(const std::string& data) { return data + checksum(data) + "\n"; }
+
+// A PP / VV parameter: "NAME:value;sum", the sum over the bytes before ';'.
+std::string parameterLine(const std::string& nameValue)
+{
+	return nameValue + ";" + checksum(nameValue) + "\n";
+}
+
+// A value in n characters of 6 bits each, most significant first.
+std::string encode(uint32_t value, int n)
+{
+	std::string out(static_cast<size_t>(n), '0');
+	for (int i = n - 1; i >= 0; i--, value >>= 6)
+		out[static_cast<size_t>(i)] = static_cast<char>((value & 0x3F) + 0x30);
+	return out;
+}
+
+std::string reply(const std::string& echo, const std::string& status, const std::string& data = "")
+{
+	return echo + "\n" + dataLine(status) + data + "\n";
+}
+
+int field(const std::string& s, size_t pos, size_t len)
+{
+	try
+	{
+		return std::stoi(s.substr(pos, len));
+	}
+	catch (const std::exception&)
+	{
+		return -1;
+	}
+}
+}  // namespace
+
+ScipLaserServer::Device ScipLaserServer::deviceFor(
+	size_t beams, double aperture, double maxRange, int rate)
+{
+	if (beams < 2 || !(aperture > 0) || aperture > 2 * M_PI)
+		throw std::invalid_argument("a SCIP scanner needs at least 2 beams over an aperture in (0, 360] deg");
+	const double step = aperture / static_cast<double>(beams - 1);
+	const double ares = 2 * M_PI / step;
+	if (std::abs(ares - std::round(ares)) > 1e-3 * ares)
+		throw std::invalid_argument(
+			"the scan's beam step (" + std::to_string(step * 180 / M_PI) +
+			" deg) is not 360 deg / an integer: SCIP cannot describe it");
+	Device d;
+	d.ares = static_cast<int>(std::lround(ares));
+	d.amin = 0;
+	d.amax = static_cast<int>(beams) - 1;
+	d.afrt = d.amax / 2;
+	d.dmaxMm = static_cast<int>(std::lround(maxRange * 1000));
+	d.scanRpm = rate * 60;
+	return d;
+}
+
+ScipLaserServer::ScipLaserServer(Device device, unsigned short port, Fault fault)
+	: m_device(std::move(device)), m_port(port), m_fault(fault)
+{
+	m_listener = std::make_unique<mrpt::comms::CServerTCPSocket>(port, "127.0.0.1");
+	// accept() with a timeout logs a warning at each timeout: only errors.
+	m_listener->setMinLoggingLevel(mrpt::system::LVL_ERROR);
+	if (!m_listener->isListening())
+		throw std::runtime_error(
+			"SCIP laser emulator: cannot listen on 127.0.0.1:" + std::to_string(port));
+	m_thread = std::thread([this] { serve(); });
+}
+
+ScipLaserServer::~ScipLaserServer()
+{
+	m_stop = true;
+	if (m_thread.joinable()) m_thread.join();
+}
+
+void ScipLaserServer::dropConnection()
+{
+	std::lock_guard<std::mutex> lock(m_mutex);
+	if (m_client) m_client->close();
+	m_client.reset();
+	m_streaming = false;
+}
+
+bool ScipLaserServer::send(const std::string& bytes)
+{
+	if (!m_client || !m_client->isConnected()) return false;
+	if (m_client->writeAsync(bytes.data(), bytes.size(), 1000) == bytes.size()) return true;
+	m_client->close();	// a driver that does not read is gone
+	m_client.reset();
+	m_streaming = false;
+	return false;
+}
+
+void ScipLaserServer::serve()
+{
+	std::string pending;
+	while (!m_stop)
+	{
+		if (!m_client)
+		{
+			auto client = m_listener->accept(50);
+			if (!client) continue;
+			client->setTCPNoDelay(1);
+			std::lock_guard<std::mutex> lock(m_mutex);
+			m_client = std::move(client);
+			m_streaming = false;
+			m_connections++;
+			pending.clear();
+		}
+		char buf[512];
+		size_t n = 0;
+		{
+			// Non-blocking read (also notices a closed connection).
+			std::lock_guard<std::mutex> lock(m_mutex);
+			if (m_client && m_client->isConnected())
+				n = m_client->readAsync(buf, sizeof(buf), 0, 0);
+			if (m_client && !m_client->isConnected())
+			{
+				m_client.reset();
+				m_streaming = false;
+				continue;
+			}
+		}
+		pending.append(buf, n);
+		for (size_t lf; (lf = pending.find('\n')) != std::string::npos;)
+		{
+			std::string command = pending.substr(0, lf);
+			pending.erase(0, lf + 1);
+			if (!command.empty() && command.back() == '\r') command.pop_back();
+			if (m_fault != Fault::Silent) handleCommand(command);
+		}
+		if (n == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+	}
+	std::lock_guard<std::mutex> lock(m_mutex);
+	if (m_client) m_client->close();
+}
+
+void ScipLaserServer::handleCommand(const std::string& cmd)
+{
+	std::lock_guard<std::mutex> lock(m_mutex);
+	const Device& d = m_device;
+	const std::string name = cmd.substr(0, 2);
+	if (cmd.empty())
+		return;	 // a bare LF: SCIP ignores it
+	else if (name == "QT")
+	{
+		m_streaming = false;
+		send(reply(cmd, "00"));
+	}
+	else if (cmd == "SCIP2.0" || name == "BM" || name == "HS" || name == "CR" || name == "SS" ||
+		name == "RS" || name == "TM")
+		send(reply(cmd, "00"));
+	else if (name == "PP")
+		send(reply(cmd, "00",
+			parameterLine("MODL:" + d.model) + parameterLine("DMIN:" + std::to_string(d.dminMm)) +
+				parameterLine("DMAX:" + std::to_string(d.dmaxMm)) +
+				parameterLine("ARES:" + std::to_string(d.ares)) +
+				parameterLine("AMIN:" + std::to_string(d.amin)) +
+				parameterLine("AMAX:" + std::to_string(d.amax)) +
+				parameterLine("AFRT:" + std::to_string(d.afrt)) +
+				parameterLine("SCAN:" + std::to_string(d.scanRpm))));
+	else if (name == "VV")
+		send(reply(cmd, "00",
+			parameterLine("VEND:Hokuyo Automatic Co.,Ltd. (featloc emulator)") +
+				parameterLine("PROD:" + d.model) + parameterLine("FIRM:featloc-sim") +
+				parameterLine("PROT:SCIP 2.0") + parameterLine("SERI:FEATLOC0")));
+	else if (name == "MD" && cmd.size() == 15)
+	{
+		// MD ssss eeee cc s nn: start and end step, cluster 01, the whole
+		// field of view this emulator serves.
+		const int start = field(cmd, 2, 4), end = field(cmd, 6, 4), cluster = field(cmd, 10, 2);
+		if (start != d.amin || end != d.amax || cluster != 1)
+		{
+			send(reply(cmd, "10"));	 // SCIP: invalid start/end step
+			return;
+		}
+		m_mdEcho = cmd;
+		if (send(reply(cmd, "00"))) m_streaming = true;
+	}
+	else
+		send(reply(cmd, "0E"));	 // SCIP: unknown command
+}
+
+bool ScipLaserServer::publish(const std::vector<float>& ranges, uint32_t deviceTimeMs)
+{
+	std::lock_guard<std::mutex> lock(m_mutex);
+	if (!m_streaming || !m_client) return false;
+	const size_t beams = static_cast<size_t>(m_device.amax - m_device.amin + 1);
+	if (ranges.size() != beams)
+		throw std::invalid_argument(
+			"SCIP laser emulator: a scan of " + std::to_string(ranges.size()) +
+			" ranges for a device of " + std::to_string(beams) + " beams");
+	std::string data;
+	data.reserve(beams * 3);
+	for (float r : ranges)
+	{
+		// Codes below 20 mm are the device's error codes: 1 = no return.
+		const bool valid = std::isfinite(r) && r > 0;
+		const uint32_t mm = valid ? static_cast<uint32_t>(std::lround(r * 1000.0)) : 1;
+		data += encode(std::min<uint32_t>(mm, (1u << 18) - 1), 3);
+	}
+	std::string body = dataLine(encode(deviceTimeMs & 0xFFFFFF, 4));
+	for (size_t i = 0; i < data.size(); i += 64) body += dataLine(data.substr(i, 64));
+	if (!send(reply(m_mdEcho, "99", body))) return false;
+	m_scansSent++;
+	return true;
+}
+}  // namespace featloc
