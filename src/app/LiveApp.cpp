@@ -1,5 +1,6 @@
 #include "featloc/app/LiveApp.h"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -136,6 +137,16 @@ int LiveApp::main(int argc, char** argv)
 			: cfg.resolvePath(OutputOptions::kSection, "dir", rc.output.dir));
 	LiveSource source(cfg, liveOptions, folder.stagedFile(kRecording),
 		folder.stagedFile(kLateRecording), argDuration.getValue(), &signals.flag());
+	// Sensor sections not in [Live] sensors are kept for another run (as
+	// rawlog-grabber does); their keys are not typos.
+	std::vector<std::string> notStarted;
+	for (const auto& section : LiveOptions::sensorSections(cfg))
+		if (std::find(liveOptions.sensors.begin(), liveOptions.sensors.end(), section) ==
+			liveOptions.sensors.end())
+		{
+			cfg.acceptSection(section);
+			notStarted.push_back(section);
+		}
 	cfg.requireAllKeysRead();  // the drivers have read their keys by now
 
 	RunOutputs outputs = RunOutputs::make(rc, folder, rc.estimator->keepsLandmarks(),
@@ -145,6 +156,8 @@ int LiveApp::main(int argc, char** argv)
 		source.description().c_str(), rc.estimator->name().c_str(),
 		rc.estimator->usesScanMatcher() ? (", matcher " + rc.matcher->className()).c_str() : "",
 		folder.dir().c_str());
+	for (const auto& section : notStarted)
+		std::printf("  not started: [%s] (not in [Live] sensors)\n", section.c_str());
 	std::printf("starting the drivers (each must answer within %.0f s)...\n",
 		liveOptions.startup_timeout);
 	std::fflush(stdout);

@@ -23,6 +23,7 @@
 #include "featloc/eval/TrajectoryFile.h"
 #include "featloc/io/CarmenLogSource.h"
 #include "featloc/io/EntrySource.h"
+#include "featloc/live/LiveOptions.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/output/ResultsFolder.h"
 #include "featloc/output/SummaryJsonWriter.h"
@@ -148,6 +149,18 @@ struct RunCommandLine
 	}
 };
 
+/** A featloc-live configuration replays its recording with featloc-run:
+ * its [Live] section (still checked) and the sensor sections (with a
+ * driver key) belong to featloc-live's drivers: their keys are not
+ * "unknown" here. */
+void acceptLiveSections(TrackedConfig& cfg)
+{
+	if (!cfg.sectionExists(LiveOptions::kSection)) return;
+	LiveOptions live;
+	live.loadFromConfigFile(cfg, LiveOptions::kSection);
+	for (const auto& section : LiveOptions::sensorSections(cfg)) cfg.acceptSection(section);
+}
+
 /** Everything a run needs, checked before anything is written. */
 struct PreparedRun
 {
@@ -167,6 +180,7 @@ void prepare(RunCommandLine& cl, const std::vector<std::string>& files, Prepared
 {
 	cl.config.load(run.cfg, files[0]);
 	run.rc = RunConfiguration::load(run.cfg);
+	acceptLiveSections(run.cfg);
 	run.cfg.requireAllKeysRead();
 
 	const bool inputOnCommandLine = files.size() == 2;

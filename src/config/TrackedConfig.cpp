@@ -319,6 +319,13 @@ void TrackedConfig::writeString(
 	m_values.write(section, name, str);
 }
 
+void TrackedConfig::acceptSection(const std::string& section)
+{
+	std::vector<std::string> keys;
+	getAllKeys(section, keys);
+	for (const auto& k : keys) readString(section, k, "");
+}
+
 std::string TrackedConfig::readString(
 	const std::string& section, const std::string& name,
 	const std::string& defaultStr, bool failIfNotFound) const

@@ -1,11 +1,27 @@
 #include "featloc/live/LiveOptions.h"
 
+#include <mrpt/system/string_utils.h>
+
 #include <sstream>
 
 #include "featloc/config/ConfigValues.h"
 
 namespace featloc
 {
+std::vector<std::string> LiveOptions::sensorSections(const mrpt::config::CConfigFileBase& c)
+{
+	std::vector<std::string> sections, out;
+	c.getAllSections(sections);
+	for (const auto& s : sections)
+	{
+		std::vector<std::string> keys;
+		c.getAllKeys(s, keys);
+		for (const auto& k : keys)
+			if (mrpt::system::lowerCase(k) == "driver") out.push_back(s);
+	}
+	return out;
+}
+
 void LiveOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
 	using namespace featloc::config;

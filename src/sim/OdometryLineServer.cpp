@@ -1,22 +1,13 @@
 #include "featloc/sim/OdometryLineServer.h"
 
-#include <mrpt/comms/CClientTCPSocket.h>
-#include <mrpt/comms/CServerTCPSocket.h>
-
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace featloc
 {
-OdometryLineServer::OdometryLineServer(unsigned short port) : m_port(port)
+OdometryLineServer::OdometryLineServer(unsigned short port) : m_port(port), m_listener(port)
 {
-	m_listener = std::make_unique<mrpt::comms::CServerTCPSocket>(port, "127.0.0.1");
-	// accept() with a timeout logs a warning at each timeout: only errors.
-	m_listener->setMinLoggingLevel(mrpt::system::LVL_ERROR);
-	if (!m_listener->isListening())
-		throw std::runtime_error(
-			"odometry emulator: cannot listen on 127.0.0.1:" + std::to_string(port));
 	m_thread = std::thread([this] { acceptLoop(); });
 }
 
@@ -24,17 +15,17 @@ OdometryLineServer::~OdometryLineServer()
 {
 	m_stop = true;
 	if (m_thread.joinable()) m_thread.join();
+	for (int c : m_clients) LoopbackTcpServer::close(c);
 }
 
 void OdometryLineServer::acceptLoop()
 {
 	while (!m_stop)
 	{
-		auto client = m_listener->accept(50);
-		if (!client) continue;
-		client->setTCPNoDelay(1);
+		const int client = m_listener.accept(50);
+		if (client < 0) continue;
 		std::lock_guard<std::mutex> lock(m_mutex);
-		m_clients.push_back(std::move(client));
+		m_clients.push_back(client);
 	}
 }
 
@@ -43,17 +34,17 @@ size_t OdometryLineServer::publish(const OdometryLine& reading)
 	const std::string line = reading.format();
 	std::lock_guard<std::mutex> lock(m_mutex);
 	size_t reached = 0;
-	for (auto& c : m_clients)
+	for (int& c : m_clients)
 	{
-		if (c->isConnected() && c->writeAsync(line.data(), line.size(), 500) == line.size())
+		if (LoopbackTcpServer::sendAll(c, line, 500))
 			reached++;
 		else
-			c->close();
+		{
+			LoopbackTcpServer::close(c);  // the client is gone
+			c = -1;
+		}
 	}
-	m_clients.erase(
-		std::remove_if(m_clients.begin(), m_clients.end(),
-			[](const auto& c) { return !c->isConnected(); }),
-		m_clients.end());
+	m_clients.erase(std::remove(m_clients.begin(), m_clients.end(), -1), m_clients.end());
 	if (reached) m_sent++;
 	return reached;
 }
@@ -67,7 +58,7 @@ size_t OdometryLineServer::clients() const
 void OdometryLineServer::dropConnections()
 {
 	std::lock_guard<std::mutex> lock(m_mutex);
-	for (auto& c : m_clients) c->close();
+	for (int c : m_clients) LoopbackTcpServer::close(c);
 	m_clients.clear();
 }
 }  // namespace featloc

@@ -1,8 +1,5 @@
 #include "featloc/sim/ScipLaserServer.h"
 
-#include <mrpt/comms/CClientTCPSocket.h>
-#include <mrpt/comms/CServerTCPSocket.h>
-
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -76,14 +73,8 @@ ScipLaserServer::Device ScipLaserServer::deviceFor(
 }
 
 ScipLaserServer::ScipLaserServer(Device device, unsigned short port, Fault fault)
-	: m_device(std::move(device)), m_port(port), m_fault(fault)
+	: m_device(std::move(device)), m_port(port), m_fault(fault), m_listener(port)
 {
-	m_listener = std::make_unique<mrpt::comms::CServerTCPSocket>(port, "127.0.0.1");
-	// accept() with a timeout logs a warning at each timeout: only errors.
-	m_listener->setMinLoggingLevel(mrpt::system::LVL_ERROR);
-	if (!m_listener->isListening())
-		throw std::runtime_error(
-			"SCIP laser emulator: cannot listen on 127.0.0.1:" + std::to_string(port));
 	m_thread = std::thread([this] { serve(); });
 }
 
@@ -96,18 +87,21 @@ ScipLaserServer::~ScipLaserServer()
 void ScipLaserServer::dropConnection()
 {
 	std::lock_guard<std::mutex> lock(m_mutex);
-	if (m_client) m_client->close();
-	m_client.reset();
+	closeClient();
+}
+
+void ScipLaserServer::closeClient()
+{
+	LoopbackTcpServer::close(m_client);
+	m_client = -1;
 	m_streaming = false;
 }
 
 bool ScipLaserServer::send(const std::string& bytes)
 {
-	if (!m_client || !m_client->isConnected()) return false;
-	if (m_client->writeAsync(bytes.data(), bytes.size(), 1000) == bytes.size()) return true;
-	m_client->close();	// a driver that does not read is gone
-	m_client.reset();
-	m_streaming = false;
+	if (m_client < 0) return false;
+	if (LoopbackTcpServer::sendAll(m_client, bytes, 1000)) return true;
+	closeClient();	// a driver that is gone or does not read
 	return false;
 }
 
@@ -116,32 +110,33 @@ void ScipLaserServer::serve()
 	std::string pending;
 	while (!m_stop)
 	{
-		if (!m_client)
+		bool connected = false;
 		{
-			auto client = m_listener->accept(50);
-			if (!client) continue;
-			client->setTCPNoDelay(1);
 			std::lock_guard<std::mutex> lock(m_mutex);
-			m_client = std::move(client);
+			connected = m_client >= 0;
+		}
+		if (!connected)
+		{
+			const int client = m_listener.accept(50);
+			if (client < 0) continue;
+			std::lock_guard<std::mutex> lock(m_mutex);
+			m_client = client;
 			m_streaming = false;
 			m_connections++;
 			pending.clear();
 		}
 		char buf[512];
-		size_t n = 0;
+		long n = 0;
 		{
-			// Non-blocking read (also notices a closed connection).
 			std::lock_guard<std::mutex> lock(m_mutex);
-			if (m_client && m_client->isConnected())
-				n = m_client->readAsync(buf, sizeof(buf), 0, 0);
-			if (m_client && !m_client->isConnected())
+			if (m_client >= 0) n = LoopbackTcpServer::receive(m_client, buf, sizeof(buf));
+			if (n < 0)
 			{
-				m_client.reset();
-				m_streaming = false;
+				closeClient();	// the driver hung up
 				continue;
 			}
 		}
-		pending.append(buf, n);
+		pending.append(buf, static_cast<size_t>(n));
 		for (size_t lf; (lf = pending.find('\n')) != std::string::npos;)
 		{
 			std::string command = pending.substr(0, lf);
@@ -152,7 +147,7 @@ void ScipLaserServer::serve()
 		if (n == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
 	}
 	std::lock_guard<std::mutex> lock(m_mutex);
-	if (m_client) m_client->close();
+	closeClient();
 }
 
 void ScipLaserServer::handleCommand(const std::string& cmd)
@@ -204,7 +199,7 @@ void ScipLaserServer::handleCommand(const std::string& cmd)
 bool ScipLaserServer::publish(const std::vector<float>& ranges, uint32_t deviceTimeMs)
 {
 	std::lock_guard<std::mutex> lock(m_mutex);
-	if (!m_streaming || !m_client) return false;
+	if (!m_streaming || m_client < 0) return false;
 	const size_t beams = static_cast<size_t>(m_device.amax - m_device.amin + 1);
 	if (ranges.size() != beams)
 		throw std::invalid_argument(

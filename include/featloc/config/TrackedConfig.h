@@ -64,6 +64,10 @@ class TrackedConfig : public mrpt::config::CConfigFileBase
 	 * asked for. */
 	std::vector<std::pair<std::string, std::string>> unreadKeys() const;
 
+	/** Counts every key of `section` as read: a section that belongs to
+	 * another component (featloc-live's sensor sections in a replay). */
+	void acceptSection(const std::string& section);
+
 	/** Throws ConfigError listing every unread key, its origin, and the keys
 	 * the section does accept (with a "did you mean" when one is close). */
 	void requireAllKeysRead() const;

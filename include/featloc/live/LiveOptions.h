@@ -31,6 +31,10 @@ struct LiveOptions : public mrpt::config::CLoadableOptions
 	 * this pause (a device sending garbage, a dropped link). */
 	double restart_pause = 0.5;
 
+	/** Every section with a `driver` key: the sensors a configuration
+	 * describes, run or not. */
+	static std::vector<std::string> sensorSections(const mrpt::config::CConfigFileBase& c);
+
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& c, const std::string& s) override;
 	void saveToConfigFile(

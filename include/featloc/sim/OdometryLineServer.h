@@ -6,12 +6,7 @@
 #include <vector>
 
 #include "featloc/io/OdometryLine.h"
-
-namespace mrpt::comms
-{
-class CClientTCPSocket;
-class CServerTCPSocket;
-}  // namespace mrpt::comms
+#include "featloc/sim/LoopbackTcpServer.h"
 
 namespace featloc
 {
@@ -44,8 +39,8 @@ class OdometryLineServer
 	std::atomic<bool> m_stop{false};
 	std::atomic<size_t> m_sent{0};
 	mutable std::mutex m_mutex;	 //!< guards m_clients
-	std::vector<std::unique_ptr<mrpt::comms::CClientTCPSocket>> m_clients;
-	std::unique_ptr<mrpt::comms::CServerTCPSocket> m_listener;
+	std::vector<int> m_clients;	 //!< connection descriptors
+	LoopbackTcpServer m_listener;
 	std::thread m_thread;
 };
 }  // namespace featloc

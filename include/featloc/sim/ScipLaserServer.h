@@ -7,11 +7,7 @@
 #include <thread>
 #include <vector>
 
-namespace mrpt::comms
-{
-class CClientTCPSocket;
-class CServerTCPSocket;
-}
+#include "featloc/sim/LoopbackTcpServer.h"
 
 namespace featloc
 {
@@ -81,6 +77,7 @@ class ScipLaserServer
 	void serve();
 	void handleCommand(const std::string& command);
 	bool send(const std::string& bytes);  //!< under m_mutex
+	void closeClient();	 //!< under m_mutex
 
 	Device m_device;
 	unsigned short m_port;
@@ -89,8 +86,8 @@ class ScipLaserServer
 	std::atomic<size_t> m_scansSent{0}, m_connections{0};
 	std::mutex m_mutex;	 //!< guards m_client, m_mdEcho and writes
 	std::string m_mdEcho;  //!< the MD command being served
-	std::unique_ptr<mrpt::comms::CClientTCPSocket> m_client;
+	int m_client = -1;	//!< the driver's connection
+	LoopbackTcpServer m_listener;
 	std::thread m_thread;
-	std::unique_ptr<mrpt::comms::CServerTCPSocket> m_listener;
 };
 }  // namespace featloc

@@ -1,0 +1,293 @@
+// featloc-live against featloc-sim's device emulator over loopback: MRPT's
+// own CHokuyoURG driver and featloc's TcpOdometrySensor, real sockets,
+// real processes; and the emulator's protocol checked with the driver
+// in-process.
+#include <gtest/gtest.h>
+#include <mrpt/hwdrivers/CHokuyoURG.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <thread>
+
+#include "featloc/core/InputError.h"
+#include "featloc/io/OdometryLine.h"
+#include "featloc/io/RawlogReader.h"
+#include "featloc/sim/ScipLaserServer.h"
+#include "support/CommandRunner.h"
+#include "support/TempDir.h"
+
+using namespace featloc;
+using namespace featloc::test;
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kLive = FEATLOC_LIVE_EXE;
+const std::string kRun = FEATLOC_RUN_EXE;
+const std::string kSim = FEATLOC_SIM_EXE;
+const std::string kConfig = std::string(FEATLOC_SOURCE_DIR) + "/configs/live-emulator.ini";
+const std::string kWorld = std::string(FEATLOC_SOURCE_DIR) + "/worlds/office.ini";
+
+/** A TCP port nobody listens on now (the kernel's choice), so that tests
+ * running in parallel do not collide. */
+unsigned short freePort()
+{
+	const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+	sockaddr_in a{};
+	a.sin_family = AF_INET;
+	a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+	a.sin_port = 0;
+	socklen_t len = sizeof(a);
+	::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof(a));
+	::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len);
+	::close(fd);
+	return ntohs(a.sin_port);
+}
+
+/** featloc-sim --serve in the background (its pid in $emu): a UTM-30LX at
+ * 40 Hz and odometry at 100 Hz driving the office world. */
+std::string emulatorCommand(const std::string& prefix, unsigned short laser, unsigned short odo)
+{
+	return shellQuote(kSim) + " " + shellQuote(kWorld) + " --out " + shellQuote(prefix) +
+		" --serve -q --laser-port " + std::to_string(laser) + " --odometry-port " +
+		std::to_string(odo) +
+		" --set Laser:preset=hokuyo_utm30lx --set Laser:rate=40 --set Odometry:rate=100"
+		" --set Simulation:duration=40 > " +
+		shellQuote(prefix + ".out") + " 2>&1 & emu=$!; ";
+}
+
+std::string liveArgs(unsigned short laser, unsigned short odo)
+{
+	return shellQuote(kConfig) + " -q --set LASER:PORT_DIR=" + std::to_string(laser) +
+		" --set ODOMETRY:port=" + std::to_string(odo);
+}
+
+nlohmann::json readJson(const std::string& file)
+{
+	std::ifstream f(file);
+	return nlohmann::json::parse(f);
+}
+
+std::vector<std::string> poseRows(const std::string& tum)
+{
+	std::ifstream f(tum);
+	std::vector<std::string> rows;
+	for (std::string line; std::getline(f, line);)
+		if (!line.empty() && line[0] != '#') rows.push_back(line);
+	return rows;
+}
+
+struct Recorded
+{
+	size_t scans = 0, odometry = 0;
+};
+Recorded countRecorded(const std::string& rawlog)
+{
+	RawlogReader reader(rawlog);
+	RawlogEntry e;
+	Recorded r;
+	while (reader.next(e))
+	{
+		r.scans += IS_CLASS(*e.object, mrpt::obs::CObservation2DRangeScan);
+		r.odometry += IS_CLASS(*e.object, mrpt::obs::CObservationOdometry);
+	}
+	return r;
+}
+}  // namespace
+
+TEST(OdometryLine, FormatsAndParsesTheDocumentedLines)
+{
+	OdometryLine a;
+	a.time = 1700000000.25;
+	a.pose = mrpt::poses::CPose2D(1.5, -2.25, 0.5);
+	const auto b = OdometryLine::parse(a.format());
+	ASSERT_TRUE(b);
+	EXPECT_DOUBLE_EQ(b->time, a.time);
+	EXPECT_NEAR(b->pose.x(), 1.5, 1e-9);
+	EXPECT_NEAR(b->pose.phi(), 0.5, 1e-8);
+	EXPECT_FALSE(b->hasVelocities);
+	const auto v = OdometryLine::parse("ODOM 3 1 2 0.1 0.5 -0.2\r\n");
+	ASSERT_TRUE(v);
+	EXPECT_TRUE(v->hasVelocities);
+	EXPECT_DOUBLE_EQ(v->w, -0.2);
+	EXPECT_FALSE(OdometryLine::parse("# a comment"));
+	EXPECT_FALSE(OdometryLine::parse("   "));
+	for (const char* bad : {"POSE 1 2 3 4", "ODOM 1 2 3", "ODOM 1 2 3 nan", "ODOM 1 2 3 4 5",
+			 "ODOM 1 2 3x 4"})
+	{
+		try
+		{
+			OdometryLine::parse(bad);
+			ADD_FAILURE() << "accepted '" << bad << "'";
+		}
+		catch (const InputError& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+		}
+	}
+}
+
+TEST(ScipLaserServer, MrptsHokuyoDriverReadsTheScansSent)
+{
+	const unsigned short port = freePort();
+	ScipLaserServer server(ScipLaserServer::deviceFor(1081, 1.5 * M_PI, 30.0, 40), port);
+	mrpt::hwdrivers::CHokuyoURG driver;
+	driver.setIPandPort("127.0.0.1", port);
+	static_cast<mrpt::hwdrivers::CGenericSensor&>(driver).initialize();	 // SCIP 2.0 handshake, MD
+	ASSERT_TRUE(server.streaming());
+
+	std::vector<float> ranges(1081);
+	for (size_t i = 0; i < ranges.size(); i++) ranges[i] = 0.5f + 0.01f * static_cast<float>(i);
+	ranges[7] = 0;	// no return
+	ranges[8] = std::numeric_limits<float>::infinity();
+	mrpt::obs::CObservation2DRangeScan scan;
+	bool got = false;
+	for (int k = 0; k < 50 && !got; k++)
+	{
+		server.publish(ranges, static_cast<uint32_t>(25 * k));
+		bool hwError = false;
+		driver.doProcessSimple(got, scan, hwError);
+		ASSERT_FALSE(hwError);
+	}
+	ASSERT_TRUE(got);
+	ASSERT_EQ(scan.getScanSize(), 1081u);
+	for (size_t i = 0; i < ranges.size(); i++)
+	{
+		if (i == 7 || i == 8)
+			EXPECT_FALSE(scan.getScanRangeValidity(i)) << i;
+		else
+		{
+			EXPECT_TRUE(scan.getScanRangeValidity(i)) << i;
+			EXPECT_NEAR(scan.getScanRange(i), ranges[i], 0.0006) << i;  // mm on the wire
+		}
+	}
+	// MRPT 2.5.8 takes the aperture as beams x (2 pi / ARES): 270.25 deg
+	// for the 270 deg of 1081 beams 0.25 deg apart (doc/live.md).
+	EXPECT_NEAR(scan.aperture, 1081 * 2 * M_PI / 1440, 1e-5);
+	EXPECT_EQ(server.connections(), 1u);
+}
+
+TEST(Live, EmulatedHokuyoAndOdometryRunAndReplayToTheSamePoses)
+{
+	TempDir dir;
+	const unsigned short laser = freePort(), odo = freePort();
+	const std::string out = dir.file("live"), replay = dir.file("replay");
+	const std::string prefix = dir.file("emu");
+	const CommandResult r = runCommand(emulatorCommand(prefix, laser, odo) + "sleep 0.5; " +
+		shellQuote(kLive) + " " + liveArgs(laser, odo) + " --duration 4 --out " + shellQuote(out) +
+		" --set Evaluation:ground_truth=" + shellQuote(prefix + ".served.gt.txt") +
+		"; code=$?; kill -TERM $emu; wait $emu; echo exit=$code");
+	ASSERT_NE(r.output.find("exit=0"), std::string::npos) << r.output;
+
+	const auto s = readJson(out + "/summary.json");
+	EXPECT_EQ(s["status"], "ok");
+	EXPECT_EQ(s["live"]["stopped_by"], "--duration reached");
+	const auto& lidar = s["live"]["sensors"][0];
+	const auto& base = s["live"]["sensors"][1];
+	EXPECT_EQ(lidar["driver"], "CHokuyoURG");
+	EXPECT_NEAR(lidar["rate_hz"].get<double>(), 40.0, 4.0);
+	EXPECT_NEAR(base["rate_hz"].get<double>(), 100.0, 10.0);
+	EXPECT_EQ(lidar["received"], lidar["passed_on"]);
+	EXPECT_EQ(s["live"]["late_observations"], 0);
+	// Against the emulator's truth: the office at 0.6 m/s, 4 s.
+	EXPECT_LT(s["evaluation"]["ate_m"]["rmse"].get<double>(), 0.05) << s.dump(1);
+
+	// Everything passed on is in live.rawlog, in order.
+	const Recorded rec = countRecorded(out + "/live.rawlog");
+	EXPECT_EQ(rec.scans, lidar["received"].get<size_t>());
+	EXPECT_EQ(rec.odometry, base["received"].get<size_t>());
+	EXPECT_EQ(s["counts"]["scans"].get<size_t>(), rec.scans);
+
+	// featloc-run replays the recording, with the live config as it is, to
+	// the same poses.
+	const CommandResult rr = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
+		shellQuote(out + "/live.rawlog") + " -q --out " + shellQuote(replay));
+	ASSERT_EQ(rr.exitCode, 0) << rr.output;
+	const auto a = poseRows(out + "/trajectory.tum"), b = poseRows(replay + "/trajectory.tum");
+	ASSERT_FALSE(a.empty());
+	EXPECT_EQ(a, b);
+}
+
+TEST(Live, CtrlCPassesOnAndRecordsEveryObservationReceived)
+{
+	TempDir dir;
+	const unsigned short laser = freePort(), odo = freePort();
+	const std::string out = dir.file("live"), prefix = dir.file("emu");
+	// The emulator stops first (it reports what it delivered), then
+	// featloc-live gets Ctrl-C: all of it must be in live.rawlog.
+	const CommandResult r = runCommand(emulatorCommand(prefix, laser, odo) + "sleep 0.5; " +
+		shellQuote(kLive) + " " + liveArgs(laser, odo) + " --out " + shellQuote(out) +
+		" > /dev/null 2>&1 & live=$!; sleep 4; kill -TERM $emu; wait $emu; sleep 0.5; "
+		"kill -INT $live; wait $live; echo exit=$?; cat " + shellQuote(prefix + ".out"));
+	ASSERT_NE(r.output.find("exit=0"), std::string::npos) << r.output;
+	std::smatch m;
+	const std::string text = r.output;
+	ASSERT_TRUE(std::regex_search(text, m,
+		std::regex("(\\d+) of \\d+ scans delivered, (\\d+) of \\d+ odometry readings delivered")))
+		<< r.output;
+	const size_t scansSent = std::stoul(m[1]), readingsSent = std::stoul(m[2]);
+	EXPECT_GT(scansSent, 100u);
+	const Recorded rec = countRecorded(out + "/live.rawlog");
+	const Recorded late = countRecorded(out + "/live-late.rawlog");
+	EXPECT_EQ(rec.scans + late.scans, scansSent);
+	EXPECT_EQ(rec.odometry + late.odometry, readingsSent);
+	EXPECT_EQ(readJson(out + "/summary.json")["live"]["stopped_by"], "Ctrl-C / SIGTERM");
+}
+
+TEST(Live, ADeviceThatNeverAnswersIsAnErrorNamingItsSectionAndAddress)
+{
+	TempDir dir;
+	const unsigned short port = freePort();
+	ScipLaserServer silent({}, port, ScipLaserServer::Fault::Silent);
+	const auto t0 = std::chrono::steady_clock::now();
+	const CommandResult r = runCommand(shellQuote(kLive) + " " + liveArgs(port, freePort()) +
+		" --set Live:sensors=LASER --set Live:startup_timeout=2 --out " +
+		shellQuote(dir.file("out")));
+	const double secs =
+		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	EXPECT_EQ(r.exitCode, 1) << r.output;
+	EXPECT_LT(secs, 15.0);
+	for (const std::string& s : {std::string("[LASER] driver CHokuyoURG"),
+			 "PORT_DIR=" + std::to_string(port), std::string("IP_DIR=127.0.0.1"),
+			 std::string("startup_timeout")})
+		EXPECT_NE(r.output.find(s), std::string::npos) << s << "\n" << r.output;
+	EXPECT_FALSE(fs::exists(dir.file("out")));	// a failed start writes nothing
+}
+
+TEST(Live, NothingListeningIsAnErrorWithTheDriversReason)
+{
+	TempDir dir;
+	const unsigned short port = freePort();
+	const CommandResult r = runCommand(shellQuote(kLive) + " " + liveArgs(freePort(), port) +
+		" --set Live:sensors=ODOMETRY --set Live:startup_timeout=2 --out " +
+		shellQuote(dir.file("out")));
+	EXPECT_EQ(r.exitCode, 1) << r.output;
+	EXPECT_NE(r.output.find("[ODOMETRY] driver TcpOdometrySensor"), std::string::npos) << r.output;
+	EXPECT_NE(r.output.find("port=" + std::to_string(port)), std::string::npos) << r.output;
+	EXPECT_NE(r.output.find("Connection refused"), std::string::npos) << r.output;
+	EXPECT_FALSE(fs::exists(dir.file("out")));
+}
+
+TEST(Live, AnUnknownDriverOrKeyIsAConfigError)
+{
+	TempDir dir;
+	CommandResult r = runCommand(shellQuote(kLive) + " " + liveArgs(1, 2) +
+		" --set LASER:driver=CHokuyoURGX --out " + shellQuote(dir.file("out")));
+	EXPECT_EQ(r.exitCode, 2) << r.output;
+	EXPECT_NE(r.output.find("driver = CHokuyoURGX: not an MRPT sensor driver"), std::string::npos)
+		<< r.output;
+	r = runCommand(shellQuote(kLive) + " " + liveArgs(1, 2) + " --set ODOMETRY:prot=1 --out " +
+		shellQuote(dir.file("out")));
+	EXPECT_EQ(r.exitCode, 2) << r.output;
+	EXPECT_NE(r.output.find("prot"), std::string::npos) << r.output;
+	EXPECT_FALSE(fs::exists(dir.file("out")));
+}
