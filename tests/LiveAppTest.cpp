@@ -21,8 +21,10 @@
 #include "featloc/core/InputError.h"
 #include "featloc/io/OdometryLine.h"
 #include "featloc/io/RawlogReader.h"
+#include "featloc/live/LiveOptions.h"
 #include "featloc/sim/ScipLaserServer.h"
 #include "support/CommandRunner.h"
+#include "support/DocumentedKeys.h"
 #include "support/TempDir.h"
 
 using namespace featloc;
@@ -290,4 +292,15 @@ TEST(Live, AnUnknownDriverOrKeyIsAConfigError)
 	EXPECT_EQ(r.exitCode, 2) << r.output;
 	EXPECT_NE(r.output.find("prot"), std::string::npos) << r.output;
 	EXPECT_FALSE(fs::exists(dir.file("out")));
+}
+
+TEST(Live, EveryLiveKeyIsInTheConfigReferenceDoc)
+{
+	featloc::test::expectEveryKeyDocumented(
+		std::string(FEATLOC_SOURCE_DIR) + "/doc/config-reference.md",
+		[](mrpt::config::CConfigFileBase& c) {
+			LiveOptions live;
+			live.sensors = {"LASER"};
+			live.saveToConfigFile(c, LiveOptions::kSection);
+		});
 }
