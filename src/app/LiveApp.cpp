@@ -30,27 +30,6 @@ namespace
 constexpr const char* kRecording = "live.rawlog";
 constexpr const char* kLateRecording = "live-late.rawlog";
 
-/** The ground truth, read after the run (a live emulator writes it while
- * the run goes). */
-std::optional<RunReport::Reference> loadReference(const TrackedConfig& cfg, const RunConfiguration& rc)
-{
-	if (rc.evaluation.ground_truth.empty()) return std::nullopt;
-	const std::string path =
-		cfg.resolvePath(EvaluationOptions::kSection, "ground_truth", rc.evaluation.ground_truth);
-	TrajectoryFile::Format format = TrajectoryFile::Format::Auto;
-	RunReport::Reference r;
-	try
-	{
-		r.trajectory = TrajectoryFile::read(path, format, &format);
-	}
-	catch (const InputError& e)
-	{
-		throw InputError(std::string("[Evaluation] ground_truth: ") + e.what());
-	}
-	r.description = path + " (" + TrajectoryFile::formatDescription(format) + ")";
-	return r;
-}
-
 std::string liveJson(const LiveSource& source, const std::vector<double>& latencies)
 {
 	nlohmann::json j;
@@ -185,7 +164,11 @@ int LiveApp::main(int argc, char** argv)
 		RunReport::printSummary(stats);
 		outputs.summary->addMember("live", liveJson(source, status.latencies()));
 		outputs.summary->finish(stats);
-		RunReport::evaluateAndPlot(rc, loadReference(cfg, rc), folder, stats, *outputs.summary);
+		// The ground truth is read after the run: the emulator writes it
+		// while the run goes.
+		std::optional<RunReport::Reference> reference;
+		if (!rc.evaluation.ground_truth.empty()) reference = RunReport::readGroundTruth(cfg, rc);
+		RunReport::evaluateAndPlot(rc, reference, folder, stats, *outputs.summary);
 	}
 	catch (...)
 	{

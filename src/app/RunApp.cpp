@@ -69,22 +69,7 @@ std::optional<RunReport::Reference> loadReference(
 	const bool gtFromCommandLine =
 		cfg.origin(EvaluationOptions::kSection, "ground_truth").rfind("--set", 0) == 0;
 	if (!gt.empty() && (!inputOnCommandLine || gtFromCommandLine))
-	{
-		const std::string path =
-			cfg.resolvePath(EvaluationOptions::kSection, "ground_truth", gt);
-		TrajectoryFile::Format format = TrajectoryFile::Format::Auto;
-		RunReport::Reference r;
-		try
-		{
-			r.trajectory = TrajectoryFile::read(path, format, &format);
-		}
-		catch (const InputError& e)
-		{
-			throw InputError(std::string("[Evaluation] ground_truth: ") + e.what());
-		}
-		r.description = path + " (" + TrajectoryFile::formatDescription(format) + ")";
-		return r;
-	}
+		return RunReport::readGroundTruth(cfg, rc);
 	if (!gt.empty())
 		std::printf(
 			"not evaluated against [Evaluation] ground_truth: it belongs to the ini's "

@@ -6,6 +6,7 @@
 
 #include "featloc/app/RunConfiguration.h"
 #include "featloc/config/TrackedConfig.h"
+#include "featloc/core/InputError.h"
 #include "featloc/eval/ErrorStats.h"
 #include "featloc/eval/TrajectoryEvaluator.h"
 #include "featloc/eval/TrajectoryPlot.h"
@@ -14,6 +15,24 @@
 
 namespace featloc
 {
+RunReport::Reference RunReport::readGroundTruth(const TrackedConfig& cfg, const RunConfiguration& rc)
+{
+	const std::string path = cfg.resolvePath(
+		EvaluationOptions::kSection, "ground_truth", rc.evaluation.ground_truth);
+	TrajectoryFile::Format format = TrajectoryFile::Format::Auto;
+	Reference r;
+	try
+	{
+		r.trajectory = TrajectoryFile::read(path, format, &format);
+	}
+	catch (const InputError& e)
+	{
+		throw InputError(std::string("[Evaluation] ground_truth: ") + e.what());
+	}
+	r.description = path + " (" + TrajectoryFile::formatDescription(format) + ")";
+	return r;
+}
+
 void RunReport::writeUsedConfig(const TrackedConfig& cfg, const std::string& path)
 {
 	std::ofstream f(path);

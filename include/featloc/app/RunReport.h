@@ -25,6 +25,10 @@ class RunReport
 		std::string description;
 	};
 
+	/** The trajectory named by [Evaluation] ground_truth (not empty), read
+	 * whole; InputError naming the key when it cannot be read. */
+	static Reference readGroundTruth(const TrackedConfig& cfg, const RunConfiguration& rc);
+
 	static void printSummary(const RunStats& s);
 
 	/** The evaluation against the reference (summary.json, nees.txt) and
