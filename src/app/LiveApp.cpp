@@ -14,7 +14,6 @@
 #include "featloc/app/RunReport.h"
 #include "featloc/app/UsageError.h"
 #include "featloc/config/TrackedConfig.h"
-#include "featloc/core/InputError.h"
 #include "featloc/eval/ErrorStats.h"
 #include "featloc/live/LiveSource.h"
 #include "featloc/live/TcpOdometrySensor.h"

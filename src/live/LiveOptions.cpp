@@ -2,8 +2,6 @@
 
 #include <mrpt/system/string_utils.h>
 
-#include <sstream>
-
 #include "featloc/config/ConfigValues.h"
 
 namespace featloc
@@ -27,9 +25,7 @@ void LiveOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
 	using namespace featloc::config;
 	std::string list;
 	read(c, s, "sensors", list);
-	sensors.clear();
-	std::istringstream ss(list);
-	for (std::string name; ss >> name;) sensors.push_back(name);
+	mrpt::system::tokenize(list, " \t", sensors);
 	require(!sensors.empty(), c, s, "sensors",
 		"the sensor sections to run, e.g. 'LASER ODOMETRY' (each with a driver key)");
 	for (const auto& name : sensors)

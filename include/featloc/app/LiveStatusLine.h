@@ -11,8 +11,8 @@ class LiveSource;
 
 /** featloc-live's console while it runs: every `period` seconds one line
  * with the run time, the latest pose, each sensor's rate, the late
- * observations and the latency of the poses (from a scan's arrival from
- * its driver to its pose). Keeps every latency for the final report. */
+ * observations and the p95 latency of the period's poses (from a scan's
+ * arrival from its driver to its pose). Keeps every latency for the final report. */
 class LiveStatusLine : public RunOutput
 {
    public:
@@ -31,5 +31,6 @@ class LiveStatusLine : public RunOutput
 	std::FILE* m_out;
 	std::chrono::steady_clock::time_point m_lastLine;
 	std::vector<double> m_latencies;
+	size_t m_periodStart = 0;  //!< first latency of the current period
 };
 }  // namespace featloc
