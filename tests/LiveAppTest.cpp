@@ -234,9 +234,14 @@ TEST(Live, CtrlCPassesOnAndRecordsEveryObservationReceived)
 	std::smatch m;
 	const std::string text = r.output;
 	ASSERT_TRUE(std::regex_search(text, m,
-		std::regex("(\\d+) of \\d+ scans delivered, (\\d+) of \\d+ odometry readings delivered")))
+		std::regex("(\\d+) of \\d+ scans delivered \\((\\d+) of them skipped by the driver "
+				   "while it re-initialised the device\\), (\\d+) of \\d+ odometry readings "
+				   "delivered")))
 		<< r.output;
-	const size_t scansSent = std::stoul(m[1]), readingsSent = std::stoul(m[2]);
+	// CHokuyoURG re-runs its handshake inside initialize() and skips what the
+	// device sent before the QT echo: those scans never reach featloc-live.
+	const size_t scansSent = std::stoul(m[1]) - std::stoul(m[2]),
+				 readingsSent = std::stoul(m[3]);
 	EXPECT_GT(scansSent, 100u);
 	const Recorded rec = countRecorded(out + "/live.rawlog");
 	const Recorded late = countRecorded(out + "/live-late.rawlog");

@@ -66,10 +66,12 @@ void serve(const SimConfiguration& sc, const std::string& rawlog,
 	});
 	if (!quiet) progress.done(laser.scansSent());
 	std::printf(
-		"%s after %.1f s: %zu of %zu scans delivered, %zu of %zu odometry readings "
-		"delivered; %zu laser connections\n  truth: %s\n",
+		"%s after %.1f s: %zu of %zu scans delivered (%zu of them skipped by the driver "
+		"while it re-initialised the device), %zu of %zu odometry readings delivered; %zu "
+		"laser connections\n  truth: %s\n",
 		r.stopped ? "stopped" : "log served", r.seconds, r.scansDelivered, r.scans,
-		r.readingsDelivered, r.readings, laser.connections(), gtPath.c_str());
+		laser.scansDiscardedByReinit(), r.readingsDelivered, r.readings, laser.connections(),
+		gtPath.c_str());
 }
 }  // namespace
 

@@ -95,6 +95,7 @@ void ScipLaserServer::closeClient()
 	LoopbackTcpServer::close(m_client);
 	m_client = -1;
 	m_streaming = false;
+	m_sessionScans = m_quitScans = 0;
 }
 
 bool ScipLaserServer::send(const std::string& bytes)
@@ -159,6 +160,8 @@ void ScipLaserServer::handleCommand(const std::string& cmd)
 		return;	 // a bare LF: SCIP ignores it
 	else if (name == "QT")
 	{
+		if (m_streaming) m_quitScans = m_sessionScans;	// the driver sends QT twice
+		m_sessionScans = 0;
 		m_streaming = false;
 		send(reply(cmd, "00"));
 	}
@@ -190,6 +193,8 @@ void ScipLaserServer::handleCommand(const std::string& cmd)
 			return;
 		}
 		m_mdEcho = cmd;
+		m_scansDiscardedByReinit += m_quitScans;	// QT then MD: a re-initialisation
+		m_quitScans = m_sessionScans = 0;
 		if (send(reply(cmd, "00"))) m_streaming = true;
 	}
 	else
@@ -218,6 +223,7 @@ bool ScipLaserServer::publish(const std::vector<float>& ranges, uint32_t deviceT
 	for (size_t i = 0; i < data.size(); i += 64) body += dataLine(data.substr(i, 64));
 	if (!send(reply(m_mdEcho, "99", body))) return false;
 	m_scansSent++;
+	m_sessionScans++;
 	return true;
 }
 }  // namespace featloc

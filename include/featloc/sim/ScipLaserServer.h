@@ -24,7 +24,9 @@ namespace featloc
  * timestamp (device ms) and the ranges, 3 characters of 6 bits (+0x30,
  * mm), cut in lines of 64. `QT` stops streaming. MRPT 2.5.8 runs the whole
  * handshake twice (on connect and in initialize()), so commands are
- * accepted while streaming.
+ * accepted while streaming; the scans sent between the first MD and the
+ * second handshake's QT are skipped by the driver while it looks for the
+ * QT echo, so they are counted apart (scansDiscardedByReinit()).
  *
  * One driver at a time; a new connection replaces the old one. Faults for
  * tests: a device that accepts connections and never answers (Silent). */
@@ -67,6 +69,11 @@ class ScipLaserServer
 
 	unsigned short port() const { return m_port; }
 	size_t scansSent() const { return m_scansSent; }
+	/** Scans sent in a streaming session that the driver then ended with
+	 * QT and restarted with MD on the same connection (a re-initialisation):
+	 * the driver never reads them, since it skips everything before the QT
+	 * echo. */
+	size_t scansDiscardedByReinit() const { return m_scansDiscardedByReinit; }
 	size_t connections() const { return m_connections; }
 	bool streaming() const { return m_streaming; }
 	/** The link drops (as when a cable is pulled); the server keeps
@@ -83,7 +90,9 @@ class ScipLaserServer
 	unsigned short m_port;
 	Fault m_fault;
 	std::atomic<bool> m_stop{false}, m_streaming{false};
-	std::atomic<size_t> m_scansSent{0}, m_connections{0};
+	std::atomic<size_t> m_scansSent{0}, m_connections{0}, m_scansDiscardedByReinit{0};
+	size_t m_sessionScans = 0;	//!< sent since the last MD (under m_mutex)
+	size_t m_quitScans = 0;	 //!< sent in the session the last QT ended (under m_mutex)
 	std::mutex m_mutex;	 //!< guards m_client, m_mdEcho and writes
 	std::string m_mdEcho;  //!< the MD command being served
 	int m_client = -1;	//!< the driver's connection
