@@ -22,6 +22,7 @@
 #include "featloc/io/OdometryLine.h"
 #include "featloc/io/RawlogReader.h"
 #include "featloc/live/LiveOptions.h"
+#include "featloc/sim/DeviceFault.h"
 #include "featloc/sim/ScipLaserServer.h"
 #include "support/CommandRunner.h"
 #include "support/DocumentedKeys.h"
@@ -57,13 +58,14 @@ unsigned short freePort()
 
 /** featloc-sim --serve in the background (its pid in $emu): a UTM-30LX at
  * 40 Hz and odometry at 100 Hz driving the office world. */
-std::string emulatorCommand(const std::string& prefix, unsigned short laser, unsigned short odo)
+std::string emulatorCommand(const std::string& prefix, unsigned short laser, unsigned short odo,
+	const std::string& extra = "")
 {
 	return shellQuote(kSim) + " " + shellQuote(kWorld) + " --out " + shellQuote(prefix) +
 		" --serve -q --laser-port " + std::to_string(laser) + " --odometry-port " +
 		std::to_string(odo) +
 		" --set Laser:preset=hokuyo_utm30lx --set Laser:rate=40 --set Odometry:rate=100"
-		" --set Simulation:duration=40 > " +
+		" --set Simulation:duration=40 " + extra + " > " +
 		shellQuote(prefix + ".out") + " 2>&1 & emu=$!; ";
 }
 
@@ -103,6 +105,30 @@ Recorded countRecorded(const std::string& rawlog)
 		r.odometry += IS_CLASS(*e.object, mrpt::obs::CObservationOdometry);
 	}
 	return r;
+}
+/** What the emulator says it delivered (its last line): the scans the
+ * driver kept and the odometry readings. CHokuyoURG re-runs its handshake
+ * inside initialize() and skips what the device sent before the QT echo:
+ * those scans never reach featloc-live. */
+struct Delivered
+{
+	size_t scans = 0, odometry = 0;
+};
+Delivered emulatorDelivered(const std::string& emulatorOutput)
+{
+	std::smatch m;
+	if (!std::regex_search(emulatorOutput, m,
+			std::regex("(\\d+) of \\d+ scans delivered \\((\\d+) of them skipped by the "
+					   "driver while it re-initialised the device\\), (\\d+) of \\d+ odometry "
+					   "readings delivered")))
+		throw std::runtime_error("no delivery line in:\n" + emulatorOutput);
+	return {std::stoul(m[1]) - std::stoul(m[2]), std::stoul(m[3])};
+}
+
+std::string readText(const std::string& file)
+{
+	std::ifstream f(file);
+	return std::string(std::istreambuf_iterator<char>(f), {});
 }
 }  // namespace
 
@@ -231,23 +257,87 @@ TEST(Live, CtrlCPassesOnAndRecordsEveryObservationReceived)
 		" > /dev/null 2>&1 & live=$!; sleep 4; kill -TERM $emu; wait $emu; sleep 0.5; "
 		"kill -INT $live; wait $live; echo exit=$?; cat " + shellQuote(prefix + ".out"));
 	ASSERT_NE(r.output.find("exit=0"), std::string::npos) << r.output;
-	std::smatch m;
-	const std::string text = r.output;
-	ASSERT_TRUE(std::regex_search(text, m,
-		std::regex("(\\d+) of \\d+ scans delivered \\((\\d+) of them skipped by the driver "
-				   "while it re-initialised the device\\), (\\d+) of \\d+ odometry readings "
-				   "delivered")))
-		<< r.output;
-	// CHokuyoURG re-runs its handshake inside initialize() and skips what the
-	// device sent before the QT echo: those scans never reach featloc-live.
-	const size_t scansSent = std::stoul(m[1]) - std::stoul(m[2]),
-				 readingsSent = std::stoul(m[3]);
-	EXPECT_GT(scansSent, 100u);
+	const Delivered sent = emulatorDelivered(r.output);
+	EXPECT_GT(sent.scans, 100u);
 	const Recorded rec = countRecorded(out + "/live.rawlog");
 	const Recorded late = countRecorded(out + "/live-late.rawlog");
-	EXPECT_EQ(rec.scans + late.scans, scansSent);
-	EXPECT_EQ(rec.odometry + late.odometry, readingsSent);
+	EXPECT_EQ(rec.scans + late.scans, sent.scans);
+	EXPECT_EQ(rec.odometry + late.odometry, sent.odometry);
 	EXPECT_EQ(readJson(out + "/summary.json")["live"]["stopped_by"], "Ctrl-C / SIGTERM");
+}
+
+TEST(Live, DeviceFaultsMidRunAreReportedAndRecoveredWithNothingReceivedLost)
+{
+	TempDir dir;
+	const unsigned short laser = freePort(), odo = freePort();
+	const std::string out = dir.file("live"), prefix = dir.file("emu");
+	// The link drops for 1.5 s (connections refused), a malformed frame
+	// comes, then the device hangs with its link up for 3 s.
+	const CommandResult r = runCommand(
+		emulatorCommand(prefix, laser, odo,
+			"--laser-fault outage@2:1.5 --laser-fault garbage@5 --laser-fault stall@6:3") +
+		"sleep 0.5; " + shellQuote(kLive) + " " + liveArgs(laser, odo) +
+		" --set Live:restart_after_silence=1.5 --set Evaluation:ground_truth=" +
+		shellQuote(prefix + ".served.gt.txt") + " --out " + shellQuote(out) + " > " +
+		shellQuote(dir.file("live.txt")) + " 2>&1 & live=$!; sleep 12; kill -TERM $emu; "
+		"wait $emu; sleep 0.5; kill -INT $live; wait $live; echo exit=$?; cat " +
+		shellQuote(prefix + ".out"));
+	ASSERT_NE(r.output.find("exit=0"), std::string::npos) << r.output;
+	EXPECT_NE(r.output.find("3 faults injected"), std::string::npos) << r.output;
+	const std::string console = readText(dir.file("live.txt"));
+	// Nothing received is lost, before, between or after the faults.
+	const Delivered sent = emulatorDelivered(r.output);
+	const Recorded rec = countRecorded(out + "/live.rawlog");
+	const Recorded late = countRecorded(out + "/live-late.rawlog");
+	EXPECT_EQ(rec.scans + late.scans, sent.scans) << console;
+	EXPECT_EQ(rec.odometry + late.odometry, sent.odometry);
+	// Scans came back after the stall: before it (6 s at 40 Hz, 1.5 s of
+	// them out) the device could send at most 180.
+	EXPECT_GT(rec.scans, 200u) << console;
+	// Each fault is said as it happens: the silence, the driver's own
+	// words on the malformed frame, the restart of the hung device, and
+	// the return of the scans after the outage and after the stall.
+	for (const std::string& s :
+		 {std::string("[LASER] CHokuyoURG: no observation for 1 s"),
+			 std::string("Expected 3247 data bytes"),
+			 std::string("driver restarted: no observation for 1.5 s without an error")})
+		EXPECT_NE(console.find(s), std::string::npos) << s << "\n" << console;
+	std::vector<double> gaps;
+	const std::regex again("observations again after ([0-9.]+) s");
+	for (auto it = std::sregex_iterator(console.begin(), console.end(), again);
+		 it != std::sregex_iterator(); ++it)
+		gaps.push_back(std::stod((*it)[1]));
+	ASSERT_EQ(gaps.size(), 2u) << console;
+	EXPECT_GT(gaps[0], 1.4);  // the outage
+	EXPECT_GT(gaps[1], 2.9);  // the stall
+	const auto summary = readJson(out + "/summary.json");
+	const auto& laserReport = summary["live"]["sensors"][0];
+	EXPECT_EQ(laserReport["section"], "LASER");
+	EXPECT_GE(laserReport["restarts"].get<int>(), 2);
+	EXPECT_GE(laserReport["driver_errors"].get<int>(), 1);
+	EXPECT_NEAR(laserReport["longest_gap_s"].get<double>(), gaps[1], 0.06);	// said to 0.1 s
+	// The pose is tracked through it all (odometry bridges the gaps).
+	EXPECT_LT(summary["evaluation"]["ate_m"]["rmse"].get<double>(), 0.05)
+		<< summary.dump(1);
+}
+
+TEST(DeviceFault, ParsesTheDocumentedFormsAndRejectsOthers)
+{
+	const DeviceFault outage = DeviceFault::parse("outage@2:1.5");
+	EXPECT_EQ(outage.kind, DeviceFault::Kind::Outage);
+	EXPECT_DOUBLE_EQ(outage.at, 2.0);
+	EXPECT_DOUBLE_EQ(outage.duration, 1.5);
+	EXPECT_EQ(DeviceFault::parse("stall@6:3").kind, DeviceFault::Kind::Stall);
+	EXPECT_EQ(DeviceFault::parse("garbage@5").kind, DeviceFault::Kind::Garbage);
+	for (const char* bad : {"outage@2", "garbage", "flood@1", "stall@x:1", "outage@-1:2",
+			 "garbage@nan", "outage@1:2s"})
+		EXPECT_THROW(DeviceFault::parse(bad), std::invalid_argument) << bad;
+	// On the command line: a usage error (exit 2) naming the option.
+	const CommandResult r = runCommand(shellQuote(kSim) + " " + shellQuote(kWorld) +
+		" --out /tmp/featloc-unused --serve --laser-fault flood@1");
+	EXPECT_EQ(r.exitCode, 2) << r.output;
+	EXPECT_NE(r.output.find("--laser-fault 'flood@1': unknown fault"), std::string::npos)
+		<< r.output;
 }
 
 TEST(Live, ADeviceThatNeverAnswersIsAnErrorNamingItsSectionAndAddress)

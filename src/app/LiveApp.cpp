@@ -38,7 +38,10 @@ std::string liveJson(const LiveSource& source, const std::vector<double>& latenc
 	for (const auto& s : source.report())
 		j["sensors"].push_back({{"section", s.section}, {"driver", s.driver},
 			{"received", s.received}, {"passed_on", s.passedOn}, {"late", s.late},
-			{"restarts", s.failures}, {"rate_hz", s.rate}, {"last_error", s.lastError}});
+			{"restarts", s.failures}, {"rate_hz", s.rate}, {"last_error", s.lastError},
+			{"driver_errors", s.driverErrors}, {"last_driver_error", s.lastDriverError},
+			{"longest_gap_s", s.longestGap}, {"longest_gap_start_s", s.longestGapStart},
+			{"stuck_drivers_left_behind", s.stuckDrivers}});
 	const ErrorStats l = ErrorStats::of(latencies);
 	j["pose_latency_s"] = {
 		{"count", l.count}, {"median", l.median}, {"p95", l.p95}, {"max", l.max}};
@@ -53,8 +56,14 @@ void printLiveReport(const LiveSource& source, const std::vector<double>& latenc
 	{
 		std::printf("  [%s] %s: %zu observations (%.1f Hz), %zu passed on, %zu late",
 			s.section.c_str(), s.driver.c_str(), s.received, s.rate, s.passedOn, s.late);
+		std::printf(", longest gap %.2f s (at %.1f s)", s.longestGap, s.longestGapStart);
 		if (s.failures)
 			std::printf(", %zu driver restarts (last: %s)", s.failures, s.lastError.c_str());
+		if (s.stuckDrivers)
+			std::printf(", %zu driver threads left behind stuck in a call", s.stuckDrivers);
+		if (s.driverErrors)
+			std::printf(", %zu errors logged by the driver (last: %s)", s.driverErrors,
+				s.lastDriverError.c_str());
 		std::printf("\n");
 	}
 	if (!latencies.empty())
@@ -139,6 +148,10 @@ int LiveApp::main(int argc, char** argv)
 	std::printf("starting the drivers (each must answer within %.0f s)...\n",
 		liveOptions.startup_timeout);
 	std::fflush(stdout);
+	// A device falling silent is a warning: said even with -q.
+	source.setNotice([](const std::string& notice) {
+		std::fprintf(stderr, "featloc-live: %s\n", notice.c_str());
+	});
 	source.start();	 // throws for a silent device: the old results stay
 	if (signals.requested())
 	{

@@ -18,6 +18,7 @@
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/pipeline/ProgressBar.h"
 #include "featloc/registerClasses.h"
+#include "featloc/sim/DeviceFault.h"
 #include "featloc/sim/SimConfiguration.h"
 #include "featloc/sim/OdometryLineServer.h"
 #include "featloc/sim/RealTimeLogPlayer.h"
@@ -36,11 +37,19 @@ unsigned short tcpPort(unsigned value, const char* option)
 	return static_cast<unsigned short>(value);
 }
 
+/** What --serve is told on the command line. */
+struct ServeOptions
+{
+	unsigned laserPort = 10940, odometryPort = 10950;
+	std::vector<DeviceFault> laserFaults;
+};
+
 /** --serve: the simulated log, in real time, through emulated devices. */
 void serve(const SimConfiguration& sc, const std::string& rawlog,
 	const std::vector<mrpt::poses::CPose2D>& truths, const std::string& gtPath,
-	unsigned laserPort, unsigned odometryPort, bool quiet)
+	const ServeOptions& options, bool quiet)
 {
+	const unsigned laserPort = options.laserPort, odometryPort = options.odometryPort;
 	// A driver that hangs up must not kill the emulator (SIGPIPE).
 	std::signal(SIGPIPE, SIG_IGN);
 	const auto items = RealTimeLogPlayer::load(rawlog, truths);
@@ -60,6 +69,9 @@ void serve(const SimConfiguration& sc, const std::string& rawlog,
 	std::fflush(stdout);
 	InterruptSignals signals;
 	RealTimeLogPlayer player(laser, odometry.get(), gtPath);
+	player.setLaserFaults(options.laserFaults);
+	for (const auto& f : options.laserFaults)
+		std::printf("  laser fault to inject: %s\n", f.describe().c_str());
 	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
 	const auto r = player.play(items, &signals.flag(), [&](double f) {
 		if (!quiet) progress.update(f, laser.scansSent());
@@ -68,10 +80,10 @@ void serve(const SimConfiguration& sc, const std::string& rawlog,
 	std::printf(
 		"%s after %.1f s: %zu of %zu scans delivered (%zu of them skipped by the driver "
 		"while it re-initialised the device), %zu of %zu odometry readings delivered; %zu "
-		"laser connections\n  truth: %s\n",
+		"laser connections, %zu faults injected\n  truth: %s\n",
 		r.stopped ? "stopped" : "log served", r.seconds, r.scansDelivered, r.scans,
 		laser.scansDiscardedByReinit(), r.readingsDelivered, r.readings, laser.connections(),
-		gtPath.c_str());
+		r.faultsInjected, gtPath.c_str());
 }
 }  // namespace
 
@@ -105,6 +117,11 @@ int SimApp::main(int argc, char** argv)
 	TCLAP::ValueArg<unsigned> argOdometryPort("", "odometry-port",
 		"--serve: the odometry's TCP port (0: a robot without odometry)", false, 10950,
 		"PORT", cmd);
+	TCLAP::MultiArg<std::string> argLaserFault("", "laser-fault",
+		"--serve: inject a laser fault at a time of the log [s]: outage@T:D (the link "
+		"drops and connections are refused for D s), stall@T:D (link up, the device "
+		"sends and answers nothing for D s) or garbage@T (a malformed scan); repeatable",
+		false, "FAULT", cmd);
 	ConfigCommandLine config(cmd, "Laser:preset=hokuyo_utm30lx",
 		"the settings sections with every key, default and unit");
 	int exitCode = 0;
@@ -118,6 +135,23 @@ int SimApp::main(int argc, char** argv)
 		return 0;
 	if (argWorld.getValue().empty()) throw UsageError("missing WORLD (the world file)");
 	if (!argOut.isSet()) throw UsageError("missing --out PREFIX");
+
+	ServeOptions serveOptions;
+	serveOptions.laserPort = argLaserPort.getValue();
+	serveOptions.odometryPort = argOdometryPort.getValue();
+	for (const auto& spec : argLaserFault.getValue())
+	{
+		try
+		{
+			serveOptions.laserFaults.push_back(DeviceFault::parse(spec));
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw UsageError(std::string("--laser-fault ") + e.what());
+		}
+	}
+	if (!serveOptions.laserFaults.empty() && !argServe.getValue())
+		throw UsageError("--laser-fault needs --serve");
 
 	TrackedConfig cfg;
 	config.load(cfg, argWorld.getValue());
@@ -184,8 +218,7 @@ int SimApp::main(int argc, char** argv)
 			prefix.c_str(), prefix.c_str());
 	}
 	if (argServe.getValue())
-		serve(sc, rawlog, truths, prefix + ".served.gt.txt", argLaserPort.getValue(),
-			argOdometryPort.getValue(), config.quiet());
+		serve(sc, rawlog, truths, prefix + ".served.gt.txt", serveOptions, config.quiet());
 	return 0;
 }
 }  // namespace featloc

@@ -34,10 +34,14 @@ void LiveOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
 	read(c, s, "startup_timeout", startup_timeout);
 	read(c, s, "status_period", status_period);
 	read(c, s, "restart_pause", restart_pause);
+	read(c, s, "restart_after_silence", restart_after_silence);
+	read(c, s, "driver_stuck_timeout", driver_stuck_timeout);
 	require(max_wait >= 0, c, s, "max_wait", ">= 0");
 	require(startup_timeout > 0, c, s, "startup_timeout", "> 0");
 	require(status_period >= 0, c, s, "status_period", ">= 0");
 	require(restart_pause >= 0, c, s, "restart_pause", ">= 0");
+	require(restart_after_silence >= 0, c, s, "restart_after_silence", ">= 0 (0: never)");
+	require(driver_stuck_timeout > 0, c, s, "driver_stuck_timeout", "> 0");
 }
 
 void LiveOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -55,5 +59,9 @@ void LiveOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::
 	write(c, s, "status_period", status_period, "[s] console status line period (0: none)");
 	write(c, s, "restart_pause", restart_pause,
 		"[s] pause before a failed driver is restarted");
+	write(c, s, "restart_after_silence", restart_after_silence,
+		"[s] a driver silent this long after delivering is restarted (0: never)");
+	write(c, s, "driver_stuck_timeout", driver_stuck_timeout,
+		"[s] a driver call lasting this long is stuck: left behind, a new driver started");
 }
 }  // namespace featloc

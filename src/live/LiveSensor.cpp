@@ -3,12 +3,16 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/hwdrivers/CGenericSensor.h>
 #include <mrpt/obs/CObservation.h>
+#include <mrpt/system/COutputLogger.h>
+
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/ConfigError.h"
+#include "featloc/live/DeadConnectionRescue.h"
 
 namespace featloc
 {
@@ -44,25 +48,210 @@ std::string addressKeys(const mrpt::config::CConfigFileBase& cfg, const std::str
 	}
 	return out.empty() ? "no address key" : out;
 }
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point t)
+{
+	return std::chrono::duration<double>(Clock::now() - t).count();
+}
 }  // namespace
 
+/** What the sensor reports, shared by its successive driver threads (a
+ * thread left behind keeps its reference: nothing it touches is freed). */
+struct LiveSensor::Board
+{
+	mutable std::mutex mutex;
+	Status status;
+	Clock::time_point firstDelivery, lastDelivery, lastRestart;
+
+	void delivered(Clock::time_point when)
+	{
+		std::lock_guard<std::mutex> lock(mutex);
+		if (!status.delivered) firstDelivery = lastDelivery = when;
+		const double gap = std::chrono::duration<double>(when - lastDelivery).count();
+		if (gap > status.longestGap)
+		{
+			status.longestGap = gap;
+			status.longestGapStart =
+				std::chrono::duration<double>(lastDelivery - firstDelivery).count();
+		}
+		lastDelivery = when;
+		status.received++;
+		status.delivered = true;
+	}
+	void failed(const std::string& why)
+	{
+		std::lock_guard<std::mutex> lock(mutex);
+		status.failures++;
+		status.lastError = why;
+		lastRestart = Clock::now();
+	}
+	/** [s] since the last observation or restart; 0 before the first one
+	 * (the start has its own timeout). */
+	double silentFor() const
+	{
+		std::lock_guard<std::mutex> lock(mutex);
+		if (!status.delivered) return 0;
+		return secondsSince(std::max(lastDelivery, lastRestart));
+	}
+};
+
+/** One driver thread's state: everything it touches, owned with it. */
+struct LiveSensor::Worker
+{
+	std::string section, driverName;
+	size_t index = 0;
+	double restartPause = 0, restartAfterSilence = 0;
+	std::shared_ptr<mrpt::config::CConfigFileMemory> config;
+	std::shared_ptr<Board> board;
+	Sink sink;
+	std::shared_ptr<mrpt::hwdrivers::CGenericSensor> driver;
+	std::atomic<bool> stop{false}, done{false};
+	/** steady-clock ticks when the current driver call began; 0: none. */
+	std::atomic<Clock::rep> callSince{0};
+	std::atomic<bool> inInitialize{false};
+	std::mutex deliverMutex;  //!< held while delivering
+	std::atomic<bool> abandoned{false};
+
+	/** The thread is left behind: it can deliver and report nothing more.
+	 * If it loops on send() to a dead device, it is freed to end. */
+	void abandon()
+	{
+		stop = true;
+		abandoned = true;
+		std::lock_guard<std::mutex> lock(deliverMutex);	 // no delivery in flight
+		DeadConnectionRescue::rescueAll();
+	}
+
+	std::shared_ptr<mrpt::hwdrivers::CGenericSensor> makeDriver(
+		const mrpt::config::CConfigFileBase& cfg) const
+	{
+		auto d = mrpt::hwdrivers::CGenericSensor::createSensorPtr(driverName);
+		if (!d)
+			throw ConfigError("[" + section + "] driver = " + driverName +
+				": not an MRPT sensor driver (e.g. CHokuyoURG, CLMS100Eth, CSickLaserSerial, "
+				"CCameraSensor, or featloc's TcpOdometrySensor; names are case-sensitive)");
+		// Drivers that log (C2DRangeFinderAbstract and others) report what
+		// they could not read and retry; count it, so the run's report says so.
+		if (auto* logger = dynamic_cast<mrpt::system::COutputLogger*>(d.get()))
+			logger->logRegisterCallback(
+				[b = board](std::string_view msg, mrpt::system::VerbosityLevel level,
+					std::string_view, mrpt::Clock::time_point) {
+					if (level < mrpt::system::LVL_ERROR) return;
+					std::string text(msg);
+					while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+						text.pop_back();
+					std::lock_guard<std::mutex> lock(b->mutex);
+					b->status.driverErrors++;
+					b->status.lastDriverError = text;
+				});
+		d->loadConfig(cfg, section);
+		return d;
+	}
+
+	/** Runs f as a driver call: stuckFor() sees how long it lasts. */
+	template <typename F>
+	void call(F&& f)
+	{
+		callSince = Clock::now().time_since_epoch().count();
+		try
+		{
+			f();
+		}
+		catch (...)
+		{
+			callSince = 0;
+			throw;
+		}
+		callSince = 0;
+	}
+
+	bool deliver(const std::shared_ptr<mrpt::obs::CObservation>& obs)
+	{
+		std::lock_guard<std::mutex> lock(deliverMutex);
+		if (abandoned) return false;
+		const auto now = Clock::now();
+		sink({index, obs, now});
+		board->delivered(now);
+		return true;
+	}
+
+	void run()
+	{
+		bool initialized = false;
+		while (!stop)
+		{
+			try
+			{
+				if (!driver) driver = makeDriver(*config);
+				if (!initialized)
+				{
+					inInitialize = true;
+					call([&] { driver->initialize(); });
+					inInitialize = false;
+					initialized = true;
+				}
+				call([&] { driver->doProcess(); });
+				const auto objects = driver->getObservations();
+				for (const auto& [t, object] : objects)
+					if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object))
+						if (!deliver(obs)) return;	// left behind
+				if (objects.empty())
+				{
+					std::this_thread::sleep_for(std::chrono::milliseconds(1));
+					if (restartAfterSilence > 0 && board->silentFor() > restartAfterSilence)
+					{
+						char why[96];
+						std::snprintf(why, sizeof(why),
+							"no observation for %.1f s without an error ([Live] "
+							"restart_after_silence)",
+							restartAfterSilence);
+						throw std::runtime_error(why);
+					}
+				}
+			}
+			catch (const std::exception& e)
+			{
+				inInitialize = false;
+				if (abandoned) break;
+				board->failed(driverMessage(e));
+				call([&] { driver.reset(); });	// may block in the driver too
+				initialized = false;
+				const auto until = Clock::now() +
+					std::chrono::duration_cast<Clock::duration>(
+						std::chrono::duration<double>(restartPause));
+				while (!stop && Clock::now() < until)
+					std::this_thread::sleep_for(std::chrono::milliseconds(10));
+			}
+		}
+		// The driver's destructor switches the device off.
+		call([&] { driver.reset(); });
+	}
+};
+
 LiveSensor::LiveSensor(const TrackedConfig& cfg, std::string section, size_t index,
-	double restartPause, Sink sink)
+	double restartPause, double restartAfterSilence, Sink sink)
 	: m_section(std::move(section)),
 	  m_index(index),
 	  m_restartPause(restartPause),
+	  m_restartAfterSilence(restartAfterSilence),
 	  m_sink(std::move(sink)),
-	  m_config(std::make_unique<mrpt::config::CConfigFileMemory>(cfg.content()))
+	  m_config(std::make_shared<mrpt::config::CConfigFileMemory>(cfg.content())),
+	  m_board(std::make_shared<Board>())
 {
 	m_driverName = cfg.read_string(m_section, "driver", "");
 	const std::string where = cfg.sourceName() + ": [" + m_section + "]";
 	if (m_driverName.empty())
 		throw ConfigError(where + ": no 'driver' key (e.g. driver = CHokuyoURG)");
 	m_address = addressKeys(*m_config, m_section);
+	Worker probe;
+	probe.section = m_section;
+	probe.driverName = m_driverName;
+	probe.board = m_board;
 	try
 	{
 		// Through the tracked config: the keys the driver reads are known.
-		m_driver = makeDriver(cfg);
+		m_firstDriver = probe.makeDriver(cfg);
 	}
 	catch (const ConfigError&)
 	{
@@ -74,80 +263,92 @@ LiveSensor::LiveSensor(const TrackedConfig& cfg, std::string section, size_t ind
 	}
 }
 
-LiveSensor::~LiveSensor() { stop(); }
+LiveSensor::~LiveSensor() { stop(0); }
 
-std::shared_ptr<mrpt::hwdrivers::CGenericSensor> LiveSensor::makeDriver(
-	const mrpt::config::CConfigFileBase& cfg) const
+void LiveSensor::launch(std::shared_ptr<mrpt::hwdrivers::CGenericSensor> driver)
 {
-	auto driver = mrpt::hwdrivers::CGenericSensor::createSensorPtr(m_driverName);
-	if (!driver)
-		throw ConfigError("[" + m_section + "] driver = " + m_driverName +
-			": not an MRPT sensor driver (e.g. CHokuyoURG, CLMS100Eth, CSickLaserSerial, "
-			"CCameraSensor, or featloc's TcpOdometrySensor; names are case-sensitive)");
-	driver->loadConfig(cfg, m_section);
-	return driver;
+	auto w = std::make_shared<Worker>();
+	w->section = m_section;
+	w->driverName = m_driverName;
+	w->index = m_index;
+	w->restartPause = m_restartPause;
+	w->restartAfterSilence = m_restartAfterSilence;
+	w->config = m_config;
+	w->board = m_board;
+	w->sink = m_sink;
+	w->driver = std::move(driver);
+	m_worker = w;
+	m_thread = std::thread([w] {
+		w->run();
+		w->done = true;
+	});
 }
 
 void LiveSensor::start()
 {
-	m_startedAt = std::chrono::steady_clock::now();
-	m_thread = std::thread([this] { run(); });
+	m_startedAt = Clock::now();
+	launch(std::move(m_firstDriver));
 }
 
-void LiveSensor::stop()
+bool LiveSensor::stop(double timeout)
 {
-	m_stop = true;
-	if (m_thread.joinable()) m_thread.join();
+	if (!m_worker) return true;
+	m_worker->stop = true;
+	const auto until = Clock::now() +
+		std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout));
+	bool rescued = false;
+	while (!m_worker->done && Clock::now() < until)
+	{
+		std::this_thread::sleep_for(std::chrono::milliseconds(5));
+		if (!rescued && stuckFor() > 0.5)
+		{
+			DeadConnectionRescue::rescueAll();	// a write looping on a reset link
+			rescued = true;
+		}
+	}
+	bool joined = true;
+	if (m_worker->done)
+		m_thread.join();
+	else
+	{
+		// Still inside the driver: left behind, unable to deliver.
+		m_worker->abandon();
+		m_thread.detach();
+		std::lock_guard<std::mutex> lock(m_board->mutex);
+		m_board->status.stuckDrivers++;
+		joined = false;
+	}
+	m_worker.reset();
+	return joined;
+}
+
+double LiveSensor::stuckFor() const
+{
+	if (!m_worker) return 0;
+	const Clock::rep since = m_worker->callSince;
+	if (since == 0) return 0;
+	return secondsSince(Clock::time_point(Clock::duration(since)));
+}
+
+bool LiveSensor::initializing() const { return m_worker && m_worker->inInitialize; }
+
+void LiveSensor::replaceStuckDriver(const std::string& why)
+{
+	if (!m_worker) return;
+	m_worker->abandon();
+	m_thread.detach();
+	{
+		std::lock_guard<std::mutex> lock(m_board->mutex);
+		m_board->status.stuckDrivers++;
+	}
+	m_board->failed(why);
+	m_worker.reset();
+	launch(nullptr);  // a new driver, made and initialised by its thread
 }
 
 LiveSensor::Status LiveSensor::status() const
 {
-	std::lock_guard<std::mutex> lock(m_statusMutex);
-	return m_status;
-}
-
-void LiveSensor::run()
-{
-	bool initialized = false;
-	while (!m_stop)
-	{
-		try
-		{
-			if (!m_driver) m_driver = makeDriver(*m_config);
-			if (!initialized)
-			{
-				m_driver->initialize();
-				initialized = true;
-			}
-			m_driver->doProcess();
-			const auto objects = m_driver->getObservations();
-			for (const auto& [t, object] : objects)
-			{
-				auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object);
-				if (!obs) continue;
-				m_sink({m_index, obs, std::chrono::steady_clock::now()});
-				std::lock_guard<std::mutex> lock(m_statusMutex);
-				m_status.received++;
-				m_status.delivered = true;
-			}
-			if (objects.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-		}
-		catch (const std::exception& e)
-		{
-			{
-				std::lock_guard<std::mutex> lock(m_statusMutex);
-				m_status.failures++;
-				m_status.lastError = driverMessage(e);
-			}
-			m_driver.reset();
-			initialized = false;
-			const auto until = std::chrono::steady_clock::now() +
-				std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-					std::chrono::duration<double>(m_restartPause));
-			while (!m_stop && std::chrono::steady_clock::now() < until)
-				std::this_thread::sleep_for(std::chrono::milliseconds(10));
-		}
-	}
-	m_driver.reset();  // the driver's destructor switches the device off
+	std::lock_guard<std::mutex> lock(m_board->mutex);
+	return m_board->status;
 }
 }  // namespace featloc

@@ -7,6 +7,7 @@
 
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/InputError.h"
+#include "featloc/live/DeadConnectionRescue.h"
 
 namespace featloc
 {
@@ -22,6 +23,9 @@ double secondsBetween(Clock::time_point a, Clock::time_point b)
 constexpr size_t kRecentArrivals = 4096;
 // [s] added to a sensor's largest delay seen (scheduling jitter).
 constexpr double kDelayMargin = 0.003;
+// [s] a driver call this long gets its dead connections freed (a read
+// times out within 0.1 s in MRPT's TCP drivers).
+constexpr double kRescueAfter = 0.5;
 }  // namespace
 
 LiveSource::LiveSource(const TrackedConfig& cfg, const LiveOptions& options,
@@ -35,11 +39,15 @@ LiveSource::LiveSource(const TrackedConfig& cfg, const LiveOptions& options,
 {
 	for (size_t i = 0; i < m_options.sensors.size(); i++)
 		m_sensors.push_back(std::make_unique<LiveSensor>(cfg, m_options.sensors[i], i,
-			m_options.restart_pause, [this](LiveSensor::Arrival a) { onArrival(std::move(a)); }));
+			m_options.restart_pause, m_options.restart_after_silence, [this](LiveSensor::Arrival a) { onArrival(std::move(a)); }));
 	m_latest.resize(m_sensors.size());
 	m_maxDelay.resize(m_sensors.size());
 	m_passedOn.assign(m_sensors.size(), 0);
 	m_lateCount.assign(m_sensors.size(), 0);
+	m_lastArrival.resize(m_sensors.size());
+	m_silent.assign(m_sensors.size(), false);
+	m_restartsNoticed.assign(m_sensors.size(), 0);
+	m_lastNoticedError.resize(m_sensors.size());
 }
 
 LiveSource::~LiveSource() { stopSensors(); }
@@ -51,6 +59,16 @@ void LiveSource::onArrival(LiveSensor::Arrival a)
 	{
 		std::lock_guard<std::mutex> lock(m_mutex);
 		if (!m_firstArrival) m_firstArrival = a.arrival;
+		if (m_silent[a.sensor] && m_lastArrival[a.sensor])
+		{
+			char text[64];
+			std::snprintf(text, sizeof(text), ": observations again after %.1f s",
+				secondsBetween(*m_lastArrival[a.sensor], a.arrival));
+			m_notices.push_back("[" + m_sensors[a.sensor]->section() + "] " +
+				m_sensors[a.sensor]->driver() + text);
+		}
+		m_silent[a.sensor] = false;
+		m_lastArrival[a.sensor] = a.arrival;
 		auto& latest = m_latest[a.sensor];
 		if (!latest || t > *latest) latest = t;
 		auto& maxDelay = m_maxDelay[a.sensor];
@@ -78,12 +96,45 @@ void LiveSource::start()
 					s->address() + "): no observation within " +
 					std::to_string(static_cast<int>(m_options.startup_timeout)) +
 					" s of its start ([Live] startup_timeout)" +
-					(st.lastError.empty() ? ": the device does not answer"
-										  : "; the driver said: " + st.lastError));
+					(!st.lastError.empty()			 ? "; the driver said: " + st.lastError
+							: !st.lastDriverError.empty() ? "; the driver logged: " + st.lastDriverError
+														  : ": the device does not answer"));
 		}
 		if (all) return;
 		std::this_thread::sleep_for(std::chrono::milliseconds(10));
 	}
+}
+
+void LiveSource::giveNotices(Clock::time_point now)
+{
+	std::vector<std::string> notices;
+	{
+		std::lock_guard<std::mutex> lock(m_mutex);
+		for (size_t i = 0; i < m_sensors.size(); i++)
+		{
+			// A restart for a reason not said yet (the same reason over and
+			// over, e.g. a refused connection, is said once).
+			const auto st = m_sensors[i]->status();
+			if (st.failures > m_restartsNoticed[i] && st.lastError != m_lastNoticedError[i])
+			{
+				m_notices.push_back("[" + m_sensors[i]->section() + "] " +
+					m_sensors[i]->driver() + ": driver restarted: " + st.lastError);
+				m_lastNoticedError[i] = st.lastError;
+			}
+			m_restartsNoticed[i] = st.failures;
+			if (m_silent[i] || !m_lastArrival[i] ||
+				secondsBetween(*m_lastArrival[i], now) < kSilence)
+				continue;
+			m_silent[i] = true;
+			const std::string why = !st.lastDriverError.empty() ? st.lastDriverError : st.lastError;
+			m_notices.push_back("[" + m_sensors[i]->section() + "] " + m_sensors[i]->driver() +
+				": no observation for " + std::to_string(static_cast<int>(kSilence)) + " s" +
+				(why.empty() ? "" : " (the driver last said: " + why + ")"));
+		}
+		notices.swap(m_notices);
+	}
+	if (m_notice)
+		for (const auto& n : notices) m_notice(n);
 }
 
 bool LiveSource::releasable(const Pending& p, Clock::time_point now) const
@@ -118,9 +169,51 @@ bool LiveSource::stopping()
 
 void LiveSource::stopSensors()
 {
-	for (auto& s : m_sensors) s->stop();
+	for (auto& s : m_sensors)
+		if (!s->stop(m_options.driver_stuck_timeout))
+		{
+			std::lock_guard<std::mutex> lock(m_mutex);
+			m_notices.push_back(stuckNotice(*s, m_options.driver_stuck_timeout, " at stop"));
+		}
 	std::lock_guard<std::mutex> lock(m_mutex);
 	m_sensorsStopped = true;
+}
+
+std::string LiveSource::stuckNotice(const LiveSensor& s, double seconds, const std::string& when)
+{
+	char text[160];
+	std::snprintf(text, sizeof(text),
+		": driver stuck inside a call for %.1f s%s: its thread is left behind "
+		"([Live] driver_stuck_timeout)",
+		seconds, when.c_str());
+	return "[" + s.section() + "] " + s.driver() + text;
+}
+
+void LiveSource::replaceStuckDrivers()
+{
+	if (m_sensorsStopped) return;
+	const auto now = Clock::now();
+	for (auto& s : m_sensors)
+	{
+		// A call this long may be a write looping on a reset connection:
+		// free it first (DeadConnectionRescue), so the driver sees the
+		// closed link and recovers without being left behind.
+		if (!s->initializing() && s->stuckFor() > kRescueAfter &&
+			secondsBetween(m_lastRescue, now) > kRescueAfter)
+		{
+			DeadConnectionRescue::rescueAll();
+			m_lastRescue = now;
+		}
+		const double limit =
+			s->initializing() ? m_options.startup_timeout : m_options.driver_stuck_timeout;
+		const double stuck = s->stuckFor();
+		if (stuck < limit) continue;
+		const std::string notice = stuckNotice(*s, stuck, "") + ", a new driver started";
+		s->replaceStuckDriver("stuck inside a driver call for " +
+			std::to_string(static_cast<int>(limit)) + " s ([Live] driver_stuck_timeout)");
+		std::lock_guard<std::mutex> lock(m_mutex);
+		m_notices.push_back(notice);
+	}
 }
 
 bool LiveSource::next(RawlogEntry& entry)
@@ -130,6 +223,8 @@ bool LiveSource::next(RawlogEntry& entry)
 		// Stop the drivers first (outside the lock: their last
 		// observations still arrive), then pass on everything they sent.
 		if (!m_sensorsStopped && stopping()) stopSensors();
+		replaceStuckDrivers();	// outside the lock: a stuck driver may be delivering
+		giveNotices(Clock::now());
 		std::unique_lock<std::mutex> lock(m_mutex);
 		if (m_pending.empty())
 		{
@@ -200,6 +295,11 @@ std::vector<LiveSource::SensorReport> LiveSource::report() const
 		r.late = m_lateCount[i];
 		r.failures = st.failures;
 		r.lastError = st.lastError;
+		r.driverErrors = st.driverErrors;
+		r.lastDriverError = st.lastDriverError;
+		r.longestGap = st.longestGap;
+		r.stuckDrivers = st.stuckDrivers;
+		r.longestGapStart = st.longestGapStart;
 		r.rate = secs > 0 ? static_cast<double>(st.received) / secs : 0;
 		out.push_back(r);
 	}

@@ -90,6 +90,7 @@ RealTimeLogPlayer::Result RealTimeLogPlayer::play(
 	const double wall0 = mrpt::Clock::toDouble(mrpt::Clock::now());
 	const auto steady0 = std::chrono::steady_clock::now();
 	size_t k = 0;
+	std::vector<bool> begun(m_faults.size(), false), ended(m_faults.size(), false);
 	for (const Item& item : items)
 	{
 		if (stopped())
@@ -104,8 +105,37 @@ RealTimeLogPlayer::Result RealTimeLogPlayer::play(
 		if (item.isScan)
 		{
 			r.scans++;
-			const auto deviceMs = static_cast<uint32_t>((item.t - tFirst) * 1000.0 + 0.5);
-			if (m_laser.publish(item.ranges, deviceMs)) r.scansDelivered++;
+			const double rel = item.t - tFirst;
+			const auto deviceMs = static_cast<uint32_t>(rel * 1000.0 + 0.5);
+			bool garbage = false;
+			for (size_t f = 0; f < m_faults.size(); f++)
+			{
+				const DeviceFault& fault = m_faults[f];
+				if (!begun[f] && rel >= fault.at)
+				{
+					begun[f] = true;
+					r.faultsInjected++;
+					if (fault.kind == DeviceFault::Kind::Outage)
+						m_laser.setReachable(false);
+					else if (fault.kind == DeviceFault::Kind::Stall)
+						m_laser.setSilent(true);
+					else
+						garbage = true;
+				}
+				if (begun[f] && !ended[f] && fault.kind != DeviceFault::Kind::Garbage &&
+					rel >= fault.at + fault.duration)
+				{
+					ended[f] = true;
+					if (fault.kind == DeviceFault::Kind::Outage)
+						m_laser.setReachable(true);
+					else
+						m_laser.setSilent(false);
+				}
+			}
+			if (garbage)
+				m_laser.publishGarbage(deviceMs);
+			else if (m_laser.publish(item.ranges, deviceMs))
+				r.scansDelivered++;
 			gt << tumRow(wallT, item.truth) << std::flush;
 		}
 		else

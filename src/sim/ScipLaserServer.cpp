@@ -73,7 +73,10 @@ ScipLaserServer::Device ScipLaserServer::deviceFor(
 }
 
 ScipLaserServer::ScipLaserServer(Device device, unsigned short port, Fault fault)
-	: m_device(std::move(device)), m_port(port), m_fault(fault), m_listener(port)
+	: m_device(std::move(device)),
+	  m_port(port),
+	  m_silent(fault == Fault::Silent),
+	  m_listener(std::make_unique<LoopbackTcpServer>(port))
 {
 	m_thread = std::thread([this] { serve(); });
 }
@@ -84,10 +87,12 @@ ScipLaserServer::~ScipLaserServer()
 	if (m_thread.joinable()) m_thread.join();
 }
 
-void ScipLaserServer::dropConnection()
+void ScipLaserServer::setReachable(bool reachable)
 {
+	m_reachable = reachable;
+	if (reachable) return;
 	std::lock_guard<std::mutex> lock(m_mutex);
-	closeClient();
+	closeClient();	// now: nothing more is delivered (the listener follows)
 }
 
 void ScipLaserServer::closeClient()
@@ -116,9 +121,31 @@ void ScipLaserServer::serve()
 			std::lock_guard<std::mutex> lock(m_mutex);
 			connected = m_client >= 0;
 		}
+		if (!m_reachable)
+		{
+			std::lock_guard<std::mutex> lock(m_mutex);
+			closeClient();
+			m_listener.reset();	 // connections are refused
+		}
+		if (!m_listener)
+		{
+			if (m_reachable)
+			{
+				try
+				{
+					m_listener = std::make_unique<LoopbackTcpServer>(m_port);
+				}
+				catch (const std::runtime_error&)
+				{
+					// the port is not free again yet: retry
+				}
+			}
+			std::this_thread::sleep_for(std::chrono::milliseconds(10));
+			continue;
+		}
 		if (!connected)
 		{
-			const int client = m_listener.accept(50);
+			const int client = m_listener->accept(50);
 			if (client < 0) continue;
 			std::lock_guard<std::mutex> lock(m_mutex);
 			m_client = client;
@@ -143,7 +170,7 @@ void ScipLaserServer::serve()
 			std::string command = pending.substr(0, lf);
 			pending.erase(0, lf + 1);
 			if (!command.empty() && command.back() == '\r') command.pop_back();
-			if (m_fault != Fault::Silent) handleCommand(command);
+			if (!m_silent) handleCommand(command);
 		}
 		if (n == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
 	}
@@ -204,7 +231,7 @@ void ScipLaserServer::handleCommand(const std::string& cmd)
 bool ScipLaserServer::publish(const std::vector<float>& ranges, uint32_t deviceTimeMs)
 {
 	std::lock_guard<std::mutex> lock(m_mutex);
-	if (!m_streaming || m_client < 0) return false;
+	if (!m_streaming || m_client < 0 || m_silent) return false;
 	const size_t beams = static_cast<size_t>(m_device.amax - m_device.amin + 1);
 	if (ranges.size() != beams)
 		throw std::invalid_argument(
@@ -225,5 +252,15 @@ bool ScipLaserServer::publish(const std::vector<float>& ranges, uint32_t deviceT
 	m_scansSent++;
 	m_sessionScans++;
 	return true;
+}
+
+bool ScipLaserServer::publishGarbage(uint32_t deviceTimeMs)
+{
+	std::lock_guard<std::mutex> lock(m_mutex);
+	if (!m_streaming || m_client < 0) return false;
+	// A frame cut short: the timestamp and 17 ranges of 1081.
+	const std::string body =
+		dataLine(encode(deviceTimeMs & 0xFFFFFF, 4)) + dataLine(std::string(51, '0'));
+	return send(reply(m_mdEcho, "99", body));
 }
 }  // namespace featloc

@@ -30,6 +30,16 @@ struct LiveOptions : public mrpt::config::CLoadableOptions
 	/** [s] A driver whose exception ends doProcess() is restarted after
 	 * this pause (a device sending garbage, a dropped link). */
 	double restart_pause = 0.5;
+	/** [s] A driver that has delivered and then sends nothing this long,
+	 * without an error, is restarted too (a device that hangs with its
+	 * link up); 0: never. */
+	double restart_after_silence = 5;
+	/** [s] A driver call (doProcess, a driver's destruction) lasting this
+	 * long is stuck: its thread is left behind and a new driver started
+	 * (initialize() gets startup_timeout). MRPT 2.5.8's TCP drivers can
+	 * loop forever in CClientTCPSocket::writeAsync once a device has reset
+	 * the connection. At stop, drivers get this long to finish. */
+	double driver_stuck_timeout = 10;
 
 	/** Every section with a `driver` key: the sensors a configuration
 	 * describes, run or not. */

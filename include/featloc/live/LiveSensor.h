@@ -30,10 +30,33 @@ class TrackedConfig;
  *
  * A driver that throws (a device sending garbage, a link that drops) is
  * logged, destroyed and started again from its section after a pause, so
- * one bad device never stops the run; what it had delivered is kept. */
+ * one bad device never stops the run; what it had delivered is kept.
+ *
+ * A driver that never returns from a call is left behind: MRPT 2.5.8's
+ * CClientTCPSocket::writeAsync() loops forever once the device has reset
+ * the connection (select() says writable, send() fails, again), and
+ * CHokuyoURG writes its commands with it. Such a thread cannot be stopped
+ * or killed, so replaceStuckDriver() and stop() detach it (it keeps what it
+ * uses and can deliver nothing more) and, mid-run, start a new driver. */
 class LiveSensor
 {
    public:
+	struct Status
+	{
+		size_t received = 0;  //!< observations delivered
+		size_t failures = 0;  //!< driver exceptions (each followed by a restart)
+		std::string lastError;
+		/** ERROR messages the driver logged itself (MRPT drivers log, and
+		 * often retry, what they cannot read, e.g. a malformed frame). */
+		size_t driverErrors = 0;
+		std::string lastDriverError;
+		/** Driver threads left behind, stuck inside a driver call. */
+		size_t stuckDrivers = 0;
+		bool delivered = false;	 //!< at least one observation
+		/** [s] the longest time without an observation since the first
+		 * one, and when it began (seconds after the first observation). */
+		double longestGap = 0, longestGapStart = 0;
+	};
 	struct Arrival
 	{
 		size_t sensor = 0;	//!< index in [Live] sensors
@@ -42,28 +65,32 @@ class LiveSensor
 	};
 	using Sink = std::function<void(Arrival)>;
 
-	struct Status
-	{
-		size_t received = 0;  //!< observations delivered
-		size_t failures = 0;  //!< driver exceptions (each followed by a restart)
-		std::string lastError;
-		bool delivered = false;	 //!< at least one observation
-	};
-
 	/** Makes the driver of `[section] driver` and loads its keys (reading
 	 * them through `cfg`, so keys no driver reads are reported as
 	 * unknown). Throws ConfigError naming the file and section for an
-	 * unknown driver or keys the driver rejects. Nothing runs yet. */
+	 * unknown driver or keys the driver rejects. Nothing runs yet.
+	 * `restartPause`, `restartAfterSilence`: [Live] restart_pause,
+	 * restart_after_silence. */
 	LiveSensor(const TrackedConfig& cfg, std::string section, size_t index,
-		double restartPause, Sink sink);
-	~LiveSensor();	//!< stops the thread
+		double restartPause, double restartAfterSilence, Sink sink);
+	~LiveSensor();	//!< stop(0)
 	LiveSensor(const LiveSensor&) = delete;
 	LiveSensor& operator=(const LiveSensor&) = delete;
 
 	void start();
-	/** Asks the thread to stop and joins it (a driver blocked in a read
-	 * returns within its own timeout). */
-	void stop();
+	/** Asks the thread to stop and waits for it up to `timeout` [s] (a
+	 * driver blocked in a read returns within its own timeout); one still
+	 * inside the driver then is left behind. False when it was. */
+	bool stop(double timeout);
+	/** [s] how long the driver's current call (initialize, doProcess, its
+	 * destruction) has lasted; 0 between calls. */
+	double stuckFor() const;
+	/** Whether that call is initialize() (CLMS100Eth alone sleeps ~15 s
+	 * in it). */
+	bool initializing() const;
+	/** Leaves the current driver thread behind and starts a new driver
+	 * (counted as a failure with `why`). */
+	void replaceStuckDriver(const std::string& why);
 
 	const std::string& section() const { return m_section; }
 	const std::string& driver() const { return m_driverName; }
@@ -74,20 +101,19 @@ class LiveSensor
 	std::chrono::steady_clock::time_point startedAt() const { return m_startedAt; }
 
    private:
-	void run();
-	std::shared_ptr<mrpt::hwdrivers::CGenericSensor> makeDriver(
-		const mrpt::config::CConfigFileBase& cfg) const;
+	struct Board;
+	struct Worker;
+	void launch(std::shared_ptr<mrpt::hwdrivers::CGenericSensor> driver);
 
 	std::string m_section, m_driverName, m_address;
 	size_t m_index;
-	double m_restartPause;
+	double m_restartPause, m_restartAfterSilence;
 	Sink m_sink;
-	std::unique_ptr<mrpt::config::CConfigFileMemory> m_config;	//!< for restarts
-	std::shared_ptr<mrpt::hwdrivers::CGenericSensor> m_driver;
-	std::atomic<bool> m_stop{false};
+	std::shared_ptr<mrpt::config::CConfigFileMemory> m_config;	//!< for restarts
+	std::shared_ptr<mrpt::hwdrivers::CGenericSensor> m_firstDriver;	 //!< made by the constructor
+	std::shared_ptr<Board> m_board;	 //!< shared with every worker, left behind or not
+	std::shared_ptr<Worker> m_worker;
 	std::thread m_thread;
 	std::chrono::steady_clock::time_point m_startedAt;
-	mutable std::mutex m_statusMutex;
-	Status m_status;
 };
 }  // namespace featloc

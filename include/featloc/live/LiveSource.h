@@ -3,6 +3,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -43,9 +44,11 @@ class LiveSource : public EntrySource
 	struct SensorReport
 	{
 		std::string section, driver;
-		size_t received = 0, passedOn = 0, late = 0, failures = 0;
+		size_t received = 0, passedOn = 0, late = 0, failures = 0, driverErrors = 0;
 		double rate = 0;  //!< [Hz] over the run
-		std::string lastError;
+		std::string lastError, lastDriverError;
+		double longestGap = 0, longestGapStart = 0;	 //!< [s] LiveSensor::Status
+		size_t stuckDrivers = 0;  //!< LiveSensor::Status
 	};
 
 	/** Makes the drivers (ConfigError for a bad sensor section) and opens
@@ -65,6 +68,11 @@ class LiveSource : public EntrySource
 	double progress() const override;
 	std::string name() const override { return m_recording.path(); }
 	std::string description() const override;
+
+	/** Where to say that a sensor fell silent (nothing for kSilence) and
+	 * when it delivers again; called on the thread calling next(). */
+	void setNotice(std::function<void(const std::string&)> notice) { m_notice = std::move(notice); }
+	static constexpr double kSilence = 1.0;	 //!< [s]
 
 	std::vector<SensorReport> report() const;
 	/** "Ctrl-C / SIGTERM", "--duration reached", or "" while running. */
@@ -91,6 +99,12 @@ class LiveSource : public EntrySource
 	bool releasable(const Pending& p, std::chrono::steady_clock::time_point now) const;
 	bool stopping();
 	void stopSensors();
+	/** Notes sensors silent for kSilence, then passes every pending notice
+	 * to m_notice (outside the lock). */
+	void giveNotices(std::chrono::steady_clock::time_point now);
+	/** Leaves behind drivers stuck in a call and starts new ones. */
+	void replaceStuckDrivers();
+	static std::string stuckNotice(const LiveSensor& s, double seconds, const std::string& when);
 
 	LiveOptions m_options;
 	double m_duration;
@@ -111,5 +125,12 @@ class LiveSource : public EntrySource
 	std::string m_stopReason;
 	bool m_sensorsStopped = false;
 	std::deque<std::pair<const void*, std::chrono::steady_clock::time_point>> m_recentArrivals;
+	std::vector<std::optional<std::chrono::steady_clock::time_point>> m_lastArrival;
+	std::vector<bool> m_silent;
+	std::vector<size_t> m_restartsNoticed;
+	std::vector<std::string> m_lastNoticedError;
+	std::vector<std::string> m_notices;	 //!< not yet given
+	std::function<void(const std::string&)> m_notice;
+	std::chrono::steady_clock::time_point m_lastRescue;	 //!< DeadConnectionRescue
 };
 }  // namespace featloc

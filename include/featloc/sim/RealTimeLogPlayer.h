@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "featloc/io/OdometryLine.h"
+#include "featloc/sim/DeviceFault.h"
 #include "featloc/sim/OdometryLineServer.h"
 #include "featloc/sim/ScipLaserServer.h"
 
@@ -36,6 +37,7 @@ class RealTimeLogPlayer
 	{
 		size_t scans = 0, scansDelivered = 0;
 		size_t readings = 0, readingsDelivered = 0;
+		size_t faultsInjected = 0;	//!< laser faults that came due
 		double seconds = 0;	 //!< wall time played
 		bool stopped = false;  //!< `stop` ended it early
 	};
@@ -52,6 +54,9 @@ class RealTimeLogPlayer
 	RealTimeLogPlayer(
 		ScipLaserServer& laser, OdometryLineServer* odometry, std::string groundTruthPath);
 
+	/** Faults to inject into the laser as the log plays (DeviceFault). */
+	void setLaserFaults(std::vector<DeviceFault> faults) { m_faults = std::move(faults); }
+
 	/** Waits until the drivers are connected and the laser streams, then
 	 * plays `items`; `onProgress(fraction)` now and then. Ends at the end
 	 * of the log or when `stop` becomes true. */
@@ -63,5 +68,6 @@ class RealTimeLogPlayer
 	ScipLaserServer& m_laser;
 	OdometryLineServer* m_odometry;
 	std::string m_gtPath;
+	std::vector<DeviceFault> m_faults;
 };
 }  // namespace featloc

@@ -76,9 +76,15 @@ class ScipLaserServer
 	size_t scansDiscardedByReinit() const { return m_scansDiscardedByReinit; }
 	size_t connections() const { return m_connections; }
 	bool streaming() const { return m_streaming; }
-	/** The link drops (as when a cable is pulled); the server keeps
-	 * listening for the driver to reconnect. */
-	void dropConnection();
+	/** Sends, in place of a scan, a malformed one: the MD echo and status
+	 * 99, then a data block of the wrong length (CHokuyoURG reports a
+	 * hardware error). False when no driver streams. */
+	bool publishGarbage(uint32_t deviceTimeMs);
+	/** false: the link drops and connections are refused (the device is
+	 * unplugged or off); true: it listens again on the same port. */
+	void setReachable(bool reachable);
+	/** true: the device hangs, link up: it sends and answers nothing. */
+	void setSilent(bool silent) { m_silent = silent; }
 
    private:
 	void serve();
@@ -88,15 +94,14 @@ class ScipLaserServer
 
 	Device m_device;
 	unsigned short m_port;
-	Fault m_fault;
-	std::atomic<bool> m_stop{false}, m_streaming{false};
+	std::atomic<bool> m_stop{false}, m_streaming{false}, m_reachable{true}, m_silent{false};
 	std::atomic<size_t> m_scansSent{0}, m_connections{0}, m_scansDiscardedByReinit{0};
 	size_t m_sessionScans = 0;	//!< sent since the last MD (under m_mutex)
 	size_t m_quitScans = 0;	 //!< sent in the session the last QT ended (under m_mutex)
 	std::mutex m_mutex;	 //!< guards m_client, m_mdEcho and writes
 	std::string m_mdEcho;  //!< the MD command being served
 	int m_client = -1;	//!< the driver's connection
-	LoopbackTcpServer m_listener;
+	std::unique_ptr<LoopbackTcpServer> m_listener;	//!< null while unreachable
 	std::thread m_thread;
 };
 }  // namespace featloc
