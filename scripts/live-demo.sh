@@ -4,6 +4,8 @@
 # (default 20), then featloc-run replays the recording. Prints the live
 # run's pose latency and ATE and the replay's ATE (doc/benchmarks.md,
 # "Live run against the emulator"). Needs a build (scripts/test.sh).
+# LIVE_CPU=N pins featloc-live (all its threads) to core N with taskset,
+# the emulator running on the other cores: "keeps up on one core".
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BIN="$ROOT/build/bin"
@@ -16,7 +18,12 @@ rm -rf "$OUT" && mkdir -p "$OUT"
 emu=$!
 trap 'kill -TERM $emu 2>/dev/null || true' EXIT
 sleep 0.5
-"$BIN/featloc-live" "$ROOT/configs/live-emulator.ini" --out "$OUT/live" --duration "$SECS" \
+PIN=()
+if [ -n "${LIVE_CPU:-}" ]; then
+  PIN=(taskset -c "$LIVE_CPU")
+  taskset -pc "$(( LIVE_CPU == 0 ? 1 : 0 ))" $emu > /dev/null  # the emulator elsewhere
+fi
+"${PIN[@]}" "$BIN/featloc-live" "$ROOT/configs/live-emulator.ini" --out "$OUT/live" --duration "$SECS" \
   --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" --set Live:status_period=5
 kill -TERM $emu; wait $emu || true; trap - EXIT
 "$BIN/featloc-run" "$ROOT/configs/live-emulator.ini" "$OUT/live/live.rawlog" -q \
