@@ -1,6 +1,5 @@
 // DeadConnectionRescue against the MRPT 2.5.8 behaviour it exists for: a
 // CClientTCPSocket write to a connection the peer has reset never returns.
-#include <arpa/inet.h>
 #include <gtest/gtest.h>
 #include <mrpt/comms/CClientTCPSocket.h>
 #include <netinet/in.h>
@@ -14,34 +13,34 @@
 
 #include "featloc/live/DeadConnectionRescue.h"
 #include "featloc/sim/LoopbackTcpServer.h"
+#include "support/FreePort.h"
 
 using featloc::DeadConnectionRescue;
 using featloc::LoopbackTcpServer;
 
 namespace
 {
-unsigned short freePort()
+/** A loopback connection: MRPT's client socket and the server's end. */
+struct Connection
 {
-	const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-	sockaddr_in a{};
-	a.sin_family = AF_INET;
-	a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-	socklen_t len = sizeof(a);
-	::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof(a));
-	::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len);
-	::close(fd);
-	return ntohs(a.sin_port);
-}
+	unsigned short port = featloc::test::freePort();
+	LoopbackTcpServer server{port};
+	mrpt::comms::CClientTCPSocket client;
+	int accepted = -1;
+	Connection()
+	{
+		client.connect("127.0.0.1", port);
+		accepted = server.accept(1000);
+	}
+};
 }  // namespace
 
 TEST(DeadConnectionRescue, FreesAnMrptWriteLoopingOnAResetConnection)
 {
 	std::signal(SIGPIPE, SIG_IGN);	// as featloc-live does
-	const unsigned short port = freePort();
-	LoopbackTcpServer server(port);
-	mrpt::comms::CClientTCPSocket client;
-	client.connect("127.0.0.1", port);
-	const int accepted = server.accept(1000);
+	Connection c;
+	auto& client = c.client;
+	const int accepted = c.accepted;
 	ASSERT_GE(accepted, 0);
 	// The device resets the connection (close with a zero linger: RST).
 	const linger reset{1, 0};
@@ -72,11 +71,9 @@ TEST(DeadConnectionRescue, FreesAnMrptWriteLoopingOnAResetConnection)
 
 TEST(DeadConnectionRescue, LeavesLiveConnectionsAlone)
 {
-	const unsigned short port = freePort();
-	LoopbackTcpServer server(port);
-	mrpt::comms::CClientTCPSocket client;
-	client.connect("127.0.0.1", port);
-	const int accepted = server.accept(1000);
+	Connection c;
+	auto& client = c.client;
+	const int accepted = c.accepted;
 	ASSERT_GE(accepted, 0);
 	EXPECT_EQ(DeadConnectionRescue::rescueAll(), 0u);
 	ASSERT_TRUE(LoopbackTcpServer::sendAll(accepted, "hello", 1000));

@@ -25,6 +25,7 @@
 #include "featloc/sim/DeviceFault.h"
 #include "featloc/sim/ScipLaserServer.h"
 #include "support/CommandRunner.h"
+#include "support/FreePort.h"
 #include "support/DocumentedKeys.h"
 #include "support/TempDir.h"
 
@@ -39,22 +40,6 @@ const std::string kRun = FEATLOC_RUN_EXE;
 const std::string kSim = FEATLOC_SIM_EXE;
 const std::string kConfig = std::string(FEATLOC_SOURCE_DIR) + "/configs/live-emulator.ini";
 const std::string kWorld = std::string(FEATLOC_SOURCE_DIR) + "/worlds/office.ini";
-
-/** A TCP port nobody listens on now (the kernel's choice), so that tests
- * running in parallel do not collide. */
-unsigned short freePort()
-{
-	const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-	sockaddr_in a{};
-	a.sin_family = AF_INET;
-	a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-	a.sin_port = 0;
-	socklen_t len = sizeof(a);
-	::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof(a));
-	::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len);
-	::close(fd);
-	return ntohs(a.sin_port);
-}
 
 /** featloc-sim --serve in the background (its pid in $emu): a UTM-30LX at
  * 40 Hz and odometry at 100 Hz driving the office world. */

@@ -126,27 +126,7 @@ struct LiveSensor::Worker
 	std::shared_ptr<mrpt::hwdrivers::CGenericSensor> makeDriver(
 		const mrpt::config::CConfigFileBase& cfg) const
 	{
-		auto d = mrpt::hwdrivers::CGenericSensor::createSensorPtr(driverName);
-		if (!d)
-			throw ConfigError("[" + section + "] driver = " + driverName +
-				": not an MRPT sensor driver (e.g. CHokuyoURG, CLMS100Eth, CSickLaserSerial, "
-				"CCameraSensor, or featloc's TcpOdometrySensor; names are case-sensitive)");
-		// Drivers that log (C2DRangeFinderAbstract and others) report what
-		// they could not read and retry; count it, so the run's report says so.
-		if (auto* logger = dynamic_cast<mrpt::system::COutputLogger*>(d.get()))
-			logger->logRegisterCallback(
-				[b = board](std::string_view msg, mrpt::system::VerbosityLevel level,
-					std::string_view, mrpt::Clock::time_point) {
-					if (level < mrpt::system::LVL_ERROR) return;
-					std::string text(msg);
-					while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-						text.pop_back();
-					std::lock_guard<std::mutex> lock(b->mutex);
-					b->status.driverErrors++;
-					b->status.lastDriverError = text;
-				});
-		d->loadConfig(cfg, section);
-		return d;
+		return makeSensorDriver(driverName, section, board, cfg);
 	}
 
 	/** Runs f as a driver call: stuckFor() sees how long it lasts. */
@@ -229,6 +209,35 @@ struct LiveSensor::Worker
 	}
 };
 
+/** `driver` of `[section]`, its keys loaded from cfg, its ERROR log
+ * messages counted on `board`. */
+std::shared_ptr<mrpt::hwdrivers::CGenericSensor> LiveSensor::makeSensorDriver(
+	const std::string& driverName, const std::string& section,
+	const std::shared_ptr<Board>& board, const mrpt::config::CConfigFileBase& cfg)
+{
+	auto d = mrpt::hwdrivers::CGenericSensor::createSensorPtr(driverName);
+	if (!d)
+		throw ConfigError("[" + section + "] driver = " + driverName +
+			": not an MRPT sensor driver (e.g. CHokuyoURG, CLMS100Eth, CSickLaserSerial, "
+			"CCameraSensor, or featloc's TcpOdometrySensor; names are case-sensitive)");
+	// Drivers that log (C2DRangeFinderAbstract and others) report what
+	// they could not read and retry; count it, so the run's report says so.
+	if (auto* logger = dynamic_cast<mrpt::system::COutputLogger*>(d.get()))
+		logger->logRegisterCallback(
+			[b = board](std::string_view msg, mrpt::system::VerbosityLevel level,
+				std::string_view, mrpt::Clock::time_point) {
+				if (level < mrpt::system::LVL_ERROR) return;
+				std::string text(msg);
+				while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+					text.pop_back();
+				std::lock_guard<std::mutex> lock(b->mutex);
+				b->status.driverErrors++;
+				b->status.lastDriverError = text;
+			});
+	d->loadConfig(cfg, section);
+	return d;
+}
+
 LiveSensor::LiveSensor(const TrackedConfig& cfg, std::string section, size_t index,
 	double restartPause, double restartAfterSilence, Sink sink)
 	: m_section(std::move(section)),
@@ -244,14 +253,10 @@ LiveSensor::LiveSensor(const TrackedConfig& cfg, std::string section, size_t ind
 	if (m_driverName.empty())
 		throw ConfigError(where + ": no 'driver' key (e.g. driver = CHokuyoURG)");
 	m_address = addressKeys(*m_config, m_section);
-	Worker probe;
-	probe.section = m_section;
-	probe.driverName = m_driverName;
-	probe.board = m_board;
 	try
 	{
 		// Through the tracked config: the keys the driver reads are known.
-		m_firstDriver = probe.makeDriver(cfg);
+		m_firstDriver = makeSensorDriver(m_driverName, m_section, m_board, cfg);
 	}
 	catch (const ConfigError&)
 	{

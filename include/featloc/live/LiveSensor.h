@@ -103,6 +103,9 @@ class LiveSensor
    private:
 	struct Board;
 	struct Worker;
+	static std::shared_ptr<mrpt::hwdrivers::CGenericSensor> makeSensorDriver(
+		const std::string& driverName, const std::string& section,
+		const std::shared_ptr<Board>& board, const mrpt::config::CConfigFileBase& cfg);
 	void launch(std::shared_ptr<mrpt::hwdrivers::CGenericSensor> driver);
 
 	std::string m_section, m_driverName, m_address;
