@@ -36,12 +36,15 @@ std::string liveJson(const LiveSource& source, const std::vector<double>& latenc
 	j["seconds"] = source.secondsRunning();
 	j["late_observations"] = source.lateObservations();
 	for (const auto& s : source.report())
+	{
+		const LiveSensor::Status& st = s.status;
 		j["sensors"].push_back({{"section", s.section}, {"driver", s.driver},
-			{"received", s.received}, {"passed_on", s.passedOn}, {"late", s.late},
-			{"restarts", s.failures}, {"rate_hz", s.rate}, {"last_error", s.lastError},
-			{"driver_errors", s.driverErrors}, {"last_driver_error", s.lastDriverError},
-			{"longest_gap_s", s.longestGap}, {"longest_gap_start_s", s.longestGapStart},
-			{"stuck_drivers_left_behind", s.stuckDrivers}});
+			{"received", st.received}, {"passed_on", s.passedOn}, {"late", s.late},
+			{"restarts", st.failures}, {"rate_hz", s.rate}, {"last_error", st.lastError},
+			{"driver_errors", st.driverErrors}, {"last_driver_error", st.lastDriverError},
+			{"longest_gap_s", st.longestGap}, {"longest_gap_start_s", st.longestGapStart},
+			{"stuck_drivers_left_behind", st.stuckDrivers}});
+	}
 	const ErrorStats l = ErrorStats::of(latencies);
 	j["pose_latency_s"] = {
 		{"count", l.count}, {"median", l.median}, {"p95", l.p95}, {"max", l.max}};
@@ -54,16 +57,17 @@ void printLiveReport(const LiveSource& source, const std::vector<double>& latenc
 		source.secondsRunning());
 	for (const auto& s : source.report())
 	{
+		const LiveSensor::Status& st = s.status;
 		std::printf("  [%s] %s: %zu observations (%.1f Hz), %zu passed on, %zu late",
-			s.section.c_str(), s.driver.c_str(), s.received, s.rate, s.passedOn, s.late);
-		std::printf(", longest gap %.2f s (at %.1f s)", s.longestGap, s.longestGapStart);
-		if (s.failures)
-			std::printf(", %zu driver restarts (last: %s)", s.failures, s.lastError.c_str());
-		if (s.stuckDrivers)
-			std::printf(", %zu driver threads left behind stuck in a call", s.stuckDrivers);
-		if (s.driverErrors)
-			std::printf(", %zu errors logged by the driver (last: %s)", s.driverErrors,
-				s.lastDriverError.c_str());
+			s.section.c_str(), s.driver.c_str(), st.received, s.rate, s.passedOn, s.late);
+		std::printf(", longest gap %.2f s (at %.1f s)", st.longestGap, st.longestGapStart);
+		if (st.failures)
+			std::printf(", %zu driver restarts (last: %s)", st.failures, st.lastError.c_str());
+		if (st.stuckDrivers)
+			std::printf(", %zu driver threads left behind stuck in a call", st.stuckDrivers);
+		if (st.driverErrors)
+			std::printf(", %zu errors logged by the driver (last: %s)", st.driverErrors,
+				st.lastDriverError.c_str());
 		std::printf("\n");
 	}
 	if (!latencies.empty())

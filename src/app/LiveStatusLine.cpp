@@ -26,7 +26,9 @@ void LiveStatusLine::onStep(const StepRecord& record)
 		p.x(), p.y(), mrpt::RAD2DEG(p.phi()));
 	for (const auto& s : m_source.report())
 		std::fprintf(m_out, " %s %.1f Hz%s |", s.section.c_str(), s.rate,
-			s.failures ? (" (" + std::to_string(s.failures) + " restarts)").c_str() : "");
+			s.status.failures
+				? (" (" + std::to_string(s.status.failures) + " restarts)").c_str()
+				: "");
 	std::fprintf(m_out, " late %zu", m_source.lateObservations());
 	// Over this period only: sorting the whole run's latencies on the
 	// pipeline thread every period would grow with the run.

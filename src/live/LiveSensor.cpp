@@ -301,30 +301,41 @@ bool LiveSensor::stop(double timeout)
 	m_worker->stop = true;
 	const auto until = Clock::now() +
 		std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout));
-	bool rescued = false;
 	while (!m_worker->done && Clock::now() < until)
 	{
 		std::this_thread::sleep_for(std::chrono::milliseconds(5));
-		if (!rescued && stuckFor() > 0.5)
-		{
-			DeadConnectionRescue::rescueAll();	// a write looping on a reset link
-			rescued = true;
-		}
+		rescueIfStuck();
 	}
-	bool joined = true;
-	if (m_worker->done)
-		m_thread.join();
-	else
+	if (!m_worker->done)
 	{
-		// Still inside the driver: left behind, unable to deliver.
-		m_worker->abandon();
-		m_thread.detach();
-		std::lock_guard<std::mutex> lock(m_board->mutex);
-		m_board->status.stuckDrivers++;
-		joined = false;
+		leaveBehind();	// still inside the driver
+		return false;
 	}
+	m_thread.join();
 	m_worker.reset();
-	return joined;
+	return true;
+}
+
+void LiveSensor::rescueIfStuck()
+{
+	// A call this long may be a write looping on a reset connection: free
+	// it (DeadConnectionRescue touches dead connections only), so the
+	// driver sees the closed link and recovers without being left behind.
+	constexpr double kRescueAfter = 0.5;  // [s] MRPT's TCP reads time out in 0.1 s
+	if (stuckFor() > kRescueAfter && secondsSince(m_lastRescue) > kRescueAfter)
+	{
+		DeadConnectionRescue::rescueAll();
+		m_lastRescue = Clock::now();
+	}
+}
+
+void LiveSensor::leaveBehind()
+{
+	m_worker->abandon();  // it can deliver nothing more
+	m_thread.detach();
+	m_worker.reset();
+	std::lock_guard<std::mutex> lock(m_board->mutex);
+	m_board->status.stuckDrivers++;
 }
 
 double LiveSensor::stuckFor() const
@@ -340,14 +351,8 @@ bool LiveSensor::initializing() const { return m_worker && m_worker->inInitializ
 void LiveSensor::replaceStuckDriver(const std::string& why)
 {
 	if (!m_worker) return;
-	m_worker->abandon();
-	m_thread.detach();
-	{
-		std::lock_guard<std::mutex> lock(m_board->mutex);
-		m_board->status.stuckDrivers++;
-	}
+	leaveBehind();
 	m_board->failed(why);
-	m_worker.reset();
 	launch(nullptr);  // a new driver, made and initialised by its thread
 }
 

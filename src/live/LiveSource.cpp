@@ -7,7 +7,6 @@
 
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/InputError.h"
-#include "featloc/live/DeadConnectionRescue.h"
 
 namespace featloc
 {
@@ -23,9 +22,9 @@ double secondsBetween(Clock::time_point a, Clock::time_point b)
 constexpr size_t kRecentArrivals = 4096;
 // [s] added to a sensor's largest delay seen (scheduling jitter).
 constexpr double kDelayMargin = 0.003;
-// [s] a driver call this long gets its dead connections freed (a read
-// times out within 0.1 s in MRPT's TCP drivers).
-constexpr double kRescueAfter = 0.5;
+// [s] how often next() looks at the drivers (stuck calls, restarts,
+// silences): often enough for notices, not on every entry.
+constexpr double kSupervisionPeriod = 0.02;
 }  // namespace
 
 LiveSource::LiveSource(const TrackedConfig& cfg, const LiveOptions& options,
@@ -64,8 +63,7 @@ void LiveSource::onArrival(LiveSensor::Arrival a)
 			char text[64];
 			std::snprintf(text, sizeof(text), ": observations again after %.1f s",
 				secondsBetween(*m_lastArrival[a.sensor], a.arrival));
-			m_notices.push_back("[" + m_sensors[a.sensor]->section() + "] " +
-				m_sensors[a.sensor]->driver() + text);
+			m_notices.push_back(m_sensors[a.sensor]->label() + text);
 		}
 		m_silent[a.sensor] = false;
 		m_lastArrival[a.sensor] = a.arrival;
@@ -105,36 +103,45 @@ void LiveSource::start()
 	}
 }
 
-void LiveSource::giveNotices(Clock::time_point now)
+void LiveSource::supervise(Clock::time_point now)
 {
 	std::vector<std::string> notices;
+	const bool due = secondsBetween(m_lastSupervision, now) >= kSupervisionPeriod;
+	if (due)
+	{
+		m_lastSupervision = now;
+		replaceStuckDrivers();	// outside the lock: a stuck driver may be delivering
+	}
 	{
 		std::lock_guard<std::mutex> lock(m_mutex);
-		for (size_t i = 0; i < m_sensors.size(); i++)
-		{
-			// A restart for a reason not said yet (the same reason over and
-			// over, e.g. a refused connection, is said once).
-			const auto st = m_sensors[i]->status();
-			if (st.failures > m_restartsNoticed[i] && st.lastError != m_lastNoticedError[i])
-			{
-				m_notices.push_back("[" + m_sensors[i]->section() + "] " +
-					m_sensors[i]->driver() + ": driver restarted: " + st.lastError);
-				m_lastNoticedError[i] = st.lastError;
-			}
-			m_restartsNoticed[i] = st.failures;
-			if (m_silent[i] || !m_lastArrival[i] ||
-				secondsBetween(*m_lastArrival[i], now) < kSilence)
-				continue;
-			m_silent[i] = true;
-			const std::string why = !st.lastDriverError.empty() ? st.lastDriverError : st.lastError;
-			m_notices.push_back("[" + m_sensors[i]->section() + "] " + m_sensors[i]->driver() +
-				": no observation for " + std::to_string(static_cast<int>(kSilence)) + " s" +
-				(why.empty() ? "" : " (the driver last said: " + why + ")"));
-		}
+		if (due) noteRestartsAndSilences(now);
 		notices.swap(m_notices);
 	}
 	if (m_notice)
 		for (const auto& n : notices) m_notice(n);
+}
+
+void LiveSource::noteRestartsAndSilences(Clock::time_point now)
+{
+	for (size_t i = 0; i < m_sensors.size(); i++)
+	{
+		// A restart for a reason not said yet (the same reason over and
+		// over, e.g. a refused connection, is said once).
+		const auto st = m_sensors[i]->status();
+		if (st.failures > m_restartsNoticed[i] && st.lastError != m_lastNoticedError[i])
+		{
+			m_notices.push_back(m_sensors[i]->label() + ": driver restarted: " + st.lastError);
+			m_lastNoticedError[i] = st.lastError;
+		}
+		m_restartsNoticed[i] = st.failures;
+		if (m_silent[i] || !m_lastArrival[i] || secondsBetween(*m_lastArrival[i], now) < kSilence)
+			continue;
+		m_silent[i] = true;
+		const std::string why = !st.lastDriverError.empty() ? st.lastDriverError : st.lastError;
+		m_notices.push_back(m_sensors[i]->label() + ": no observation for " +
+			std::to_string(static_cast<int>(kSilence)) + " s" +
+			(why.empty() ? "" : " (the driver last said: " + why + ")"));
+	}
 }
 
 bool LiveSource::releasable(const Pending& p, Clock::time_point now) const
@@ -186,24 +193,15 @@ std::string LiveSource::stuckNotice(const LiveSensor& s, double seconds, const s
 		": driver stuck inside a call for %.1f s%s: its thread is left behind "
 		"([Live] driver_stuck_timeout)",
 		seconds, when.c_str());
-	return "[" + s.section() + "] " + s.driver() + text;
+	return s.label() + text;
 }
 
 void LiveSource::replaceStuckDrivers()
 {
 	if (m_sensorsStopped) return;
-	const auto now = Clock::now();
 	for (auto& s : m_sensors)
 	{
-		// A call this long may be a write looping on a reset connection:
-		// free it first (DeadConnectionRescue), so the driver sees the
-		// closed link and recovers without being left behind.
-		if (!s->initializing() && s->stuckFor() > kRescueAfter &&
-			secondsBetween(m_lastRescue, now) > kRescueAfter)
-		{
-			DeadConnectionRescue::rescueAll();
-			m_lastRescue = now;
-		}
+		s->rescueIfStuck();
 		const double limit =
 			s->initializing() ? m_options.startup_timeout : m_options.driver_stuck_timeout;
 		const double stuck = s->stuckFor();
@@ -223,8 +221,7 @@ bool LiveSource::next(RawlogEntry& entry)
 		// Stop the drivers first (outside the lock: their last
 		// observations still arrive), then pass on everything they sent.
 		if (!m_sensorsStopped && stopping()) stopSensors();
-		replaceStuckDrivers();	// outside the lock: a stuck driver may be delivering
-		giveNotices(Clock::now());
+		supervise(Clock::now());
 		std::unique_lock<std::mutex> lock(m_mutex);
 		if (m_pending.empty())
 		{
@@ -286,21 +283,13 @@ std::vector<LiveSource::SensorReport> LiveSource::report() const
 	std::lock_guard<std::mutex> lock(m_mutex);
 	for (size_t i = 0; i < m_sensors.size(); i++)
 	{
-		const auto st = m_sensors[i]->status();
 		SensorReport r;
 		r.section = m_sensors[i]->section();
 		r.driver = m_sensors[i]->driver();
-		r.received = st.received;
+		r.status = m_sensors[i]->status();
 		r.passedOn = m_passedOn[i];
 		r.late = m_lateCount[i];
-		r.failures = st.failures;
-		r.lastError = st.lastError;
-		r.driverErrors = st.driverErrors;
-		r.lastDriverError = st.lastDriverError;
-		r.longestGap = st.longestGap;
-		r.stuckDrivers = st.stuckDrivers;
-		r.longestGapStart = st.longestGapStart;
-		r.rate = secs > 0 ? static_cast<double>(st.received) / secs : 0;
+		r.rate = secs > 0 ? static_cast<double>(r.status.received) / secs : 0;
 		out.push_back(r);
 	}
 	return out;

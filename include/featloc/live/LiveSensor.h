@@ -91,8 +91,13 @@ class LiveSensor
 	/** Leaves the current driver thread behind and starts a new driver
 	 * (counted as a failure with `why`). */
 	void replaceStuckDriver(const std::string& why);
+	/** A driver call past 0.5 s gets the process's dead TCP connections
+	 * freed (DeadConnectionRescue), at most every 0.5 s. */
+	void rescueIfStuck();
 
 	const std::string& section() const { return m_section; }
+	/** "[SECTION] Driver", how messages name the sensor. */
+	std::string label() const { return "[" + m_section + "] " + m_driverName; }
 	const std::string& driver() const { return m_driverName; }
 	/** The section's address keys ("IP_DIR=127.0.0.1 PORT_DIR=10940"),
 	 * for messages about a device that does not answer. */
@@ -107,6 +112,8 @@ class LiveSensor
 		const std::string& driverName, const std::string& section,
 		const std::shared_ptr<Board>& board, const mrpt::config::CConfigFileBase& cfg);
 	void launch(std::shared_ptr<mrpt::hwdrivers::CGenericSensor> driver);
+	/** Detaches the current worker's thread, unable to deliver, and counts it. */
+	void leaveBehind();
 
 	std::string m_section, m_driverName, m_address;
 	size_t m_index;
@@ -118,5 +125,6 @@ class LiveSensor
 	std::shared_ptr<Worker> m_worker;
 	std::thread m_thread;
 	std::chrono::steady_clock::time_point m_startedAt;
+	std::chrono::steady_clock::time_point m_lastRescue;	 //!< rescueIfStuck()
 };
 }  // namespace featloc

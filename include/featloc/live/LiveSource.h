@@ -44,11 +44,9 @@ class LiveSource : public EntrySource
 	struct SensorReport
 	{
 		std::string section, driver;
-		size_t received = 0, passedOn = 0, late = 0, failures = 0, driverErrors = 0;
+		LiveSensor::Status status;	//!< what the driver delivered, its restarts, gaps
+		size_t passedOn = 0, late = 0;
 		double rate = 0;  //!< [Hz] over the run
-		std::string lastError, lastDriverError;
-		double longestGap = 0, longestGapStart = 0;	 //!< [s] LiveSensor::Status
-		size_t stuckDrivers = 0;  //!< LiveSensor::Status
 	};
 
 	/** Makes the drivers (ConfigError for a bad sensor section) and opens
@@ -99,11 +97,13 @@ class LiveSource : public EntrySource
 	bool releasable(const Pending& p, std::chrono::steady_clock::time_point now) const;
 	bool stopping();
 	void stopSensors();
-	/** Notes sensors silent for kSilence, then passes every pending notice
-	 * to m_notice (outside the lock). */
-	void giveNotices(std::chrono::steady_clock::time_point now);
+	/** Every kSupervisionPeriod: frees or replaces drivers stuck in a call
+	 * and notes restarts and sensors silent for kSilence. Then passes every
+	 * pending notice to m_notice (outside the lock). */
+	void supervise(std::chrono::steady_clock::time_point now);
 	/** Leaves behind drivers stuck in a call and starts new ones. */
 	void replaceStuckDrivers();
+	void noteRestartsAndSilences(std::chrono::steady_clock::time_point now);	 //!< under m_mutex
 	static std::string stuckNotice(const LiveSensor& s, double seconds, const std::string& when);
 
 	LiveOptions m_options;
@@ -131,6 +131,6 @@ class LiveSource : public EntrySource
 	std::vector<std::string> m_lastNoticedError;
 	std::vector<std::string> m_notices;	 //!< not yet given
 	std::function<void(const std::string&)> m_notice;
-	std::chrono::steady_clock::time_point m_lastRescue;	 //!< DeadConnectionRescue
+	std::chrono::steady_clock::time_point m_lastSupervision;
 };
 }  // namespace featloc
