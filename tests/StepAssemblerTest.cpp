@@ -65,6 +65,8 @@ TEST(StepAssembler, Format1IncrementsAreTheActions)
 		const double t = log.scanPeriod * static_cast<double>(k);
 		expectIncrement(steps[k], log.path(t) - log.path(t - log.scanPeriod), 1e-9);
 		EXPECT_GT(steps[k].odometry.cov(0, 0), 0);	// the action's covariance
+		// Read at an instant the log does not give: the gates allow for it.
+		EXPECT_TRUE(steps[k].odometryFromActions);
 	}
 }
 
@@ -88,6 +90,7 @@ TEST(StepAssembler, Format2OdometryIsInterpolatedAtScanTimes)
 		const double t = log.scanPeriod * static_cast<double>(k);
 		// Linear interpolation over 1/30 s of a smooth path: ~1e-5 error.
 		expectIncrement(steps[k], log.path(t) - log.path(t - log.scanPeriod), 1e-4);
+		EXPECT_FALSE(steps[k].odometryFromActions);  // at the scan's own time
 	}
 }
 

@@ -161,13 +161,14 @@ void EkfLocalizer::relativeMotionTerms(
 }
 
 EkfLocalizer::MotionUpdate EkfLocalizer::testRelativeMotion(
-	const mrpt::poses::CPosePDFGaussian& z) const
+	const mrpt::poses::CPosePDFGaussian& z, const mrpt::math::CMatrixDouble33& gateAllowance) const
 {
 	std::vector<Eigen::Index> cols;
 	Eigen::MatrixXd H;
 	Eigen::VectorXd nu;
 	relativeMotionTerms(kRobot, z, cols, H, nu);
-	const Eigen::MatrixXd S = H * P()(cols, cols) * H.transpose() + z.cov.asEigen();
+	const Eigen::MatrixXd S =
+		H * P()(cols, cols) * H.transpose() + z.cov.asEigen() + gateAllowance.asEigen();
 	MotionUpdate out;
 	out.mahalanobis2 = nu.dot(S.ldlt().solve(nu));
 	out.used = out.mahalanobis2 <= options.matcher_gate_chi2;

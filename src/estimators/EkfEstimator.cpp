@@ -40,7 +40,7 @@ bool EkfEstimator::process(const EstimationStep& step, const MatchResult* match)
 		// Gated against the state without this keyframe's earlier matches:
 		// they measured (nearly) the same thing, with (nearly) the same
 		// error, so only the latest accepted one is held for fusion.
-		const auto u = m_filter.testRelativeMotion(z);
+		const auto u = m_filter.testRelativeMotion(z, match->gateAllowance);
 		used = u.used;
 		m_reason = u.reason;
 		if (used) m_filter.holdRelativeMotion(z);

@@ -33,7 +33,8 @@ std::string ScanMatcher::className() const
 MatchResult ScanMatcher::match(
 	const mrpt::obs::CObservation2DRangeScan& reference,
 	const mrpt::obs::CObservation2DRangeScan& current,
-	const mrpt::poses::CPosePDFGaussian& initialGuess)
+	const mrpt::poses::CPosePDFGaussian& initialGuess,
+	const mrpt::math::CMatrixDouble33& gateAllowance)
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	const mrpt::poses::CPose2D s1 = planar(reference.sensorPose);
@@ -51,6 +52,7 @@ MatchResult ScanMatcher::match(
 
 	r.estimate.changeCoordinatesReference(s1);
 	r.estimate += mrpt::poses::CPose2D() - s2;
+	r.gateAllowance = gateAllowance;
 	// In the robot frame, where the guess's uncertainty is what its
 	// source (odometry) says; in the sensor frames a lever arm couples it.
 	checkAgainstGuess(initialGuess, r);
@@ -81,7 +83,8 @@ void ScanMatcher::checkAgainstGuess(
 	const auto& e = r.estimate.mean;
 	const Eigen::Vector3d d(e.x() - guess.mean.x(), e.y() - guess.mean.y(),
 		mrpt::math::wrapToPi(e.phi() - guess.mean.phi()));
-	const Eigen::Matrix3d P = guess.cov.asEigen() + r.estimate.cov.asEigen();
+	const Eigen::Matrix3d P =
+		guess.cov.asEigen() + r.estimate.cov.asEigen() + r.gateAllowance.asEigen();
 	const double m2 = d.dot(P.ldlt().solve(d));
 	if (m2 <= gate) return;
 	char buf[220];

@@ -13,6 +13,7 @@ void OdometryOptions::loadFromConfigFile(
 	read(c, s, "max_interpolation_gap", max_interpolation_gap);
 	read(c, s, "no_odometry_sigma_xy", no_odometry_sigma_xy);
 	readDegrees(c, s, "no_odometry_sigma_yaw_DEG", no_odometry_sigma_yaw);
+	read(c, s, "action_sampling_offset", action_sampling_offset);
 	read(c, s, "covariance_check", covariance_check);
 	read(c, s, "covariance_check_window", covariance_check_window);
 	read(c, s, "covariance_check_quantile", covariance_check_quantile);
@@ -38,6 +39,8 @@ void OdometryOptions::saveToConfigFile(
 		"[m] prior sigma of a step without odometry (zero motion)");
 	writeDegrees(c, s, "no_odometry_sigma_yaw_DEG", no_odometry_sigma_yaw,
 		"[deg] prior yaw sigma of a step without odometry");
+	write(c, s, "action_sampling_offset", action_sampling_offset,
+		"the gates allow for format #1 odometry read off the scan's instant");
 	write(c, s, "covariance_check", covariance_check,
 		"inflate the odometry covariance when the matches show it is too small");
 	write(c, s, "covariance_check_window", covariance_check_window,

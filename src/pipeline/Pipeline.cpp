@@ -7,6 +7,7 @@
 
 #include "featloc/core/InputError.h"
 #include "featloc/estimators/StereoStepResult.h"
+#include "featloc/odometry/OdometrySamplingOffset.h"
 #include "featloc/pipeline/StepAssembler.h"
 #include "featloc/pipeline/StereoImagesHandler.h"
 
@@ -174,6 +175,11 @@ RunStats Pipeline::run(
 	return stats;
 }
 
+mrpt::poses::CPose2D Pipeline::actionStep(const EstimationStep& step)
+{
+	return step.odometryFromActions ? step.odometry.mean : mrpt::poses::CPose2D();
+}
+
 bool Pipeline::isNewKeyframe(const MatchResult* match) const
 {
 	if (m_options.keyframe_distance <= 0 && m_options.keyframe_angle <= 0)
@@ -237,6 +243,7 @@ void Pipeline::processStep(
 		m_keyframeScan = step.scan;
 		m_keyframePose = m_estimator->pose().mean;
 		m_odometrySinceKeyframe = mrpt::poses::CPosePDFGaussian();
+		m_keyframeActionStep = actionStep(logStep);
 		m_estimator->markKeyframe();
 		stats.keyframes++;
 	}
@@ -260,9 +267,18 @@ MatchResult Pipeline::matchToKeyframe(const EstimationStep& step)
 	guess.cov *= m_odometryCheck.scale();
 	guess.mean = (m_estimator->pose().mean + step.odometry.mean) -
 		m_estimator->currentKeyframePose().value_or(m_keyframePose);
-	MatchResult match = m_matcher->match(*m_keyframeScan, *step.scan, guess);
+	mrpt::math::CMatrixDouble33 allowance;
+	if (m_odometry.action_sampling_offset)
+		allowance = OdometrySamplingOffset::covariance(
+			m_keyframeActionStep, actionStep(step), guess.mean);
+	MatchResult match = m_matcher->match(*m_keyframeScan, *step.scan, guess, allowance);
 	if (m_odometry.covariance_check && (match.success || match.rejectedByGuessGate))
-		m_odometryCheck.observe(m_odometrySinceKeyframe, match.estimate);
+	{
+		// What the allowance explains is not the covariance's fault.
+		mrpt::poses::CPosePDFGaussian m = match.estimate;
+		m.cov += allowance;
+		m_odometryCheck.observe(m_odometrySinceKeyframe, m);
+	}
 	return match;
 }
 }  // namespace featloc

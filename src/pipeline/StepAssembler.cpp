@@ -242,6 +242,7 @@ void StepAssembler::openFrame(mrpt::Clock::time_point t, size_t entryIndex, cons
 	{
 		p.fromActions = true;
 		p.step.hasOdometry = true;
+		p.step.odometryFromActions = true;
 		p.step.odometry = m_actionSum;
 		m_haveActions = false;
 	}

@@ -101,8 +101,11 @@ class EkfLocalizer
 	};
 	/** The gate alone: is `motion` (keyframe -> robot, with its covariance
 	 * already scaled as the caller wants) plausible against the state
-	 * without any held match? O(1). */
-	MotionUpdate testRelativeMotion(const mrpt::poses::CPosePDFGaussian& motion) const;
+	 * without any held match? O(1). `gateAllowance` widens the gate only
+	 * (OdometrySamplingOffset), not the update. */
+	MotionUpdate testRelativeMotion(
+		const mrpt::poses::CPosePDFGaussian& motion,
+		const mrpt::math::CMatrixDouble33& gateAllowance = {}) const;
 	/** Gate and fuse at once. */
 	MotionUpdate updateRelativeMotion(const mrpt::poses::CPosePDFGaussian& motion);
 	/** Keeps `motion` (which passed testRelativeMotion) as the keyframe

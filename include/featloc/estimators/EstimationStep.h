@@ -42,6 +42,11 @@ struct EstimationStep
 	/** Robot motion from the previous step to this one (robot frame of the
 	 * previous step), with covariance. */
 	mrpt::poses::CPosePDFGaussian odometry;
+	/** `odometry` is the sum of format #1 actions: what the robot reported
+	 * between two scans, read at an instant the log does not give (it may
+	 * lead or lag the scan: OdometrySamplingOffset). False when it was
+	 * interpolated at the scan's own time (format #2, CARMEN logs). */
+	bool odometryFromActions = false;
 	/** Point landmarks observed in this frame (robot frame). */
 	std::vector<LandmarkObservation> landmarks;
 	/** A stereo pair of this frame (checked: calibration, images that

@@ -22,6 +22,9 @@ struct MatchResult
 	 * guess for the guess's covariance (guess_gate_chi2): `estimate` is the
 	 * converged motion. */
 	bool rejectedByGuessGate = false;
+	/** What the gates add to the guess's covariance (ScanMatcher::match's
+	 * gateAllowance; zero when none). */
+	mrpt::math::CMatrixDouble33 gateAllowance;
 	unsigned int iterations = 0;
 	double timeSeconds = 0;	 //!< wall time of the match, conversions included
 	/** Fraction of current-scan points paired with the reference at the end,

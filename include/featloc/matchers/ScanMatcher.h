@@ -45,11 +45,16 @@ class ScanMatcher : public mrpt::rtti::CObject
 	/** Motion of the robot from the reference scan to the current scan.
 	 * \param initialGuess robot-frame motion guess (e.g. the odometry
 	 *        increment) with its covariance.
+	 * \param gateAllowance robot-frame covariance the guess gate adds to
+	 *        the guess's (not given to the matcher, kept in the result for
+	 *        the EKF's gate): an error of the guess that does not belong
+	 *        in its covariance (OdometrySamplingOffset).
 	 * The result's timeSeconds covers the whole call. */
 	MatchResult match(
 		const mrpt::obs::CObservation2DRangeScan& reference,
 		const mrpt::obs::CObservation2DRangeScan& current,
-		const mrpt::poses::CPosePDFGaussian& initialGuess);
+		const mrpt::poses::CPosePDFGaussian& initialGuess,
+		const mrpt::math::CMatrixDouble33& gateAllowance = {});
 
 	/** Same, on points already in a common frame (no sensor offsets). */
 	MatchResult match(

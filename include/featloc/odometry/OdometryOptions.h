@@ -33,6 +33,13 @@ struct OdometryOptions : public mrpt::config::CLoadableOptions
 	double no_odometry_sigma_xy = 1.0;	//!< [m]
 	double no_odometry_sigma_yaw = mrpt::DEG2RAD(30.0);	//!< [rad]
 
+	/** Format #1 odometry may have been read anywhere within the interval
+	 * between two scans: the EKF's gate and the matchers' guess gates allow
+	 * for the resulting offset at both ends of a match
+	 * (OdometrySamplingOffset). It widens the gates only, never the
+	 * odometry's weight in the estimate. */
+	bool action_sampling_offset = true;
+
 	/** Check the odometry covariance against the scan matches as the run
 	 * goes and inflate it when the log's (or the model's) is too small for
 	 * the disagreements seen (OdometryCovarianceCheck). Logs often store

@@ -58,6 +58,8 @@ class Pipeline
 	PoseEstimator::Ptr m_estimator;
 	ScanMatcher::Ptr m_matcher;
 	bool isNewKeyframe(const MatchResult* match) const;
+	/** The step's odometry when it came from format #1 actions, else zero. */
+	static mrpt::poses::CPose2D actionStep(const EstimationStep& step);
 
 	// The reference (keyframe) scan of the next match, the estimated pose
 	// there, and the odometry since then (its covariance is the guess's).
@@ -66,6 +68,9 @@ class Pipeline
 	// (with the log's covariances; the guess uses them times the check's
 	// factor, which scales a composed covariance exactly as its parts)
 	mrpt::poses::CPosePDFGaussian m_odometrySinceKeyframe;
+	/** The format #1 odometry step that ended at the keyframe scan (zero
+	 * otherwise), for OdometrySamplingOffset. */
+	mrpt::poses::CPose2D m_keyframeActionStep;
 	OdometryCovarianceCheck m_odometryCheck;
 	mrpt::Clock::time_point m_firstStepTime;
 };

@@ -1,0 +1,29 @@
+#include "featloc/odometry/OdometrySamplingOffset.h"
+
+#include <cmath>
+
+namespace featloc
+{
+namespace
+{
+void addStep(double dx, double dy, double dyaw, mrpt::math::CMatrixDouble33& cov)
+{
+	const double d[3] = {dx, dy, dyaw};
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j) cov(i, j) += d[i] * d[j] / 12.0;
+}
+}  // namespace
+
+mrpt::math::CMatrixDouble33 OdometrySamplingOffset::covariance(
+	const mrpt::poses::CPose2D& keyframeStep, const mrpt::poses::CPose2D& currentStep,
+	const mrpt::poses::CPose2D& motion)
+{
+	mrpt::math::CMatrixDouble33 cov;
+	cov.setZero();
+	addStep(keyframeStep.x(), keyframeStep.y(), keyframeStep.phi(), cov);
+	const double c = std::cos(motion.phi()), s = std::sin(motion.phi());
+	addStep(c * currentStep.x() - s * currentStep.y(), s * currentStep.x() + c * currentStep.y(),
+		currentStep.phi(), cov);
+	return cov;
+}
+}  // namespace featloc
