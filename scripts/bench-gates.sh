@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Issue 17's figures: matcher alone vs EKF, the matchers' guess gates on and
-# off, and [Odometry] covariance_check on and off, on the bundled log, the
+# off, [Odometry] action_sampling_offset on (default) and off (the gates
+# before it), and covariance_check on and off, on the bundled log, the
 # Malaga log (no ground truth: counts only), the shipped simulated scenes and
 # the six Radish CARMEN logs (their corrected poses as reference; never used
 # to choose any setting). ATE in mm (rmse after SE(2) alignment).
-# Usage: scripts/bench-gates.sh [OUTDIR]      (about 2 minutes)
+# Usage: scripts/bench-gates.sh [OUTDIR]      (about 4 minutes)
 set -euo pipefail
 source "$(dirname "$0")/bench-common.sh"
 bench_init gates "$@"
@@ -25,8 +26,8 @@ run() {
 
 echo
 echo "## Guess gates and the EKF gate (ATE mm, failures, fallbacks); -1 = no ground truth"
-echo "| log | matcher | matcher alone | matcher, guess gate off | EKF | EKF, gate off | EKF + covariance_check |"
-echo "|---|---|---|---|---|---|---|"
+echo "| log | matcher | matcher alone | matcher, guess gate off | matcher, sampling offset off | EKF | EKF, gate off | EKF, sampling offset off | EKF + covariance_check |"
+echo "|---|---|---|---|---|---|---|---|---|"
 for log in bundled malaga office lab corridor-people; do
   case $log in
     bundled) in=""; gt="";;
@@ -36,13 +37,15 @@ for log in bundled malaga office lab corridor-people; do
   for m in IcpMatcher PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
     c=(--set "ScanMatcher:class=featloc::$m")
     a=$(run "$log-$m-m" "$in" "$gt" "${c[@]}")
-    b="(no guess gate)"
+    b="(no guess gate)"; ao="(no guess gate)"
     case $m in IdcMatcher|CfIdcMatcher)
-      b=$(run "$log-$m-m0" "$in" "$gt" "${c[@]}" --set "ScanMatcher.$m:guess_gate_chi2=0");; esac
+      b=$(run "$log-$m-m0" "$in" "$gt" "${c[@]}" --set "ScanMatcher.$m:guess_gate_chi2=0")
+      ao=$(run "$log-$m-mo" "$in" "$gt" "${c[@]}" --set Odometry:action_sampling_offset=false);; esac
     e=$(run "$log-$m-e" "$in" "$gt" "${c[@]}" --set Pipeline:estimator=ekf)
     e0=$(run "$log-$m-e0" "$in" "$gt" "${c[@]}" --set Pipeline:estimator=ekf --set Ekf:matcher_gate_chi2=1e12)
+    eo=$(run "$log-$m-eo" "$in" "$gt" "${c[@]}" --set Pipeline:estimator=ekf --set Odometry:action_sampling_offset=false)
     ec=$(run "$log-$m-ec" "$in" "$gt" "${c[@]}" --set Pipeline:estimator=ekf --set Odometry:covariance_check=true)
-    echo "| $log | $m | $a | $b | $e | $e0 | $ec |"
+    echo "| $log | $m | $a | $b | $ao | $e | $e0 | $eo | $ec |"
   done
 done
 
