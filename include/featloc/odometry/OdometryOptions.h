@@ -42,11 +42,11 @@ struct OdometryOptions : public mrpt::config::CLoadableOptions
 
 	/** Check the odometry covariance against the scan matches as the run
 	 * goes and inflate it when the log's (or the model's) is too small for
-	 * the disagreements seen (OdometryCovarianceCheck). Logs often store
-	 * over-confident odometry covariances; the EKF's gate and the matchers'
-	 * guess gates then reject good matches. Off by default: where a
-	 * matcher is confidently wrong (ICP along a corridor) the check blames
-	 * odometry and weakens the gate that caught it (doc/benchmarks.md). */
+	 * the disagreements seen (OdometryCovarianceCheck). Off by default:
+	 * where a matcher is confidently wrong (ICP along a corridor) the check
+	 * blames odometry and weakens the gate that caught it, and on the logs
+	 * it was meant for, action_sampling_offset does its job
+	 * (doc/benchmarks.md). */
 	bool covariance_check = false;
 	/** The check uses the last this many converged matches. */
 	unsigned int covariance_check_window = 100;
