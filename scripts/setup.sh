@@ -8,7 +8,7 @@ PACKAGES=(
   build-essential cmake ccache pkg-config
   libmrpt-dev mrpt-apps mrpt-common
   libopencv-dev libopencv-contrib-dev libeigen3-dev libwxgtk3.2-dev
-  nlohmann-json3-dev libyaml-cpp-dev zlib1g-dev jq bc
+  nlohmann-json3-dev libyaml-cpp-dev zlib1g-dev jq bc python3
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri
 )
