@@ -3,6 +3,7 @@
 #include "featloc/app/RunConfiguration.h"
 #include "featloc/output/EstimatedRawlogWriter.h"
 #include "featloc/output/LandmarkTableWriter.h"
+#include "featloc/output/MatchTableWriter.h"
 #include "featloc/output/PoseCovarianceWriter.h"
 #include "featloc/output/ResultsFolder.h"
 #include "featloc/output/ScanMapSceneWriter.h"
@@ -32,6 +33,7 @@ RunOutputs RunOutputs::make(const RunConfiguration& rc, const ResultsFolder& fol
 		"trajectory.tum");
 	add(std::make_unique<PoseCovarianceWriter>(folder.stagedFile("poses_cov.txt")),
 		"poses_cov.txt");
+	add(std::make_unique<MatchTableWriter>(folder.stagedFile("matches.txt")), "matches.txt");
 	if (rc.output.write_rawlog)
 		add(std::make_unique<EstimatedRawlogWriter>(
 				folder.stagedFile("estimated.rawlog"), rc.output.pose_label),

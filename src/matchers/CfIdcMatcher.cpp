@@ -360,4 +360,28 @@ void CfIdcMatcher::matchPoints(
 		? 0.0
 		: static_cast<double>(r.pairs) / static_cast<double>(current.size());
 }
+MatchInspection CfIdcMatcher::inspectLastMatch(const ScanPoints& reference,
+	const ScanPoints& current, const mrpt::poses::CPose2D& sensorEstimate) const
+{
+	// IDC's pairs as the base class finds them, plus every segment of both
+	// scans with the curvature-function decision of section 3.
+	MatchInspection out = ScanMatcher::inspectLastMatch(reference, current, sensorEstimate);
+	auto addParts = [&](const std::vector<SegmentReport>& report, const ScanPoints& scan,
+						bool isCurrent) {
+		for (const auto& r : report)
+		{
+			MatchInspection::Part part;
+			part.current = isCurrent;
+			part.kept = r.kept;
+			part.kind = "segment";
+			for (uint32_t i = r.segment.first; i <= r.segment.last && i < scan.size(); i++)
+				part.points.push_back({scan.points[i].x, scan.points[i].y});
+			part.note = r.reason;
+			out.parts.push_back(std::move(part));
+		}
+	};
+	addParts(m_referenceReport, reference, false);
+	addParts(m_currentReport, current, true);
+	return out;
+}
 }  // namespace featloc

@@ -416,4 +416,40 @@ void PcmFeatureMatcher::matchPoints(
 		}
 	result.success = true;
 }
+MatchInspection PcmFeatureMatcher::inspectLastMatch(const ScanPoints& reference,
+	const ScanPoints& current, const mrpt::poses::CPose2D&) const
+{
+	// The features of both scans and the pairs of the last PCM iteration,
+	// centre to centre, with their membership mu_ij (section 4, eq. 15).
+	MatchInspection out;
+	out.pairsDescription = "PCM feature pairs of the last iteration (centre to centre)";
+	auto addParts = [&](const std::vector<ScanFeature>& features, const ScanPoints& scan,
+						bool isCurrent) {
+		for (size_t k = 0; k < features.size(); k++)
+		{
+			const ScanFeature& f = features[k];
+			MatchInspection::Part part;
+			part.current = isCurrent;
+			part.kind = f.kind == ScanFeature::Kind::Line ? "line" : "ellipse";
+			for (uint32_t i = f.firstPoint; i <= f.lastPoint && i < scan.size(); i++)
+				part.points.push_back({scan.points[i].x, scan.points[i].y});
+			double bestMu = 0;
+			for (const auto& p : m_pairs)
+				if ((isCurrent ? p.j : p.i) == k) bestMu = std::max(bestMu, p.mu);
+			part.kept = bestMu > 0;
+			char note[96];
+			std::snprintf(note, sizeof(note), "%s %zu, %.2f m, best mu %.2f", part.kind.c_str(), k,
+				f.length, bestMu);
+			part.note = bestMu > 0 ? note : std::string(note) + " (unpaired)";
+			out.parts.push_back(std::move(part));
+		}
+	};
+	addParts(m_reference, reference, false);
+	addParts(m_current, current, true);
+	for (const auto& p : m_pairs)
+		if (p.i < m_reference.size() && p.j < m_current.size())
+			out.pairs.push_back({{m_reference[p.i].x, m_reference[p.i].y},
+				{m_current[p.j].x, m_current[p.j].y}});
+	return out;
+}
 }  // namespace featloc

@@ -1,5 +1,6 @@
 #include "featloc/matchers/ScanMatcher.h"
 
+#include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -53,6 +54,8 @@ MatchResult ScanMatcher::match(
 	r.estimate.changeCoordinatesReference(s1);
 	r.estimate += mrpt::poses::CPose2D() - s2;
 	r.gateAllowance = gateAllowance;
+	r.guess = initialGuess;
+	r.referenceTime = reference.timestamp;
 	// In the robot frame, where the guess's uncertainty is what its
 	// source (odometry) says; in the sensor frames a lever arm couples it.
 	checkAgainstGuess(initialGuess, r);
@@ -68,6 +71,7 @@ MatchResult ScanMatcher::match(
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	MatchResult r = matchInSensorFrames(reference, current, initialGuess);
+	r.guess = initialGuess;
 	checkAgainstGuess(initialGuess, r);
 	r.timeSeconds =
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
@@ -121,4 +125,26 @@ MatchResult ScanMatcher::matchInSensorFrames(
 	return r;
 }
 
+MatchInspection ScanMatcher::inspectLastMatch(const ScanPoints& reference,
+	const ScanPoints& current, const mrpt::poses::CPose2D& sensorEstimate) const
+{
+	MatchInspection out;
+	char desc[120];
+	std::snprintf(desc, sizeof(desc), "nearest neighbours at the estimate within %.1f m",
+		kInspectionPairDistance);
+	out.pairsDescription = desc;
+	mrpt::maps::CSimplePointsMap map;
+	for (const auto& p : reference.points) map.insertPoint(p.x, p.y, 0);
+	if (map.empty()) return out;
+	for (const auto& p : current.points)
+	{
+		double wx = 0, wy = 0;
+		sensorEstimate.composePoint(p.x, p.y, wx, wy);
+		float rx = 0, ry = 0, d2 = 0;
+		map.kdTreeClosestPoint2D(static_cast<float>(wx), static_cast<float>(wy), rx, ry, d2);
+		if (d2 <= kInspectionPairDistance * kInspectionPairDistance)
+			out.pairs.push_back({{rx, ry}, {p.x, p.y}});
+	}
+	return out;
+}
 }  // namespace featloc

@@ -256,7 +256,8 @@ void Pipeline::processStep(
 	stats.landmarksInMap = landmarks.size();
 	const StereoStepResult* stereo = m_estimator->lastStereo();
 	if (stereo) countStereo(*stereo, stats);
-	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch, &landmarks, stereo};
+	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch, &landmarks, stereo,
+		matchPtr && !usedMatch && matchPtr->success ? m_estimator->lastFallbackReason() : ""};
 	for (auto* o : outputs) o->onStep(record);
 }
 

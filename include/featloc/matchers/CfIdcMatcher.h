@@ -102,6 +102,8 @@ class CfIdcMatcher : public ScanMatcher
 
 	const std::vector<SegmentReport>& lastCurrentSegments() const { return m_currentReport; }
 	const std::vector<SegmentReport>& lastReferenceSegments() const { return m_referenceReport; }
+	MatchInspection inspectLastMatch(const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPose2D& sensorEstimate) const override;
 
    protected:
 	double guessGateChi2() const override { return params.idc.guess_gate_chi2; }

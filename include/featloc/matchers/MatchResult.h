@@ -1,4 +1,5 @@
 #pragma once
+#include <mrpt/core/Clock.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
 
 #include <cstddef>
@@ -25,6 +26,11 @@ struct MatchResult
 	/** What the gates add to the guess's covariance (ScanMatcher::match's
 	 * gateAllowance; zero when none). */
 	mrpt::math::CMatrixDouble33 gateAllowance;
+	/** The initial guess the match started from (robot frame, as given to
+	 * ScanMatcher::match), kept for the outputs and the viewer. */
+	mrpt::poses::CPosePDFGaussian guess;
+	/** Timestamp of the reference scan (zero for point-set matches). */
+	mrpt::Clock::time_point referenceTime{};
 	unsigned int iterations = 0;
 	double timeSeconds = 0;	 //!< wall time of the match, conversions included
 	/** Fraction of current-scan points paired with the reference at the end,

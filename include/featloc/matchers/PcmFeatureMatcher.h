@@ -98,6 +98,8 @@ class PcmFeatureMatcher : public ScanMatcher
 	/** Features of the last match (sensor frames), for inspection. */
 	const std::vector<ScanFeature>& lastReferenceFeatures() const { return m_reference; }
 	const std::vector<ScanFeature>& lastCurrentFeatures() const { return m_current; }
+	MatchInspection inspectLastMatch(const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPose2D& sensorEstimate) const override;
 
    protected:
 	void matchPoints(

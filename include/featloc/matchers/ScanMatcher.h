@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "featloc/matchers/MatchInspection.h"
 #include "featloc/matchers/MatchResult.h"
 #include "featloc/scan/ScanPoints.h"
 
@@ -60,6 +61,17 @@ class ScanMatcher : public mrpt::rtti::CObject
 	MatchResult match(
 		const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPosePDFGaussian& initialGuess);
+
+	/** What the last match() used, for the viewer (MatchInspection), given
+	 * that match's scans as points in their sensor frames and its estimate
+	 * in the sensor frames (S1^-1 (+) X (+) S2). The default pairs each
+	 * current point with its nearest reference point at the estimate
+	 * (within kInspectionPairDistance); matchers that keep their own
+	 * pairs, features or segments report those. */
+	virtual MatchInspection inspectLastMatch(
+		const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPose2D& sensorEstimate) const;
+	static constexpr double kInspectionPairDistance = 0.3;	//!< [m]
 
 	/** The registered class name, e.g. "featloc::IcpMatcher". */
 	std::string className() const;

@@ -1,6 +1,7 @@
 #pragma once
 #include <mrpt/poses/CPosePDFGaussian.h>
 
+#include <string>
 #include <vector>
 
 #include "featloc/ekf/EstimatedLandmark.h"
@@ -28,5 +29,8 @@ struct StepRecord
 	/** What the stereo landmark extractor and the EKF made of this step's
 	 * stereo pair, or nullptr. */
 	const StereoStepResult* stereo = nullptr;
+	/** Why the estimator did not use a match it was given (its gate), or
+	 * empty. */
+	std::string fallbackReason;
 };
 }  // namespace featloc
