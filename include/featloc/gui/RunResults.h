@@ -1,0 +1,58 @@
+#pragma once
+#include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/math/TPose2D.h>
+#include <mrpt/obs/obs_frwds.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "featloc/eval/Trajectory.h"
+#include "featloc/io/MatchTableFile.h"
+
+namespace featloc
+{
+/** Everything featloc-viewer shows of one run, read from its results folder
+ * by RunResultsLoader. Steps are in time order; a step's scan and match are
+ * null / -1 when the run had none for it. */
+struct RunResults
+{
+	struct Step
+	{
+		double t = 0;  //!< [s]
+		mrpt::math::TPose2D pose;  //!< estimated robot pose (world frame)
+		mrpt::math::CMatrixDouble33 cov;
+		/** The step's scan (from estimated.rawlog), or null. */
+		std::shared_ptr<mrpt::obs::CObservation2DRangeScan> scan;
+		int match = -1;	 //!< index into `matches`, or -1
+		int reference = -1;	 //!< step of the match's reference scan, or -1
+	};
+	struct Landmark
+	{
+		double x = 0, y = 0;  //!< [m] world frame
+		double cxx = 0, cxy = 0, cyy = 0;  //!< [m^2]
+	};
+
+	std::string folder;	 //!< the results folder read
+	std::string estimator;	//!< from summary.json ("ekf", "matcher", ...)
+	std::string matcherClass;  //!< from config_used.ini
+	std::string configPath;	 //!< config_used.ini, "" if missing
+	std::vector<Step> steps;
+	std::vector<MatchTableFile::Row> matches;
+	std::optional<Trajectory> groundTruth;
+	/** Takes ground-truth poses into the estimate's frame: the inverse of
+	 * the SE(2) alignment featloc-run applied to the estimate before its ATE
+	 * (summary.json evaluation.alignment; identity without one). */
+	mrpt::math::TPose2D groundTruthToEstimate;
+	/** nees.txt rows: time [s], NEES (3 dof). */
+	std::vector<std::pair<double, double>> nees;
+	std::vector<Landmark> landmarks;
+	/** What could not be read, one sentence each naming the file: the
+	 * viewer opens what it can and shows these. */
+	std::vector<std::string> problems;
+
+	/** The step whose time is nearest to t (steps must not be empty). */
+	size_t stepNearest(double t) const;
+};
+}  // namespace featloc

@@ -1,0 +1,51 @@
+#pragma once
+#include <wx/frame.h>
+
+#include <string>
+
+#include "featloc/gui/RunResults.h"
+
+class wxNotebook;
+
+namespace featloc
+{
+class MapCanvas;
+class MatchPanel;
+class PlotsPanel;
+class TimelineBar;
+
+/** featloc-viewer's main window: a timeline over the run's steps and three
+ * pages, the map (MapCanvas), the current match (MatchPanel) and the plots
+ * (PlotsPanel). Space plays or pauses, Left/Right step. */
+class ViewerFrame : public wxFrame
+{
+   public:
+	enum class Page
+	{
+		Map = 0,
+		Match = 1,
+		Plots = 2
+	};
+
+	ViewerFrame();
+	/** Loads a results folder (RunResultsLoader); throws InputError when it
+	 * is not one. Problems with single files are shown in the status bar
+	 * and printed on stderr. */
+	void openResults(const std::string& folder, bool showProgress);
+	void showStep(size_t i);
+	void showPage(Page page);
+	const RunResults& results() const { return m_results; }
+	const MatchPanel& matchPanel() const { return *m_match; }
+
+   private:
+	void buildMenu();
+	void onKey(wxKeyEvent& e);
+
+	RunResults m_results;
+	TimelineBar* m_timeline;
+	wxNotebook* m_pages;
+	MapCanvas* m_map;
+	MatchPanel* m_match;
+	PlotsPanel* m_plots;
+};
+}  // namespace featloc

@@ -1,0 +1,211 @@
+#include "featloc/gui/MapCanvas.h"
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/opengl/CEllipsoid2D.h>
+#include <mrpt/opengl/CPointCloud.h>
+#include <mrpt/opengl/CSetOfLines.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <algorithm>
+
+#include "featloc/scan/ScanPoints.h"
+
+namespace featloc
+{
+namespace
+{
+template <typename T>
+void colour(T& obj, const unsigned char (&rgb)[3])
+{
+	obj.setColor_u8(rgb[0], rgb[1], rgb[2]);
+}
+
+// (CPointCloud::setAllPointsFast() locks its mutex twice in MRPT 2.5.8:
+// "resource deadlock avoided".)
+mrpt::opengl::CPointCloud::Ptr cloud(
+	const std::vector<mrpt::math::TPoint3Df>& pts, const unsigned char (&rgb)[3], float size)
+{
+	auto c = mrpt::opengl::CPointCloud::Create();
+	c->resize(pts.size());
+	for (size_t i = 0; i < pts.size(); i++) c->setPoint_fast(i, pts[i].x, pts[i].y, pts[i].z);
+	colour(*c, rgb);
+	c->setPointSize(size);
+	return c;
+}
+
+// Heights above the scans (z = 0) that keep what matters on top (the
+// camera looks down; equal depths would hide the later object).
+constexpr double kGroundTruthZ = 0.015, kTrajectoryZ = 0.02;
+
+mrpt::opengl::CSetOfLines::Ptr polyline(const std::vector<mrpt::math::TPose2D>& poses,
+	const unsigned char (&rgb)[3], float width, double z)
+{
+	auto lines = mrpt::opengl::CSetOfLines::Create();
+	for (size_t i = 1; i < poses.size(); i++)
+		lines->appendLine(poses[i - 1].x, poses[i - 1].y, z, poses[i].x, poses[i].y, z);
+	colour(*lines, rgb);
+	lines->setLineWidth(width);
+	lines->enableAntiAliasing(false);  // exact colours, for the eye and the tests
+	return lines;
+}
+
+mrpt::opengl::CEllipsoid2D::Ptr ellipse(
+	double x, double y, double cxx, double cxy, double cyy, const unsigned char (&rgb)[3])
+{
+	auto e = mrpt::opengl::CEllipsoid2D::Create();
+	mrpt::math::CMatrixDouble22 c;
+	c(0, 0) = cxx;
+	c(0, 1) = c(1, 0) = cxy;
+	c(1, 1) = cyy;
+	e->setCovMatrixAndMean(c, mrpt::math::CVectorFixedDouble<2>({x, y}));
+	e->setQuantiles(3.0f);
+	colour(*e, rgb);
+	e->setLineWidth(2);
+	e->setLocation(0, 0, 0.025);
+	return e;
+}
+}  // namespace
+
+MapCanvas::MapCanvas(wxWindow* parent) : CWxGLCanvasBase(parent)
+{
+	// A map is looked at from above: dragging pans instead of orbiting.
+	Unbind(wxEVT_MOTION, &CWxGLCanvasBase::OnMouseMove, static_cast<CWxGLCanvasBase*>(this));
+	Bind(wxEVT_MOTION, &MapCanvas::onMouseMove, this);
+	setCameraProjective(false);
+	setElevationDegrees(90);
+	setAzimuthDegrees(-90);
+	setMinimumZoom(0.05f);
+	setMaximumZoom(1e5f);
+}
+
+void MapCanvas::onMouseMove(wxMouseEvent& event)
+{
+	const int x = event.GetX(), y = event.GetY();
+	updateLastPos(x, y);
+	if (event.LeftIsDown() || event.RightIsDown())
+	{
+		CamaraParams params = cameraParams();
+		updatePan(params, x, y);
+		setMousePos(x, y);
+		setCameraParams(params);
+		Refresh(false);
+	}
+}
+
+void MapCanvas::placeScan(
+	size_t step, float z, std::vector<mrpt::math::TPoint3Df>& points) const
+{
+	const auto& s = m_results->steps[step];
+	if (!s.scan) return;
+	const mrpt::poses::CPose3D robot(mrpt::poses::CPose2D(s.pose));
+	const mrpt::poses::CPose3D sensor = robot + s.scan->sensorPose;
+	for (const ScanPoint& p : ScanPoints::fromScan(*s.scan).points)
+	{
+		double x, y, unusedZ;
+		sensor.composePoint(p.x, p.y, 0, x, y, unusedZ);
+		points.emplace_back(static_cast<float>(x), static_cast<float>(y), z);
+	}
+}
+
+void MapCanvas::setResults(const RunResults& results)
+{
+	m_results = &results;
+	auto scene = getOpenGLSceneRef();
+	scene->clear();
+	scene->getViewport()->setCustomBackgroundColor({1.f, 1.f, 1.f});
+
+	std::vector<mrpt::math::TPoint3Df> all;
+	for (size_t i = 0; i < results.steps.size(); i++) placeScan(i, 0.f, all);
+	scene->insert(cloud(all, kScans, 1.5f));
+
+	std::vector<mrpt::math::TPose2D> est, gt;
+	for (const auto& s : results.steps) est.push_back(s.pose);
+	if (results.groundTruth)
+		for (const auto& p : results.groundTruth->poses)
+			gt.push_back((mrpt::poses::CPose2D(results.groundTruthToEstimate) + mrpt::poses::CPose2D(p.pose)).asTPose());
+	scene->insert(polyline(gt, kGroundTruth, 2.f, kGroundTruthZ));
+	scene->insert(polyline(est, kTrajectory, 2.f, kTrajectoryZ));
+	for (const auto& l : results.landmarks)
+		scene->insert(ellipse(l.x, l.y, l.cxx, l.cxy, l.cyy, {160, 60, 200}));
+
+	m_robot = mrpt::opengl::CSetOfLines::Create();
+	m_robot->setLineWidth(2.f);
+	m_robot->setColor_u8(0, 0, 0);
+	m_robotEllipse = ellipse(0, 0, 1e-6, 0, 1e-6, {240, 140, 0});
+	scene->insert(m_robotEllipse);
+	scene->insert(m_robot);
+
+	// What fitAll shows: the paths and the scans, without the 1% of scan
+	// points furthest out on each side (stray long ranges).
+	std::vector<double> xs, ys;
+	for (const auto* path : {&est, &gt})
+		for (const auto& p : *path) xs.push_back(p.x), ys.push_back(p.y);
+	const size_t step = std::max<size_t>(1, all.size() / 20000);
+	for (size_t k = 0; k < all.size(); k += step) xs.push_back(all[k].x), ys.push_back(all[k].y);
+	auto range = [](std::vector<double>& v, double& lo, double& hi) {
+		if (v.empty())
+		{
+			lo = 0, hi = 1;
+			return;
+		}
+		std::sort(v.begin(), v.end());
+		lo = v[v.size() / 100];
+		hi = v[v.size() - 1 - v.size() / 100];
+	};
+	range(xs, m_minX, m_maxX);
+	range(ys, m_minY, m_maxY);
+	fitAll();
+	setStep(0);
+}
+
+void MapCanvas::setStep(size_t i)
+{
+	if (!m_results || i >= m_results->steps.size()) return;
+	const auto& s = m_results->steps[i];
+	// Above the other scans (z), so that the depth test keeps them on top.
+	std::vector<mrpt::math::TPoint3Df> current, reference;
+	placeScan(i, 0.01f, current);
+	if (s.reference >= 0) placeScan(static_cast<size_t>(s.reference), 0.005f, reference);
+	// New clouds rather than changed ones: MRPT 2.5.8 does not redraw a
+	// CPointCloud whose points change after it was inserted.
+	auto scene = getOpenGLSceneRef();
+	scene->removeObject(m_current);
+	scene->removeObject(m_reference);
+	m_current = cloud(current, kCurrentScan, 3.f);
+	m_reference = cloud(reference, kReferenceScan, 3.f);
+	scene->insert(m_reference);
+	scene->insert(m_current);
+	// The robot: a triangle pointing along its heading, 0.3 m long.
+	const mrpt::poses::CPose2D p(s.pose);
+	const double tri[3][2] = {{0.3, 0}, {-0.1, 0.1}, {-0.1, -0.1}};
+	m_robot->clear();
+	for (int k = 0; k < 3; k++)
+	{
+		double ax, ay, bx, by;
+		p.composePoint(tri[k][0], tri[k][1], ax, ay);
+		p.composePoint(tri[(k + 1) % 3][0], tri[(k + 1) % 3][1], bx, by);
+		m_robot->appendLine(ax, ay, 0.03, bx, by, 0.03);
+	}
+	mrpt::math::CMatrixDouble22 c = s.cov.blockCopy<2, 2>(0, 0);
+	if (c(0, 0) <= 0 || c(1, 1) <= 0) c(0, 0) = c(1, 1) = 1e-10;
+	m_robotEllipse->setCovMatrixAndMean(c, mrpt::math::CVectorFixedDouble<2>({p.x(), p.y()}));
+	Refresh(false);
+}
+
+void MapCanvas::fitAll()
+{
+	int w = 0, h = 0;
+	GetClientSize(&w, &h);
+	const double ratio = h > 0 ? static_cast<double>(w) / h : 1.0;
+	const double hx = 0.55 * std::max(m_maxX - m_minX, 1.0);
+	const double hy = 0.55 * std::max(m_maxY - m_minY, 1.0);
+	// MRPT's orthographic camera shows a half-height of zoom/4 (half-width
+	// when the window is taller than wide), TRenderMatrices.
+	const double zoom = 4 * (ratio >= 1 ? std::max(hy, hx / ratio) : std::max(hx, hy * ratio));
+	setCameraPointing(static_cast<float>(0.5 * (m_minX + m_maxX)),
+		static_cast<float>(0.5 * (m_minY + m_maxY)), 0.f);
+	setZoomDistance(static_cast<float>(zoom));
+	Refresh(false);
+}
+}  // namespace featloc

@@ -1,0 +1,17 @@
+#include "featloc/gui/RunResults.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace featloc
+{
+size_t RunResults::stepNearest(double t) const
+{
+	const auto it = std::lower_bound(
+		steps.begin(), steps.end(), t, [](const Step& s, double v) { return s.t < v; });
+	if (it == steps.end()) return steps.size() - 1;
+	const size_t i = static_cast<size_t>(it - steps.begin());
+	if (i > 0 && std::abs(steps[i - 1].t - t) <= std::abs(it->t - t)) return i - 1;
+	return i;
+}
+}  // namespace featloc

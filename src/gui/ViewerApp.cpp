@@ -1,0 +1,169 @@
+#include "featloc/gui/ViewerApp.h"
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <wx/app.h>
+#include <wx/image.h>
+#include <wx/init.h>
+#include <wx/timer.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "featloc/app/AppMain.h"
+#include "featloc/app/RunApp.h"
+#include "featloc/app/UsageError.h"
+#include "featloc/core/InputError.h"
+#include "featloc/gui/MatchPanel.h"
+#include "featloc/gui/ViewerFrame.h"
+#include "featloc/gui/WindowScreenshot.h"
+
+namespace featloc
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+// The wx application object: the frame is created by ViewerApp::main.
+class WxApp : public wxApp
+{
+   public:
+	bool OnInit() override { return true; }
+};
+
+// featloc-run on a rawlog into a fresh temporary folder; returns the folder.
+std::string runOnRawlog(const std::string& rawlog, std::string config)
+{
+	// TCLAP remembers process-wide that an optional unlabeled argument was
+	// declared (the viewer's INPUT) and would refuse featloc-run's own.
+	TCLAP::OptionalUnlabeledTracker<>::alreadyOptional() = false;
+	char tmpl[] = "/tmp/featloc-viewer-XXXXXX";
+	if (!mkdtemp(tmpl)) throw InputError("cannot create a temporary folder in /tmp");
+	const std::string dir = tmpl;
+	if (config.empty())
+	{
+		// The built-in defaults, which are config.ini's.
+		config = dir + "/defaults.ini";
+		std::vector<std::string> args = {"featloc-run", "--write-config", config};
+		std::vector<char*> argv;
+		for (auto& a : args) argv.push_back(a.data());
+		if (RunApp().main(static_cast<int>(argv.size()), argv.data()) != 0)
+			throw InputError("cannot write the default configuration to " + config);
+	}
+	std::cerr << "featloc-viewer: running featloc-run " << config << " " << rawlog << " into "
+			  << dir << "/results\n";
+	std::vector<std::string> args = {
+		"featloc-run", config, rawlog, "--out", dir + "/results", "-q"};
+	std::vector<char*> argv;
+	for (auto& a : args) argv.push_back(a.data());
+	const int code = RunApp().main(static_cast<int>(argv.size()), argv.data());
+	if (code != 0)
+		throw InputError("featloc-run failed on '" + rawlog + "' (exit code " +
+			std::to_string(code) + "): see its messages above");
+	return dir + "/results";
+}
+
+ViewerFrame::Page parsePage(const std::string& name)
+{
+	if (name == "map") return ViewerFrame::Page::Map;
+	if (name == "match") return ViewerFrame::Page::Match;
+	if (name == "plots") return ViewerFrame::Page::Plots;
+	throw UsageError("--view must be map, match or plots, not '" + name + "'");
+}
+}  // namespace
+
+int ViewerApp::main(int argc, char** argv)
+{
+	TCLAP::CmdLine cmd(
+		"featloc-viewer: look inside featloc runs. INPUT is a featloc-run results folder, or "
+		"a rawlog (run through featloc-run first, with --config or the built-in defaults). "
+		"Map, match and plot pages over a timeline; Space plays, Left/Right step.",
+		' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> argInput(
+		"input", "Results folder or rawlog", false, "", "INPUT", cmd);
+	TCLAP::ValueArg<std::string> argConfig(
+		"c", "config", "featloc ini for a rawlog INPUT", false, "", "INI", cmd);
+	TCLAP::ValueArg<std::string> argShot(
+		"", "screenshot", "Save the window as a PNG and exit", false, "", "FILE", cmd);
+	TCLAP::ValueArg<size_t> argStep("", "step", "Step to show (0-based)", false, 0, "N", cmd);
+	TCLAP::ValueArg<std::string> argView(
+		"", "view", "Page to show: map, match or plots", false, "map", "PAGE", cmd);
+	TCLAP::ValueArg<std::string> argSize(
+		"", "size", "Window size in pixels", false, "1200x850", "WxH", cmd);
+	int exitCode = 0;
+	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
+	const ViewerFrame::Page page = parsePage(argView.getValue());
+	int width = 0, height = 0;
+	if (std::sscanf(argSize.getValue().c_str(), "%dx%d", &width, &height) != 2 || width < 200 ||
+		height < 200)
+		throw UsageError("--size must be WxH, at least 200x200, not '" + argSize.getValue() + "'");
+
+	// Everything that can fail is checked before a window opens.
+	std::string folder;
+	const std::string input = argInput.getValue();
+	if (!input.empty())
+	{
+		if (!fs::exists(input)) throw InputError("'" + input + "': no such file or folder");
+		folder = fs::is_directory(input) ? input : runOnRawlog(input, argConfig.getValue());
+	}
+	const char* display = std::getenv("DISPLAY");
+	const char* wayland = std::getenv("WAYLAND_DISPLAY");
+	if ((!display || !*display) && (!wayland || !*wayland))
+		throw InputError(
+			"featloc-viewer needs a display, and DISPLAY is not set (run it on a desktop, over "
+			"ssh -X, or under xvfb-run)");
+
+	wxApp::SetInstance(new WxApp);
+	int wxArgc = 1;
+	char* wxArgv[] = {argv[0], nullptr};
+	if (!wxEntryStart(wxArgc, wxArgv))
+		throw InputError(std::string("featloc-viewer cannot open the display '") +
+			(display ? display : "") + "' (wxWidgets could not initialise GTK)");
+	struct Cleanup
+	{
+		~Cleanup() { wxEntryCleanup(); }
+	} cleanup;
+	wxTheApp->CallOnInit();
+	wxInitAllImageHandlers();
+
+	auto* frame = new ViewerFrame;
+	frame->SetSize(width, height);
+	frame->Show();
+	const std::string shot = argShot.getValue();
+	if (!folder.empty())
+	{
+		frame->openResults(folder, shot.empty());
+		if (argStep.getValue() >= frame->results().steps.size())
+			throw UsageError("--step " + std::to_string(argStep.getValue()) + ": the run has " +
+				std::to_string(frame->results().steps.size()) + " steps");
+		frame->showPage(page);
+		frame->showStep(argStep.getValue());
+	}
+	int result = 0;
+	wxTimer timer;
+	if (!shot.empty())
+	{
+		// Give the window and its GL canvas time to be laid out and drawn.
+		timer.Bind(wxEVT_TIMER, [&](wxTimerEvent&) {
+			try
+			{
+				frame->Refresh();
+				frame->Update();
+				WindowScreenshot::save(*frame, shot);
+				std::cout << "featloc-viewer: screenshot " << shot << "\n";
+				if (page == ViewerFrame::Page::Match)
+					std::cout << frame->matchPanel().summaryText();
+			}
+			catch (const std::exception& e)
+			{
+				std::cerr << "featloc-viewer: " << e.what() << "\n";
+				result = 1;
+			}
+			frame->Close(true);
+		});
+		timer.StartOnce(800);
+	}
+	wxTheApp->OnRun();
+	return result;
+}
+}  // namespace featloc

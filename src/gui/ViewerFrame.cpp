@@ -1,0 +1,173 @@
+#include "featloc/gui/ViewerFrame.h"
+
+#include <wx/dirdlg.h>
+#include <wx/filedlg.h>
+#include <wx/menu.h>
+#include <wx/msgdlg.h>
+#include <wx/notebook.h>
+#include <wx/progdlg.h>
+#include <wx/sizer.h>
+#include <wx/statusbr.h>
+
+#include <iostream>
+
+#include "featloc/gui/MapCanvas.h"
+#include "featloc/gui/MatchPanel.h"
+#include "featloc/gui/PlotsPanel.h"
+#include "featloc/gui/RunResultsLoader.h"
+#include "featloc/gui/TimelineBar.h"
+#include "featloc/gui/WindowScreenshot.h"
+
+namespace featloc
+{
+ViewerFrame::ViewerFrame()
+	: wxFrame(nullptr, wxID_ANY, "featloc-viewer", wxDefaultPosition, wxSize(1200, 850))
+{
+	auto* sizer = new wxBoxSizer(wxVERTICAL);
+	m_timeline = new TimelineBar(this);
+	m_pages = new wxNotebook(this, wxID_ANY);
+	m_map = new MapCanvas(m_pages);
+	m_match = new MatchPanel(m_pages);
+	m_plots = new PlotsPanel(m_pages);
+	m_pages->AddPage(m_map, "Map");
+	m_pages->AddPage(m_match, "Match");
+	m_pages->AddPage(m_plots, "Plots");
+	sizer->Add(m_timeline, 0, wxEXPAND);
+	sizer->Add(m_pages, 1, wxEXPAND);
+	SetSizer(sizer);
+	CreateStatusBar(2);
+	const int widths[] = {-1, -2};
+	SetStatusWidths(2, widths);
+	SetStatusText("open a results folder or a rawlog (File menu)");
+	buildMenu();
+
+	m_timeline->onStep = [this](size_t i) { showStep(i); };
+	m_plots->onPickStep = [this](size_t i) {
+		m_timeline->setStep(i);
+		showStep(i);
+	};
+	m_pages->Bind(wxEVT_NOTEBOOK_PAGE_CHANGED, [this](wxBookCtrlEvent& e) {
+		e.Skip();
+		if (!m_results.steps.empty()) showStep(m_timeline->step());
+	});
+	Bind(wxEVT_CHAR_HOOK, &ViewerFrame::onKey, this);
+}
+
+void ViewerFrame::buildMenu()
+{
+	auto* file = new wxMenu;
+	const int openId = wxWindow::NewControlId(), shotId = wxWindow::NewControlId();
+	file->Append(openId, "&Open results folder...\tCtrl+O");
+	file->Append(shotId, "Save &screenshot...\tCtrl+S");
+	file->AppendSeparator();
+	file->Append(wxID_EXIT, "&Quit\tCtrl+Q");
+	auto* bar = new wxMenuBar;
+	bar->Append(file, "&File");
+	SetMenuBar(bar);
+	Bind(wxEVT_MENU, [this](wxCommandEvent&) { Close(); }, wxID_EXIT);
+	Bind(
+		wxEVT_MENU,
+		[this](wxCommandEvent&) {
+			wxDirDialog dlg(this, "Open a featloc-run results folder");
+			if (dlg.ShowModal() != wxID_OK) return;
+			try
+			{
+				openResults(dlg.GetPath().ToStdString(), true);
+			}
+			catch (const std::exception& e)
+			{
+				wxMessageBox(e.what(), "featloc-viewer", wxICON_ERROR, this);
+			}
+		},
+		openId);
+	Bind(
+		wxEVT_MENU,
+		[this](wxCommandEvent&) {
+			wxFileDialog dlg(this, "Save a screenshot", "", "featloc-viewer.png", "PNG (*.png)|*.png",
+				wxFD_SAVE | wxFD_OVERWRITE_PROMPT);
+			if (dlg.ShowModal() != wxID_OK) return;
+			try
+			{
+				WindowScreenshot::save(*this, dlg.GetPath().ToStdString());
+			}
+			catch (const std::exception& e)
+			{
+				wxMessageBox(e.what(), "featloc-viewer", wxICON_ERROR, this);
+			}
+		},
+		shotId);
+}
+
+void ViewerFrame::openResults(const std::string& folder, bool showProgress)
+{
+	std::unique_ptr<wxProgressDialog> progress;
+	if (showProgress)
+		progress = std::make_unique<wxProgressDialog>("featloc-viewer", "reading " + folder, 1000, this);
+	RunResults loaded = RunResultsLoader::load(folder, [&](double f) {
+		if (progress) progress->Update(static_cast<int>(999 * f));
+	});
+	progress.reset();
+	m_results = std::move(loaded);
+	m_map->setResults(m_results);
+	m_match->setResults(m_results);
+	m_plots->setResults(m_results);
+	std::vector<double> times;
+	for (const auto& s : m_results.steps) times.push_back(s.t);
+	m_timeline->setTimes(times);
+	SetTitle("featloc-viewer: " + folder);
+	size_t scans = 0;
+	for (const auto& s : m_results.steps) scans += s.scan ? 1 : 0;
+	SetStatusText(wxString::Format("%zu steps, %zu scans, %zu matches; estimator %s, matcher %s",
+					  m_results.steps.size(), scans, m_results.matches.size(),
+					  m_results.estimator.empty() ? "?" : m_results.estimator.c_str(),
+					  m_results.matcherClass.empty() ? "?" : m_results.matcherClass.c_str()),
+		0);
+	std::string problems;
+	for (const auto& p : m_results.problems)
+	{
+		std::cerr << "featloc-viewer: " << folder << ": " << p << "\n";
+		problems += (problems.empty() ? "" : "; ") + p;
+	}
+	SetStatusText(problems.empty() ? wxString("every file read") : wxString("not shown: " + problems), 1);
+	showStep(0);
+}
+
+void ViewerFrame::showStep(size_t i)
+{
+	if (i >= m_results.steps.size()) return;
+	m_timeline->setStep(i);
+	// Only the visible page is updated while playing: the match page runs
+	// the matcher again, which costs as much as the run did.
+	switch (static_cast<Page>(m_pages->GetSelection()))
+	{
+		case Page::Map: m_map->setStep(i); break;
+		case Page::Match: m_match->setStep(i); break;
+		case Page::Plots: m_plots->setStep(i); break;
+	}
+}
+
+void ViewerFrame::showPage(Page page) { m_pages->SetSelection(static_cast<size_t>(page)); }
+
+void ViewerFrame::onKey(wxKeyEvent& e)
+{
+	if (m_results.steps.empty() || wxWindow::FindFocus() == nullptr)
+	{
+		e.Skip();
+		return;
+	}
+	const auto* focus = wxWindow::FindFocus();
+	if (dynamic_cast<const wxTextCtrl*>(focus))  // typing parameters
+	{
+		e.Skip();
+		return;
+	}
+	const size_t i = m_timeline->step();
+	switch (e.GetKeyCode())
+	{
+		case WXK_SPACE: m_timeline->setPlaying(!m_timeline->playing()); break;
+		case WXK_RIGHT: showStep(std::min(i + 1, m_results.steps.size() - 1)); break;
+		case WXK_LEFT: showStep(i > 0 ? i - 1 : 0); break;
+		default: e.Skip();
+	}
+}
+}  // namespace featloc

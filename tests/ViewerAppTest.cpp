@@ -1,0 +1,254 @@
+// App-level tests of featloc-viewer: the real app in a real window under
+// Xvfb, on the results of real runs of the bundled log; its --screenshot
+// PNGs are checked for what must be drawn.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "featloc/eval/TrajectoryFile.h"
+#include "support/CommandRunner.h"
+#include "support/TempDir.h"
+
+using featloc::test::CommandResult;
+using featloc::test::runCommand;
+using featloc::test::shellQuote;
+using featloc::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kRun = FEATLOC_RUN_EXE;
+const std::string kViewer = FEATLOC_VIEWER_EXE;
+const std::string kSource = FEATLOC_SOURCE_DIR;
+const std::string kConfig = kSource + "/config.ini";
+
+// MapCanvas's colours (RGB 30,80,220 / 20,170,60 / 230,30,30 / 0,190,190),
+// told apart by their dominant hue: lines are antialiased, so their pixels
+// are blends with the white background.
+enum class Hue
+{
+	Blue,
+	Green,
+	Red,
+	Cyan
+};
+const Hue kTrajectory = Hue::Blue, kGroundTruth = Hue::Green, kCurrentScan = Hue::Red,
+		  kReferenceScan = Hue::Cyan;
+
+std::string runInto(const std::string& dir, const std::string& estimator)
+{
+	const CommandResult r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " --out " +
+		shellQuote(dir) + " -q --set Pipeline:estimator=" + estimator + " 2>&1");
+	EXPECT_EQ(r.exitCode, 0) << r.output;
+	return dir;
+}
+
+CommandResult viewer(const std::string& args)
+{
+	// Run from the source folder, where config.ini's relative ground-truth
+	// path points, as a user would.
+	return runCommand("cd " + shellQuote(kSource) + " && xvfb-run -a -s '-screen 0 1600x1200x24' " +
+		shellQuote(kViewer) + " " + args + " 2>&1");
+}
+
+cv::Mat screenshot(const std::string& results, const std::string& png, const std::string& extra)
+{
+	const CommandResult r =
+		viewer(shellQuote(results) + " --screenshot " + shellQuote(png) + " " + extra);
+	EXPECT_EQ(r.exitCode, 0) << r.output;
+	cv::Mat bgr = cv::imread(png, cv::IMREAD_COLOR);
+	EXPECT_FALSE(bgr.empty()) << png << " was not written: " << r.output;
+	return bgr;
+}
+
+bool is(const cv::Vec3b& bgr, Hue hue)
+{
+	const int b = bgr[0], g = bgr[1], r = bgr[2];
+	switch (hue)
+	{
+		case Hue::Blue: return b > g + 30 && b > r + 60;
+		case Hue::Green: return g > r + 40 && g > b + 20;
+		case Hue::Red: return r > g + 100 && r > b + 100;
+		case Hue::Cyan: return g > r + 80 && b > r + 80 && std::abs(g - b) < 40;
+	}
+	return false;
+}
+
+// Rows above this are the timeline and the tabs (at --size 1200x850).
+constexpr int kMapTop = 90;
+
+std::vector<cv::Point> pixelsOf(const cv::Mat& img, Hue hue)
+{
+	std::vector<cv::Point> out;
+	for (int y = 0; y < img.rows; y++)
+		for (int x = 0; x < img.cols; x++)
+			if (is(img.at<cv::Vec3b>(y, x), hue)) out.emplace_back(x, y);
+	return out;
+}
+
+// The trajectory is drawn where it is: the blue pixels' bounding box has
+// the world trajectory's aspect ratio (one scale on both axes), and the
+// first pose, placed in that box with y up, lands on a blue pixel.
+void expectTrajectoryDrawn(const cv::Mat& img, const std::string& posesCov)
+{
+	const auto traj = featloc::TrajectoryFile::read(posesCov).poses;
+	double minX = 1e9, maxX = -1e9, minY = 1e9, maxY = -1e9;
+	for (const auto& p : traj)
+		minX = std::min(minX, p.pose.x), maxX = std::max(maxX, p.pose.x),
+		minY = std::min(minY, p.pose.y), maxY = std::max(maxY, p.pose.y);
+	// Below the timeline and the page tabs, whose GTK theme is blue too.
+	std::vector<cv::Point> blue;
+	for (const auto& p : pixelsOf(img, kTrajectory))
+		if (p.y >= kMapTop) blue.push_back(p);
+	ASSERT_GT(blue.size(), 300u) << "trajectory pixels";
+	const cv::Rect box = cv::boundingRect(blue);
+	EXPECT_NEAR(box.width / double(box.height), (maxX - minX) / (maxY - minY), 0.05)
+		<< "world and screen aspect ratios differ";
+	const double u = box.x + (traj[0].pose.x - minX) / (maxX - minX) * box.width;
+	const double v = box.y + (maxY - traj[0].pose.y) / (maxY - minY) * box.height;
+	const bool onIt = std::any_of(blue.begin(), blue.end(), [&](const cv::Point& p) {
+		return std::hypot(p.x - u, p.y - v) <= 5;
+	});
+	EXPECT_TRUE(onIt) << "no trajectory pixel where the first pose is (" << u << ", " << v << ")";
+}
+}  // namespace
+
+TEST(Viewer, OpensOdometryMatcherAndEkfResultsAndDrawsTheirMaps)
+{
+	TempDir tmp;
+	for (const std::string estimator : {"odometry", "matcher", "ekf"})
+	{
+		SCOPED_TRACE(estimator);
+		const std::string dir = runInto(tmp.file(estimator), estimator);
+		const cv::Mat img =
+			screenshot(dir, tmp.file(estimator + ".png"), "--step 252 --size 1200x850");
+		ASSERT_FALSE(img.empty());
+		expectTrajectoryDrawn(img, dir + "/poses_cov.txt");
+		EXPECT_GT(pixelsOf(img, kGroundTruth).size(), 300u) << "ground truth pixels";
+		EXPECT_GT(pixelsOf(img, kCurrentScan).size(), 50u) << "current scan pixels";
+		if (estimator != "odometry")  // only matches have a reference scan
+		{
+			EXPECT_GT(pixelsOf(img, kReferenceScan).size(), 20u) << "reference scan pixels";
+		}
+	}
+}
+
+TEST(Viewer, MatchViewShowsWhyAMatchWasNotUsedAndReproducesIt)
+{
+	TempDir tmp;
+	const std::string dir = runInto(tmp.file("ekf"), "ekf");
+	const CommandResult r = viewer(
+		shellQuote(dir) + " --view match --step 252 --screenshot " + shellQuote(tmp.file("m.png")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	// Step 252 is where the log's odometry was read off the scan's instant:
+	// the EKF's gate refused ICP's match (doc/benchmarks.md, issue 17).
+	EXPECT_NE(r.output.find("status: ok, NOT used"), std::string::npos) << r.output;
+	EXPECT_NE(r.output.find("reason: the match disagrees with the prediction"), std::string::npos)
+		<< r.output;
+	// Run again on the same pair with the same guess, ICP finds the same
+	// motion.
+	const auto first = r.output.find("estimate: ");
+	const auto second = r.output.find("estimate: ", first + 1);
+	ASSERT_NE(second, std::string::npos) << r.output;
+	EXPECT_EQ(r.output.substr(first, r.output.find('\n', first) - first),
+		r.output.substr(second, r.output.find('\n', second) - second));
+	EXPECT_NE(r.output.find("what it used: "), std::string::npos) << r.output;
+	const cv::Mat img = cv::imread(tmp.file("m.png"));
+	ASSERT_FALSE(img.empty());
+	EXPECT_GT(pixelsOf(img, Hue::Red).size(), 200u) << "current scan in the match view";
+}
+
+TEST(Viewer, MatchViewShowsPcmFeaturesAndCfIdcSegments)
+{
+	TempDir tmp;
+	for (const std::string cls : {"PcmFeatureMatcher", "CfIdcMatcher"})
+	{
+		SCOPED_TRACE(cls);
+		const std::string dir = tmp.file(cls);
+		const CommandResult run = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) +
+			" --out " + shellQuote(dir) + " -q --set ScanMatcher:class=featloc::" + cls + " 2>&1");
+		ASSERT_EQ(run.exitCode, 0) << run.output;
+		const CommandResult r = viewer(shellQuote(dir) + " --view match --step 100 --screenshot " +
+			shellQuote(tmp.file(cls + ".png")));
+		ASSERT_EQ(r.exitCode, 0) << r.output;
+		EXPECT_NE(r.output.find("lines, clusters or segments kept"), std::string::npos) << r.output;
+		if (cls == "PcmFeatureMatcher")
+		{
+			EXPECT_NE(r.output.find("PCM feature pairs"), std::string::npos) << r.output;
+		}
+	}
+}
+
+TEST(Viewer, PlotsShowErrorNeesAndMatchTime)
+{
+	TempDir tmp;
+	const std::string dir = runInto(tmp.file("ekf"), "ekf");
+	const cv::Mat img = screenshot(dir, tmp.file("p.png"), "--view plots --step 400");
+	ASSERT_FALSE(img.empty());
+	EXPECT_GT(pixelsOf(img, Hue::Blue).size(), 2000u) << "three series";
+	size_t band = 0;  // the NEES band's light green (200, 235, 200)
+	for (int y = 0; y < img.rows; y++)
+		for (int x = 0; x < img.cols; x++)
+		{
+			const auto& p = img.at<cv::Vec3b>(y, x);
+			band += p[2] == 200 && p[1] == 235 && p[0] == 200;
+		}
+	EXPECT_GT(band, 5000u) << "NEES 95% band";
+}
+
+TEST(Viewer, OpensARawlogByRunningItFirst)
+{
+	TempDir tmp;
+	const CommandResult r = viewer(shellQuote(kSource + "/rawlogs/mrpt-simul/simul.rawlog") +
+		" --screenshot " + shellQuote(tmp.file("r.png")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("running featloc-run"), std::string::npos) << r.output;
+	const cv::Mat img = cv::imread(tmp.file("r.png"));
+	ASSERT_FALSE(img.empty());
+	EXPECT_GT(pixelsOf(img, kTrajectory).size(), 300u);
+}
+
+TEST(Viewer, MissingOrDamagedFilesOpenWhatItCanAndSaySo)
+{
+	TempDir tmp;
+	const std::string dir = runInto(tmp.file("ekf"), "ekf");
+	fs::remove(dir + "/nees.txt");
+	std::ofstream(dir + "/matches.txt", std::ios::app) << "1.0 garbage\n";
+	const cv::Mat img = screenshot(dir, tmp.file("d.png"), "");
+	ASSERT_FALSE(img.empty());
+	EXPECT_GT(pixelsOf(img, kTrajectory).size(), 300u) << "the map still opens";
+	const CommandResult r = viewer(shellQuote(dir) + " --screenshot " + shellQuote(tmp.file("e.png")));
+	EXPECT_NE(r.output.find("nees.txt is missing"), std::string::npos) << r.output;
+	EXPECT_NE(r.output.find("matches.txt could not be read"), std::string::npos) << r.output;
+	EXPECT_NE(r.output.find("not a match-table row"), std::string::npos) << r.output;
+}
+
+TEST(Viewer, BadInputsAreClearErrorsNotCrashes)
+{
+	TempDir tmp;
+	const std::string dir = runInto(tmp.file("odo"), "odometry");
+	// No display.
+	CommandResult r = runCommand("env -u DISPLAY -u WAYLAND_DISPLAY " + shellQuote(kViewer) + " " +
+		shellQuote(dir) + " 2>&1");
+	EXPECT_EQ(r.exitCode, 1) << r.output;
+	EXPECT_NE(r.output.find("needs a display"), std::string::npos) << r.output;
+	// A folder that is not a results folder, a missing input.
+	r = viewer(shellQuote(tmp.path().string()) + " --screenshot /dev/null");
+	EXPECT_EQ(r.exitCode, 1) << r.output;
+	EXPECT_NE(r.output.find("has no poses_cov.txt"), std::string::npos) << r.output;
+	r = viewer(shellQuote(tmp.file("nothing-here")));
+	EXPECT_EQ(r.exitCode, 1) << r.output;
+	EXPECT_NE(r.output.find("no such file or folder"), std::string::npos) << r.output;
+	// Usage errors: exit 2.
+	r = viewer(shellQuote(dir) + " --view sideways");
+	EXPECT_EQ(r.exitCode, 2) << r.output;
+	EXPECT_NE(r.output.find("--view must be map, match or plots"), std::string::npos) << r.output;
+	r = viewer(shellQuote(dir) + " --step 100000 --screenshot /dev/null");
+	EXPECT_EQ(r.exitCode, 2) << r.output;
+}
