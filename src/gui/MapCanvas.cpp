@@ -8,6 +8,9 @@
 #include <mrpt/poses/CPose3D.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_set>
 
 #include "featloc/scan/ScanPoints.h"
 
@@ -32,6 +35,31 @@ mrpt::opengl::CPointCloud::Ptr cloud(
 	colour(*c, rgb);
 	c->setPointSize(size);
 	return c;
+}
+
+// The map's scans are drawn one point per cell: a robot sees the same
+// walls again and again, so a long log's millions of points shrink to what
+// the walls are. Cells of 2, 4, 8 and 16 cm; each redraw uses the finest
+// that is not smaller than a pixel (OnPreRender), so redraws stay fast
+// however long the log.
+constexpr double kMapCellSize = 0.02;  // [m]
+constexpr float kPixelsPerCell = 2;
+
+std::vector<mrpt::math::TPoint3Df> onePerCell(
+	const std::vector<mrpt::math::TPoint3Df>& pts, double cell)
+{
+	std::unordered_set<uint64_t> seen;
+	seen.reserve(pts.size() / 4);
+	std::vector<mrpt::math::TPoint3Df> out;
+	for (const auto& p : pts)
+	{
+		const auto ix = static_cast<int32_t>(std::floor(p.x / cell));
+		const auto iy = static_cast<int32_t>(std::floor(p.y / cell));
+		const uint64_t key = (static_cast<uint64_t>(static_cast<uint32_t>(ix)) << 32) |
+			static_cast<uint32_t>(iy);
+		if (seen.insert(key).second) out.push_back(p);
+	}
+	return out;
 }
 
 // Heights above the scans (z = 0) that keep what matters on top (the
@@ -93,6 +121,24 @@ void MapCanvas::onMouseMove(wxMouseEvent& event)
 	}
 }
 
+void MapCanvas::OnPreRender()
+{
+	if (m_levels.empty()) return;
+	int w = 0, h = 0;
+	GetClientSize(&w, &h);
+	// MRPT's orthographic view spans zoom/2 over the window's smaller side.
+	const double metresPerPixel = 0.5 * getZoomDistance() / std::max(1, std::min(w, h));
+	// The finest level whose cells are at least kPixelsPerCell pixels (its
+	// points are drawn that big): finer ones would only put more points in
+	// the same pixels, at a cost that grows with the log's length.
+	size_t use = 0;
+	while (use + 1 < m_levels.size() && m_levels[use].first < kPixelsPerCell * metresPerPixel)
+		use++;
+	for (size_t i = 0; i < m_levels.size(); i++)
+		if (m_levels[i].second->isVisible() != (i == use))  // a change costs an upload
+			m_levels[i].second->setVisibility(i == use);
+}
+
 void MapCanvas::placeScan(
 	size_t step, float z, std::vector<mrpt::math::TPoint3Df>& points) const
 {
@@ -117,7 +163,12 @@ void MapCanvas::setResults(const RunResults& results)
 
 	std::vector<mrpt::math::TPoint3Df> all;
 	for (size_t i = 0; i < results.steps.size(); i++) placeScan(i, 0.f, all);
-	scene->insert(cloud(all, kScans, 1.5f));
+	m_levels.clear();
+	for (double cell = kMapCellSize; cell <= 8 * kMapCellSize; cell *= 2)
+	{
+		m_levels.emplace_back(cell, cloud(onePerCell(all, cell), kScans, kPixelsPerCell));
+		scene->insert(m_levels.back().second);
+	}
 
 	std::vector<mrpt::math::TPose2D> est, gt;
 	for (const auto& s : results.steps) est.push_back(s.pose);

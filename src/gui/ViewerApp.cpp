@@ -6,6 +6,7 @@
 #include <wx/init.h>
 #include <wx/timer.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -88,6 +89,9 @@ int ViewerApp::main(int argc, char** argv)
 	TCLAP::ValueArg<size_t> argStep("", "step", "Step to show (0-based)", false, 0, "N", cmd);
 	TCLAP::ValueArg<std::string> argView(
 		"", "view", "Page to show: map, match or plots", false, "map", "PAGE", cmd);
+	TCLAP::ValueArg<unsigned> argRedraws("", "measure-redraws",
+		"Redraw the map page N times, print the time per redraw and exit (benchmarks)", false, 0,
+		"N", cmd);
 	TCLAP::ValueArg<std::string> argSize(
 		"", "size", "Window size in pixels", false, "1200x850", "WxH", cmd);
 	int exitCode = 0;
@@ -132,7 +136,13 @@ int ViewerApp::main(int argc, char** argv)
 	const std::string shot = argShot.getValue();
 	if (!folder.empty())
 	{
-		frame->openResults(folder, shot.empty());
+		const auto t0 = std::chrono::steady_clock::now();
+		frame->openResults(folder, shot.empty() && argRedraws.getValue() == 0);
+		size_t scans = 0;
+		for (const auto& s : frame->results().steps) scans += s.scan ? 1 : 0;
+		std::cout << "featloc-viewer: read " << folder << " in "
+				  << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()
+				  << " s (" << frame->results().steps.size() << " steps, " << scans << " scans)\n";
 		if (argStep.getValue() >= frame->results().steps.size())
 			throw UsageError("--step " + std::to_string(argStep.getValue()) + ": the run has " +
 				std::to_string(frame->results().steps.size()) + " steps");
@@ -141,7 +151,17 @@ int ViewerApp::main(int argc, char** argv)
 	}
 	int result = 0;
 	wxTimer timer;
-	if (!shot.empty())
+	if (argRedraws.getValue() > 0)
+	{
+		timer.Bind(wxEVT_TIMER, [&](wxTimerEvent&) {
+			const double seconds = frame->measureMapRedraws(argRedraws.getValue());
+			std::cout << "featloc-viewer: map redraw " << 1e3 * seconds << " ms on average over "
+					  << argRedraws.getValue() << " (" << 1 / seconds << " frames per second)\n";
+			frame->Close(true);
+		});
+		timer.StartOnce(800);
+	}
+	else if (!shot.empty())
 	{
 		// Give the window and its GL canvas time to be laid out and drawn.
 		timer.Bind(wxEVT_TIMER, [&](wxTimerEvent&) {

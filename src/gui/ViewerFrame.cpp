@@ -9,6 +9,8 @@
 #include <wx/sizer.h>
 #include <wx/statusbr.h>
 
+#include <algorithm>
+#include <chrono>
 #include <iostream>
 
 #include "featloc/gui/MapCanvas.h"
@@ -144,6 +146,23 @@ void ViewerFrame::showStep(size_t i)
 		case Page::Match: m_match->setStep(i); break;
 		case Page::Plots: m_plots->setStep(i); break;
 	}
+}
+
+double ViewerFrame::measureMapRedraws(unsigned n)
+{
+	showPage(Page::Map);
+	m_map->fitAll();
+	m_map->Update();
+	const float zoom = m_map->getZoomDistance();
+	const auto t0 = std::chrono::steady_clock::now();
+	for (unsigned i = 0; i < n; i++)
+	{
+		m_map->setZoomDistance(zoom * (i % 2 ? 1.01f : 0.99f));
+		m_map->Refresh(false);
+		m_map->Update();  // paints now: MapCanvas renders and swaps buffers
+	}
+	return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() /
+		std::max(n, 1u);
 }
 
 void ViewerFrame::showPage(Page page) { m_pages->SetSelection(static_cast<size_t>(page)); }

@@ -1,6 +1,9 @@
 #pragma once
 #include <mrpt/gui/CWxGLCanvasBase.h>
 #include <mrpt/math/TPoint3D.h>
+
+#include <utility>
+#include <vector>
 #include <mrpt/opengl/opengl_frwds.h>
 
 namespace mrpt::opengl
@@ -38,6 +41,9 @@ class MapCanvas : public mrpt::gui::CWxGLCanvasBase
 	static constexpr unsigned char kReferenceScan[3] = {0, 190, 190};
 	static constexpr unsigned char kScans[3] = {150, 150, 150};
 
+   protected:
+	void OnPreRender() override;
+
    private:
 	void onMouseMove(wxMouseEvent& event);
 	/** Appends step's scan points in the world frame at height z. */
@@ -45,6 +51,8 @@ class MapCanvas : public mrpt::gui::CWxGLCanvasBase
 
 	const RunResults* m_results = nullptr;
 	std::shared_ptr<mrpt::opengl::CPointCloud> m_current, m_reference;
+	/** The map's scans at several cell sizes [m] (one drawn at a time). */
+	std::vector<std::pair<double, std::shared_ptr<mrpt::opengl::CPointCloud>>> m_levels;
 	std::shared_ptr<mrpt::opengl::CSetOfLines> m_robot;
 	std::shared_ptr<mrpt::opengl::CEllipsoid2D> m_robotEllipse;
 	double m_minX = 0, m_minY = 0, m_maxX = 1, m_maxY = 1;	//!< what fitAll shows [m]

@@ -35,6 +35,10 @@ class ViewerFrame : public wxFrame
 	void showStep(size_t i);
 	void showPage(Page page);
 	const RunResults& results() const { return m_results; }
+	/** Shows the map page and redraws it `n` times, each with a slightly
+	 * different zoom (so nothing can be reused), each drawn to the screen
+	 * before the next; returns the mean seconds per redraw. */
+	double measureMapRedraws(unsigned n);
 	const MatchPanel& matchPanel() const { return *m_match; }
 
    private:
