@@ -252,3 +252,27 @@ TEST(Viewer, BadInputsAreClearErrorsNotCrashes)
 	r = viewer(shellQuote(dir) + " --step 100000 --screenshot /dev/null");
 	EXPECT_EQ(r.exitCode, 2) << r.output;
 }
+
+TEST(Viewer, RematchRunsAnotherClassOrParametersOnTheSamePair)
+{
+	TempDir tmp;
+	const std::string dir = runInto(tmp.file("m"), "matcher");
+	const std::string base =
+		shellQuote(dir) + " --view match --step 120 --screenshot " + shellQuote(tmp.file("r.png"));
+	CommandResult r = viewer(base + " --rematch IdcMatcher --rematch-set 'max_iterations = 3'");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("re-matched: featloc::IdcMatcher: failed, 3 iterations"),
+		std::string::npos) << r.output;
+	EXPECT_NE(r.output.find("no convergence in 3 iterations"), std::string::npos) << r.output;
+	r = viewer(base + " --rematch PcmFeatureMatcher");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("re-matched: featloc::PcmFeatureMatcher: success"), std::string::npos)
+		<< r.output;
+	// A key the class does not have is an error naming the section and key.
+	r = viewer(base + " --rematch IdcMatcher --rematch-set maxIterations=5");
+	EXPECT_NE(r.output.find("[ScanMatcher.IdcMatcher] has no key 'maxIterations'"),
+		std::string::npos) << r.output;
+	r = viewer(base + " --rematch NoSuchMatcher");
+	EXPECT_EQ(r.exitCode, 2) << r.output;
+	EXPECT_NE(r.output.find("no matcher class 'NoSuchMatcher'"), std::string::npos) << r.output;
+}

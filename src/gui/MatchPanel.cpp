@@ -14,8 +14,11 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <sstream>
+#include <vector>
 
+#include "featloc/app/UsageError.h"
 #include "featloc/gui/ScanPairPanel.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/scan/ScanPoints.h"
@@ -104,6 +107,17 @@ std::string MatchPanel::runMatcher(const std::string& className, const std::stri
 	}
 	cfg.write("ScanMatcher", "class", className);
 	const std::string section = ScanMatcherFactory::paramsSection(className);
+	// The keys this class reads are the ones it writes: a typo is an error,
+	// not a parameter silently left at its default.
+	std::set<std::string> known;
+	{
+		mrpt::config::CConfigFileMemory saved;
+		ScanMatcherFactory::create(className)->saveParams(saved, section);
+		std::vector<std::string> keys;
+		saved.getAllKeys(section, keys);
+		for (std::string k : keys)	// written padded for alignment
+			known.insert(k.erase(k.find_last_not_of(' ') + 1));
+	}
 	std::istringstream lines(overrides);
 	std::string line;
 	while (std::getline(lines, line))
@@ -117,7 +131,15 @@ std::string MatchPanel::runMatcher(const std::string& className, const std::stri
 			s.erase(s.find_last_not_of(" \t\r") + 1);
 			return s;
 		};
-		cfg.write(section, trim(line.substr(0, eq)), trim(line.substr(eq + 1)));
+		const std::string key = trim(line.substr(0, eq));
+		if (!known.count(key))
+		{
+			std::string list;
+			for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+			throw std::runtime_error(
+				"[" + section + "] has no key '" + key + "' (its keys: " + list + ")");
+		}
+		cfg.write(section, key, trim(line.substr(eq + 1)));
 	}
 	auto matcher = ScanMatcherFactory::createFromConfig(cfg);
 	const mrpt::poses::CPosePDFGaussian guess(mrpt::poses::CPose2D(row.guess), row.guessCov);
@@ -133,6 +155,10 @@ std::string MatchPanel::runMatcher(const std::string& className, const std::stri
 	if (!used.parts.empty())
 		usedOut << "; " << kept << " of " << used.parts.size() << " lines, clusters or segments kept";
 	usedOut << "\n";
+	for (const auto& part : used.parts)
+		if (!part.kept)
+			usedOut << "  dropped " << (part.current ? "current " : "reference ") << part.kind << " ("
+					<< part.points.size() << " points): " << part.note << "\n";
 	const std::string usedText = usedOut.str();
 	panel.setMatch(ref.scan, step.scan, r.estimate.mean.asTPose(), std::move(used), caption);
 	std::ostringstream out;
@@ -212,5 +238,22 @@ void MatchPanel::rematch()
 	}
 }
 
+void MatchPanel::setRematchControls(const std::string& className, const std::string& params)
+{
+	const std::string name =
+		className.find("::") == std::string::npos ? "featloc::" + className : className;
+	const int i = m_class->FindString(name);
+	if (i == wxNOT_FOUND)
+	{
+		std::string known;
+		for (const auto& n : ScanMatcherFactory::knownClassNames())
+			known += (known.empty() ? "" : ", ") + n;
+		throw UsageError("--rematch: no matcher class '" + className + "' (known: " + known + ")");
+	}
+	m_class->SetSelection(i);
+	m_params->SetValue(params);
+}
+
 std::string MatchPanel::summaryText() const { return m_info->GetValue().ToStdString(); }
+std::string MatchPanel::rematchText() const { return m_rerunInfo->GetValue().ToStdString(); }
 }  // namespace featloc

@@ -99,15 +99,6 @@ void ScanPairPanel::onPaint(wxPaintEvent&)
 	dc.SetPen(wxPen(wxColour(190, 190, 190), 1));
 	for (const auto& pr : m_inspection.pairs)
 		dc.DrawLine(P(place(toRef, pr.reference)), P(place(toCur, pr.current)));
-	for (const auto& part : m_inspection.parts)
-	{
-		const auto& T = part.current ? toCur : toRef;
-		const wxColour c = part.kept ? rgb(part.current ? kCurrent : kReference)
-									 : wxColour(170, 170, 170);
-		dc.SetPen(wxPen(c, part.kept ? 3 : 1, part.kept ? wxPENSTYLE_SOLID : wxPENSTYLE_SHORT_DASH));
-		for (size_t i = 1; i < part.points.size(); i++)
-			dc.DrawLine(P(place(T, part.points[i - 1])), P(place(T, part.points[i])));
-	}
 	auto drawPoints = [&](const std::vector<mrpt::math::TPoint2D>& pts, const unsigned char (&c)[3]) {
 		dc.SetPen(wxPen(rgb(c), 1));
 		dc.SetBrush(wxBrush(rgb(c)));
@@ -115,6 +106,17 @@ void ScanPairPanel::onPaint(wxPaintEvent&)
 	};
 	drawPoints(ref, kReference);
 	drawPoints(cur, kCurrent);
+	// Over the points: what the matcher kept (a thin dark line along each
+	// part) and, in orange, what it dropped, which is what one looks for.
+	for (const auto& part : m_inspection.parts)
+	{
+		const auto& T = part.current ? toCur : toRef;
+		dc.SetPen(part.kept ? wxPen(wxColour(60, 60, 60), 1) : wxPen(rgb(kDropped), 4));
+		for (size_t i = 1; i < part.points.size(); i++)
+			dc.DrawLine(P(place(T, part.points[i - 1])), P(place(T, part.points[i])));
+		if (!part.kept && part.points.size() == 1)
+			dc.DrawCircle(P(place(T, part.points[0])), 4);
+	}
 	// 1 m scale bar.
 	dc.SetPen(wxPen(*wxBLACK, 2));
 	dc.DrawLine(10, bottom + 8, 10 + static_cast<int>(scale), bottom + 8);
@@ -123,11 +125,11 @@ void ScanPairPanel::onPaint(wxPaintEvent&)
 	size_t dropped = 0;
 	for (const auto& part : m_inspection.parts) dropped += part.kept ? 0 : 1;
 	std::ostringstream legend;
-	legend << "cyan: reference, red: current at the estimate, grey lines: "
-		   << m_inspection.pairs.size() << " pairs";
+	legend << "cyan: reference, red: current at the estimate, grey: " << m_inspection.pairs.size()
+		   << " pairs";
 	if (!m_inspection.parts.empty())
-		legend << "; " << m_inspection.parts.size() - dropped << " parts kept (thick), " << dropped
-			   << " dropped (dashed)";
+		legend << "; dark: " << m_inspection.parts.size() - dropped << " parts kept, orange: "
+			   << dropped << " dropped";
 	dc.DrawText(legend.str(), 5, bottom + 20);
 	dc.DrawText(m_caption, 5, bottom + 38);
 }

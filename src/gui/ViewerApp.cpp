@@ -89,6 +89,12 @@ int ViewerApp::main(int argc, char** argv)
 	TCLAP::ValueArg<size_t> argStep("", "step", "Step to show (0-based)", false, 0, "N", cmd);
 	TCLAP::ValueArg<std::string> argView(
 		"", "view", "Page to show: map, match or plots", false, "map", "PAGE", cmd);
+	TCLAP::ValueArg<std::string> argRematch("", "rematch",
+		"With --view match: re-match the step's pair with this matcher class", false, "", "CLASS",
+		cmd);
+	TCLAP::MultiArg<std::string> argRematchSet("", "rematch-set",
+		"A parameter of the --rematch class, KEY=VALUE as in the ini (repeatable)", false,
+		"KEY=VALUE", cmd);
 	TCLAP::ValueArg<unsigned> argRedraws("", "measure-redraws",
 		"Redraw the map page N times, print the time per redraw and exit (benchmarks)", false, 0,
 		"N", cmd);
@@ -148,6 +154,13 @@ int ViewerApp::main(int argc, char** argv)
 				std::to_string(frame->results().steps.size()) + " steps");
 		frame->showPage(page);
 		frame->showStep(argStep.getValue());
+		if (!argRematch.getValue().empty())
+		{
+			std::string params;
+			for (const auto& kv : argRematchSet.getValue()) params += kv + "\n";
+			frame->matchPanel().setRematchControls(argRematch.getValue(), params);
+			frame->matchPanel().rematch();
+		}
 	}
 	int result = 0;
 	wxTimer timer;
@@ -172,7 +185,8 @@ int ViewerApp::main(int argc, char** argv)
 				WindowScreenshot::save(*frame, shot);
 				std::cout << "featloc-viewer: screenshot " << shot << "\n";
 				if (page == ViewerFrame::Page::Match)
-					std::cout << frame->matchPanel().summaryText();
+					std::cout << frame->matchPanel().summaryText() << "re-matched: "
+							  << frame->matchPanel().rematchText() << "\n";
 			}
 			catch (const std::exception& e)
 			{

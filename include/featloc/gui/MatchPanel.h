@@ -29,8 +29,11 @@ class MatchPanel : public wxPanel
 	/** Re-matches the current pair with the class and parameters in the
 	 * controls (what the "Re-match" button does). */
 	void rematch();
-	/** The text shown for the run's match (for the tests). */
+	/** Sets the re-match controls: a class name and `key = value` lines. */
+	void setRematchControls(const std::string& className, const std::string& params);
+	/** The texts shown for the run's match and for the re-match. */
 	std::string summaryText() const;
+	std::string rematchText() const;
 
    private:
 	/** Runs the matcher made from the run's config plus `overrides` on the

@@ -12,8 +12,8 @@ namespace featloc
 {
 /** One match drawn in the reference scan's robot frame (wxDC): the
  * reference scan, the current scan placed by the match's estimate, the
- * pairs the matcher used, and its lines, clusters or segments (kept: solid,
- * dropped: thin and grey, with the reason listed). */
+ * pairs the matcher used, and its lines, clusters or segments (kept: a
+ * thin dark line, dropped: thick orange; MatchPanel lists the reasons). */
 class ScanPairPanel : public wxPanel
 {
    public:
@@ -28,6 +28,7 @@ class ScanPairPanel : public wxPanel
 
 	static constexpr unsigned char kReference[3] = {0, 160, 160};
 	static constexpr unsigned char kCurrent[3] = {230, 30, 30};
+	static constexpr unsigned char kDropped[3] = {255, 150, 0};
 
    private:
 	void onPaint(wxPaintEvent&);

@@ -39,7 +39,7 @@ class ViewerFrame : public wxFrame
 	 * different zoom (so nothing can be reused), each drawn to the screen
 	 * before the next; returns the mean seconds per redraw. */
 	double measureMapRedraws(unsigned n);
-	const MatchPanel& matchPanel() const { return *m_match; }
+	MatchPanel& matchPanel() { return *m_match; }
 
    private:
 	void buildMenu();
