@@ -248,7 +248,7 @@ TEST(Viewer, BadInputsAreClearErrorsNotCrashes)
 	// Usage errors: exit 2.
 	r = viewer(shellQuote(dir) + " --view sideways");
 	EXPECT_EQ(r.exitCode, 2) << r.output;
-	EXPECT_NE(r.output.find("--view must be map, match or plots"), std::string::npos) << r.output;
+	EXPECT_NE(r.output.find("--view must be map, match, plots or stereo"), std::string::npos) << r.output;
 	r = viewer(shellQuote(dir) + " --step 100000 --screenshot /dev/null");
 	EXPECT_EQ(r.exitCode, 2) << r.output;
 }
@@ -275,4 +275,29 @@ TEST(Viewer, RematchRunsAnotherClassOrParametersOnTheSamePair)
 	r = viewer(base + " --rematch NoSuchMatcher");
 	EXPECT_EQ(r.exitCode, 2) << r.output;
 	EXPECT_NE(r.output.find("no matcher class 'NoSuchMatcher'"), std::string::npos) << r.output;
+}
+
+TEST(Viewer, StereoPageShowsTheRunsPictureAndTheSegmentStage)
+{
+	TempDir tmp;
+	const std::string dir = tmp.file("stereo");
+	const CommandResult run = runCommand(shellQuote(kRun) + " " +
+		shellQuote(kSource + "/configs/stereo-moon-lab.ini") + " --out " + shellQuote(dir) +
+		" -q 2>&1");
+	ASSERT_EQ(run.exitCode, 0) << run.output;
+	// Step 8 has a stereo pair and the run's picture (stereo_debug_every = 4).
+	ASSERT_TRUE(fs::exists(dir + "/stereo_debug/000008.png"));
+	CommandResult r = viewer(shellQuote(dir) + " --view stereo --step 8 --screenshot " +
+		shellQuote(tmp.file("s.png")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("segment stage: "), std::string::npos) << r.output;
+	EXPECT_EQ(r.output.find("wrote no picture"), std::string::npos) << r.output;
+	const cv::Mat img = cv::imread(tmp.file("s.png"));
+	ASSERT_FALSE(img.empty());
+	EXPECT_GT(pixelsOf(img, Hue::Green).size(), 500u) << "selected and supported segments";
+	// A step without a pair says so.
+	r = viewer(shellQuote(dir) + " --view stereo --step 9 --screenshot " +
+		shellQuote(tmp.file("t.png")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("no stereo pair at this step"), std::string::npos) << r.output;
 }

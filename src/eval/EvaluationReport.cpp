@@ -3,6 +3,7 @@
 #include <mrpt/core/bits_math.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <nlohmann/json.hpp>
@@ -106,7 +107,11 @@ std::string EvaluationReport::toJson() const
 	j["estimate"] = estimate;
 	if (hasTrajectoryMetrics)
 	{
-		j["reference"] = reference;
+		// Absolute, so that the results folder names its reference wherever
+		// it is read from (featloc-viewer draws it).
+		std::error_code ec;
+		const auto absolute = std::filesystem::weakly_canonical(reference, ec);
+		j["reference"] = ec || reference.empty() ? reference : absolute.string();
 		j["reference_poses"] = referencePoses;
 		j["estimate_poses"] = estimatePoses;
 		j["associated"] = associated;

@@ -177,8 +177,18 @@ void MapCanvas::setResults(const RunResults& results)
 			gt.push_back((mrpt::poses::CPose2D(results.groundTruthToEstimate) + mrpt::poses::CPose2D(p.pose)).asTPose());
 	scene->insert(polyline(gt, kGroundTruth, 2.f, kGroundTruthZ));
 	scene->insert(polyline(est, kTrajectory, 2.f, kTrajectoryZ));
+	// Landmarks: a cross 0.2 m wide (seen at any zoom) and the 3-sigma
+	// ellipse (often smaller than a pixel on a whole-map view).
+	auto crosses = mrpt::opengl::CSetOfLines::Create();
 	for (const auto& l : results.landmarks)
-		scene->insert(ellipse(l.x, l.y, l.cxx, l.cxy, l.cyy, {160, 60, 200}));
+	{
+		scene->insert(ellipse(l.x, l.y, l.cxx, l.cxy, l.cyy, kLandmarks));
+		crosses->appendLine(l.x - 0.1, l.y, 0.02, l.x + 0.1, l.y, 0.02);
+		crosses->appendLine(l.x, l.y - 0.1, 0.02, l.x, l.y + 0.1, 0.02);
+	}
+	colour(*crosses, kLandmarks);
+	crosses->enableAntiAliasing(false);
+	scene->insert(crosses);
 
 	m_robot = mrpt::opengl::CSetOfLines::Create();
 	m_robot->setLineWidth(2.f);
@@ -187,25 +197,26 @@ void MapCanvas::setResults(const RunResults& results)
 	scene->insert(m_robotEllipse);
 	scene->insert(m_robot);
 
-	// What fitAll shows: the paths and the scans, without the 1% of scan
-	// points furthest out on each side (stray long ranges).
+	// What fitAll shows: the paths whole, and the scans without the 1% of
+	// their points furthest out on each side (stray long ranges).
 	std::vector<double> xs, ys;
-	for (const auto* path : {&est, &gt})
-		for (const auto& p : *path) xs.push_back(p.x), ys.push_back(p.y);
 	const size_t step = std::max<size_t>(1, all.size() / 20000);
 	for (size_t k = 0; k < all.size(); k += step) xs.push_back(all[k].x), ys.push_back(all[k].y);
 	auto range = [](std::vector<double>& v, double& lo, double& hi) {
-		if (v.empty())
-		{
-			lo = 0, hi = 1;
-			return;
-		}
+		lo = 1e300, hi = -1e300;
+		if (v.empty()) return;
 		std::sort(v.begin(), v.end());
 		lo = v[v.size() / 100];
 		hi = v[v.size() - 1 - v.size() / 100];
 	};
 	range(xs, m_minX, m_maxX);
 	range(ys, m_minY, m_maxY);
+	for (const auto* path : {&est, &gt})
+		for (const auto& p : *path)
+		{
+			m_minX = std::min(m_minX, p.x), m_maxX = std::max(m_maxX, p.x);
+			m_minY = std::min(m_minY, p.y), m_maxY = std::max(m_maxY, p.y);
+		}
 	fitAll();
 	setStep(0);
 }

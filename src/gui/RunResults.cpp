@@ -14,4 +14,11 @@ size_t RunResults::stepNearest(double t) const
 	if (i > 0 && std::abs(steps[i - 1].t - t) <= std::abs(it->t - t)) return i - 1;
 	return i;
 }
+
+const RunResults::StereoFrame* RunResults::stereoAt(size_t step) const
+{
+	const auto it = std::lower_bound(stereo.begin(), stereo.end(), step,
+		[](const StereoFrame& f, size_t s) { return f.step < s; });
+	return it != stereo.end() && it->step == step ? &*it : nullptr;
+}
 }  // namespace featloc

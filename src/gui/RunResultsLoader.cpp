@@ -7,6 +7,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -15,6 +16,7 @@
 #include "featloc/core/InputError.h"
 #include "featloc/eval/TrajectoryFile.h"
 #include "featloc/io/RawlogReader.h"
+#include "featloc/pipeline/StereoPairReader.h"
 
 namespace featloc
 {
@@ -63,6 +65,25 @@ void readScans(const std::string& path, const std::string& poseLabel, RunResults
 	if (attached == 0)
 		r.problems.push_back(path + ": no scan carries a '" + poseLabel +
 			"' pose of this run: the map view has no scans");
+}
+
+// The stereo pairs, checked and decoded as featloc-run does (their image
+// names were made absolute by the run), each with the run's own picture.
+void readStereo(const std::string& path, RunResults& r)
+{
+	StereoPairReader reader(path);
+	StereoPairReader::Pair pair;
+	while (reader.next(pair))
+	{
+		const double t = mrpt::Clock::toDouble(pair.observation->timestamp);
+		const size_t step = r.stepNearest(t);
+		if (std::abs(r.steps[step].t - t) > kSameTime) continue;
+		char name[32];
+		std::snprintf(name, sizeof(name), "%06zu.png", step);
+		const fs::path picture = fs::path(path).parent_path() / "stereo_debug" / name;
+		r.stereo.push_back({step, pair.observation, pair.images,
+			fs::exists(picture) ? picture.string() : std::string()});
+	}
 }
 
 void readMatches(const std::string& path, RunResults& r)
@@ -145,18 +166,21 @@ RunResults RunResultsLoader::load(
 		r.steps.push_back({p.t, p.pose, p.cov, nullptr, -1, -1});
 	if (r.steps.empty()) throw InputError(poses + ": no poses (the run processed no step)");
 
-	std::string poseLabel = "featloc_estimate", groundTruth;
+	std::string poseLabel = "featloc_estimate", groundTruth, evaluatedReference;
 	optional("config_used.ini", [&](const std::string& path) {
 		mrpt::config::CConfigFile cfg(path);
 		r.configPath = path;
 		r.matcherClass = cfg.read_string("ScanMatcher", "class", "featloc::IcpMatcher");
 		poseLabel = cfg.read_string("Output", "pose_label", poseLabel);
 		groundTruth = cfg.read_string("Evaluation", "ground_truth", "");
+		r.stereoExtractorClass = cfg.read_string("StereoLandmarks", "class", "");
 	});
 	optional("summary.json", [&](const std::string& path) {
 		std::ifstream in(path);
 		const auto j = nlohmann::json::parse(in);
 		r.estimator = j.value("estimator", "");
+		if (j.contains("evaluation"))
+			evaluatedReference = j["evaluation"].value("reference", "");
 		if (j.contains("evaluation") && j["evaluation"].contains("alignment"))
 		{
 			const auto& a = j["evaluation"]["alignment"];
@@ -169,14 +193,20 @@ RunResults RunResultsLoader::load(
 		readScans(path, poseLabel, r, progress);
 	});
 	optional("matches.txt", [&](const std::string& path) { readMatches(path, r); });
+	if (!r.stereoExtractorClass.empty())
+		optional("estimated.rawlog", [&](const std::string& path) { readStereo(path, r); });
 	if (r.estimator == "ekf")
 		optional("landmarks.txt", [&](const std::string& path) {
 			for (const auto& v : readNumberRows(path, 6))
-				if (v[0] >= 0) r.landmarks.push_back({v[1], v[2], v[3], v[4], v[5]});
+				r.landmarks.push_back({v[1], v[2], v[3], v[4], v[5]});  // id -1: unnamed by the sensor
 		});
 	if (!groundTruth.empty())
 	{
-		const std::string gt = findGroundTruth(groundTruth, folder);
+		// The file the run evaluated against (absolute in summary.json),
+		// else the config's key as written.
+		std::string gt = evaluatedReference.empty() || !fs::exists(evaluatedReference)
+			? findGroundTruth(groundTruth, folder)
+			: evaluatedReference;
 		if (gt.empty())
 			r.problems.push_back("the ground truth '" + groundTruth +
 				"' named in config_used.ini was not found");

@@ -16,6 +16,7 @@
 #include "featloc/app/UsageError.h"
 #include "featloc/core/InputError.h"
 #include "featloc/gui/MatchPanel.h"
+#include "featloc/gui/StereoPanel.h"
 #include "featloc/gui/ViewerFrame.h"
 #include "featloc/gui/WindowScreenshot.h"
 
@@ -69,7 +70,8 @@ ViewerFrame::Page parsePage(const std::string& name)
 	if (name == "map") return ViewerFrame::Page::Map;
 	if (name == "match") return ViewerFrame::Page::Match;
 	if (name == "plots") return ViewerFrame::Page::Plots;
-	throw UsageError("--view must be map, match or plots, not '" + name + "'");
+	if (name == "stereo") return ViewerFrame::Page::Stereo;
+	throw UsageError("--view must be map, match, plots or stereo, not '" + name + "'");
 }
 }  // namespace
 
@@ -88,7 +90,7 @@ int ViewerApp::main(int argc, char** argv)
 		"", "screenshot", "Save the window as a PNG and exit", false, "", "FILE", cmd);
 	TCLAP::ValueArg<size_t> argStep("", "step", "Step to show (0-based)", false, 0, "N", cmd);
 	TCLAP::ValueArg<std::string> argView(
-		"", "view", "Page to show: map, match or plots", false, "map", "PAGE", cmd);
+		"", "view", "Page to show: map, match, plots or stereo", false, "map", "PAGE", cmd);
 	TCLAP::ValueArg<std::string> argRematch("", "rematch",
 		"With --view match: re-match the step's pair with this matcher class", false, "", "CLASS",
 		cmd);
@@ -187,6 +189,8 @@ int ViewerApp::main(int argc, char** argv)
 				if (page == ViewerFrame::Page::Match)
 					std::cout << frame->matchPanel().summaryText() << "re-matched: "
 							  << frame->matchPanel().rematchText() << "\n";
+				if (page == ViewerFrame::Page::Stereo)
+					std::cout << frame->stereoPanel().summaryText() << "\n";
 			}
 			catch (const std::exception& e)
 			{

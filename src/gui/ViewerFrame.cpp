@@ -17,6 +17,7 @@
 #include "featloc/gui/MatchPanel.h"
 #include "featloc/gui/PlotsPanel.h"
 #include "featloc/gui/RunResultsLoader.h"
+#include "featloc/gui/StereoPanel.h"
 #include "featloc/gui/TimelineBar.h"
 #include "featloc/gui/WindowScreenshot.h"
 
@@ -31,9 +32,11 @@ ViewerFrame::ViewerFrame()
 	m_map = new MapCanvas(m_pages);
 	m_match = new MatchPanel(m_pages);
 	m_plots = new PlotsPanel(m_pages);
+	m_stereo = new StereoPanel(m_pages);
 	m_pages->AddPage(m_map, "Map");
 	m_pages->AddPage(m_match, "Match");
 	m_pages->AddPage(m_plots, "Plots");
+	m_pages->AddPage(m_stereo, "Stereo");
 	sizer->Add(m_timeline, 0, wxEXPAND);
 	sizer->Add(m_pages, 1, wxEXPAND);
 	SetSizer(sizer);
@@ -113,6 +116,7 @@ void ViewerFrame::openResults(const std::string& folder, bool showProgress)
 	m_map->setResults(m_results);
 	m_match->setResults(m_results);
 	m_plots->setResults(m_results);
+	m_stereo->setResults(m_results);
 	std::vector<double> times;
 	for (const auto& s : m_results.steps) times.push_back(s.t);
 	m_timeline->setTimes(times);
@@ -145,6 +149,7 @@ void ViewerFrame::showStep(size_t i)
 		case Page::Map: m_map->setStep(i); break;
 		case Page::Match: m_match->setStep(i); break;
 		case Page::Plots: m_plots->setStep(i); break;
+		case Page::Stereo: m_stereo->setStep(i); break;
 	}
 }
 

@@ -40,6 +40,7 @@ class MapCanvas : public mrpt::gui::CWxGLCanvasBase
 	static constexpr unsigned char kCurrentScan[3] = {230, 30, 30};
 	static constexpr unsigned char kReferenceScan[3] = {0, 190, 190};
 	static constexpr unsigned char kScans[3] = {150, 150, 150};
+	static constexpr unsigned char kLandmarks[3] = {160, 60, 200};
 
    protected:
 	void OnPreRender() override;

@@ -13,6 +13,8 @@
 
 namespace featloc
 {
+struct DecodedStereoPair;
+
 /** Everything featloc-viewer shows of one run, read from its results folder
  * by RunResultsLoader. Steps are in time order; a step's scan and match are
  * null / -1 when the run had none for it. */
@@ -27,6 +29,16 @@ struct RunResults
 		std::shared_ptr<mrpt::obs::CObservation2DRangeScan> scan;
 		int match = -1;	 //!< index into `matches`, or -1
 		int reference = -1;	 //!< step of the match's reference scan, or -1
+	};
+	/** A stereo pair of the run (from estimated.rawlog) at a step. */
+	struct StereoFrame
+	{
+		size_t step = 0;
+		std::shared_ptr<mrpt::obs::CObservationStereoImages> observation;
+		std::shared_ptr<const DecodedStereoPair> images;
+		/** The run's own picture of this step (stereo_debug/NNNNNN.png,
+		 * written every [Output] stereo_debug_every steps), or "". */
+		std::string debugPicture;
 	};
 	struct Landmark
 	{
@@ -48,11 +60,17 @@ struct RunResults
 	/** nees.txt rows: time [s], NEES (3 dof). */
 	std::vector<std::pair<double, double>> nees;
 	std::vector<Landmark> landmarks;
+	std::vector<StereoFrame> stereo;  //!< in step order
+	/** The run's [StereoLandmarks] class and configuration, for the
+	 * stereo page's segment stage ("" without stereo). */
+	std::string stereoExtractorClass;
 	/** What could not be read, one sentence each naming the file: the
 	 * viewer opens what it can and shows these. */
 	std::vector<std::string> problems;
 
 	/** The step whose time is nearest to t (steps must not be empty). */
 	size_t stepNearest(double t) const;
+	/** The stereo frame of step i, or nullptr. */
+	const StereoFrame* stereoAt(size_t step) const;
 };
 }  // namespace featloc

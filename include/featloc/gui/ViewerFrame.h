@@ -12,11 +12,12 @@ namespace featloc
 class MapCanvas;
 class MatchPanel;
 class PlotsPanel;
+class StereoPanel;
 class TimelineBar;
 
 /** featloc-viewer's main window: a timeline over the run's steps and three
- * pages, the map (MapCanvas), the current match (MatchPanel) and the plots
- * (PlotsPanel). Space plays or pauses, Left/Right step. */
+ * pages, the map (MapCanvas), the current match (MatchPanel), the plots
+ * (PlotsPanel) and the stereo pair (StereoPanel). Space plays or pauses, Left/Right step. */
 class ViewerFrame : public wxFrame
 {
    public:
@@ -24,7 +25,8 @@ class ViewerFrame : public wxFrame
 	{
 		Map = 0,
 		Match = 1,
-		Plots = 2
+		Plots = 2,
+		Stereo = 3
 	};
 
 	ViewerFrame();
@@ -40,6 +42,7 @@ class ViewerFrame : public wxFrame
 	 * before the next; returns the mean seconds per redraw. */
 	double measureMapRedraws(unsigned n);
 	MatchPanel& matchPanel() { return *m_match; }
+	const StereoPanel& stereoPanel() const { return *m_stereo; }
 
    private:
 	void buildMenu();
@@ -51,5 +54,6 @@ class ViewerFrame : public wxFrame
 	MapCanvas* m_map;
 	MatchPanel* m_match;
 	PlotsPanel* m_plots;
+	StereoPanel* m_stereo;
 };
 }  // namespace featloc
