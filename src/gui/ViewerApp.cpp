@@ -33,6 +33,15 @@ class WxApp : public wxApp
 	bool OnInit() override { return true; }
 };
 
+// featloc-run in this process with these arguments; its exit code.
+int featlocRun(std::vector<std::string> args)
+{
+	args.insert(args.begin(), "featloc-run");
+	std::vector<char*> argv;
+	for (auto& a : args) argv.push_back(a.data());
+	return RunApp().main(static_cast<int>(argv.size()), argv.data());
+}
+
 // featloc-run on a rawlog into a fresh temporary folder; returns the folder.
 std::string runOnRawlog(const std::string& rawlog, std::string config)
 {
@@ -46,19 +55,12 @@ std::string runOnRawlog(const std::string& rawlog, std::string config)
 	{
 		// The built-in defaults, which are config.ini's.
 		config = dir + "/defaults.ini";
-		std::vector<std::string> args = {"featloc-run", "--write-config", config};
-		std::vector<char*> argv;
-		for (auto& a : args) argv.push_back(a.data());
-		if (RunApp().main(static_cast<int>(argv.size()), argv.data()) != 0)
+		if (featlocRun({"--write-config", config}) != 0)
 			throw InputError("cannot write the default configuration to " + config);
 	}
 	std::cerr << "featloc-viewer: running featloc-run " << config << " " << rawlog << " into "
 			  << dir << "/results\n";
-	std::vector<std::string> args = {
-		"featloc-run", config, rawlog, "--out", dir + "/results", "-q"};
-	std::vector<char*> argv;
-	for (auto& a : args) argv.push_back(a.data());
-	const int code = RunApp().main(static_cast<int>(argv.size()), argv.data());
+	const int code = featlocRun({config, rawlog, "--out", dir + "/results", "-q"});
 	if (code != 0)
 		throw InputError("featloc-run failed on '" + rawlog + "' (exit code " +
 			std::to_string(code) + "): see its messages above");
