@@ -13,9 +13,11 @@
 
 #include "featloc/eval/TrajectoryFile.h"
 #include "support/CommandRunner.h"
+#include "support/FreePort.h"
 #include "support/TempDir.h"
 
 using featloc::test::CommandResult;
+using featloc::test::freePort;
 using featloc::test::runCommand;
 using featloc::test::shellQuote;
 using featloc::test::TempDir;
@@ -27,6 +29,25 @@ const std::string kRun = FEATLOC_RUN_EXE;
 const std::string kViewer = FEATLOC_VIEWER_EXE;
 const std::string kSource = FEATLOC_SOURCE_DIR;
 const std::string kConfig = kSource + "/config.ini";
+const std::string kLive = FEATLOC_LIVE_EXE;
+const std::string kSim = FEATLOC_SIM_EXE;
+
+/** Shell lines: featloc-sim's device emulator in the background ($emu), a
+ * Hokuyo at 40 Hz and odometry at 100 Hz in the office world (as
+ * LiveAppTest), and featloc-live's arguments for it. */
+std::string startEmulator(const std::string& prefix, unsigned short laser, unsigned short odo)
+{
+	return shellQuote(kSim) + " " + shellQuote(kSource + "/worlds/office.ini") + " --out " +
+		shellQuote(prefix) + " --serve -q --laser-port " + std::to_string(laser) +
+		" --odometry-port " + std::to_string(odo) +
+		" --set Laser:preset=hokuyo_utm30lx --set Laser:rate=40 --set Odometry:rate=100"
+		" --set Simulation:duration=40 > /dev/null 2>&1 & emu=$!; sleep 0.5; ";
+}
+std::string liveArgs(unsigned short laser, unsigned short odo)
+{
+	return shellQuote(kSource + "/configs/live-emulator.ini") + " -q --set LASER:PORT_DIR=" +
+		std::to_string(laser) + " --set ODOMETRY:port=" + std::to_string(odo);
+}
 
 // MapCanvas's colours (RGB 30,80,220 / 20,170,60 / 230,30,30 / 0,190,190),
 // told apart by their dominant hue: lines are antialiased, so their pixels
@@ -300,4 +321,55 @@ TEST(Viewer, StereoPageShowsTheRunsPictureAndTheSegmentStage)
 		shellQuote(tmp.file("t.png")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	EXPECT_NE(r.output.find("no stereo pair at this step"), std::string::npos) << r.output;
+}
+
+TEST(Viewer, FollowsALiveRunAsItIsWritten)
+{
+	TempDir tmp;
+	const unsigned short laser = freePort(), odo = freePort();
+	const std::string out = tmp.file("live");
+	// The viewer starts before the run, follows its staging folder while it
+	// runs, and takes its screenshot 5 s in.
+	const std::string script = startEmulator(tmp.file("emu"), laser, odo) +
+		shellQuote(kViewer) + " " + shellQuote(out) + " --follow --screenshot " +
+		shellQuote(tmp.file("f.png")) + " --screenshot-after 5 > " + shellQuote(tmp.file("v.txt")) +
+		" 2>&1 & v=$!; " + shellQuote(kLive) + " " + liveArgs(laser, odo) + " --out " +
+		shellQuote(out) + " --duration 6 > /dev/null 2>&1; wait $v; kill $emu";
+	const CommandResult r = runCommand(
+		"xvfb-run -a -s '-screen 0 1600x1200x24' bash -c " + shellQuote(script) + " 2>&1");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	std::ifstream in(tmp.file("v.txt"));
+	std::vector<size_t> counts;
+	for (std::string line; std::getline(in, line);)
+	{
+		const auto at = line.find(".featloc-partial-");
+		if (line.find("following ") == std::string::npos || at == std::string::npos) continue;
+		counts.push_back(std::stoul(line.substr(line.rfind(": ") + 2)));
+	}
+	ASSERT_GE(counts.size(), 3u) << "the viewer saw the run grow at least three times";
+	EXPECT_TRUE(std::is_sorted(counts.begin(), counts.end()));
+	EXPECT_GT(counts.back(), counts.front());
+	const cv::Mat img = cv::imread(tmp.file("f.png"));
+	ASSERT_FALSE(img.empty());
+	EXPECT_GT(pixelsOf(img, kTrajectory).size(), 20u) << "the path so far";
+}
+
+TEST(Viewer, LiveGuiOpensTheViewerOnTheRun)
+{
+	TempDir tmp;
+	const unsigned short laser = freePort(), odo = freePort();
+	const std::string out = tmp.file("live");
+	// featloc-live --gui starts featloc-viewer --follow in its own process
+	// (it stays after the run): the test checks it is running, then ends it.
+	const std::string script = startEmulator(tmp.file("emu"), laser, odo) + shellQuote(kLive) +
+		" " + liveArgs(laser, odo) + " --out " + shellQuote(out) + " --duration 3 --gui > " +
+		shellQuote(tmp.file("l.txt")) + " 2>&1; kill $emu; " +
+		"pid=$(sed -n 's/.*featloc-viewer (pid \\([0-9]*\\)).*/\\1/p' " +
+		shellQuote(tmp.file("l.txt")) + "); kill -0 $pid && echo viewer-running; kill $pid";
+	const CommandResult r = runCommand(
+		"xvfb-run -a -s '-screen 0 1600x1200x24' bash -c " + shellQuote(script) + " 2>&1");
+	std::ifstream in(tmp.file("l.txt"));
+	const std::string live((std::istreambuf_iterator<char>(in)), {});
+	EXPECT_NE(live.find("featloc-viewer (pid "), std::string::npos) << live;
+	EXPECT_NE(r.output.find("viewer-running"), std::string::npos) << r.output << live;
 }

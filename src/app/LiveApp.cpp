@@ -1,7 +1,11 @@
 #include "featloc/app/LiveApp.h"
 
 #include <algorithm>
+#include <spawn.h>
+#include <unistd.h>
+
 #include <csignal>
+#include <filesystem>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -26,6 +30,25 @@ namespace featloc
 {
 namespace
 {
+/** featloc-viewer (beside this program) following `dir`, in its own
+ * process: the window stays after the run ends. */
+void openViewer(const std::string& dir)
+{
+	std::error_code ec;
+	const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+	const std::string viewer = (self.parent_path() / "featloc-viewer").string();
+	if (ec || !std::filesystem::exists(viewer))
+		throw UsageError("--gui: featloc-viewer is not beside featloc-live (" + viewer + ")");
+	std::vector<std::string> args = {viewer, dir, "--follow"};
+	std::vector<char*> argv;
+	for (auto& a : args) argv.push_back(a.data());
+	argv.push_back(nullptr);
+	pid_t pid = 0;
+	if (posix_spawn(&pid, viewer.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
+		throw UsageError("--gui: cannot start " + viewer);
+	std::fprintf(stderr, "featloc-live: featloc-viewer (pid %d) follows %s\n", pid, dir.c_str());
+}
+
 constexpr const char* kRecording = "live.rawlog";
 constexpr const char* kLateRecording = "live-late.rawlog";
 
@@ -98,6 +121,10 @@ int LiveApp::main(int argc, char** argv)
 	TCLAP::ValueArg<double> argDuration("", "duration",
 		"Stop after S seconds of data (from the first observation); default: until Ctrl-C",
 		false, 0, "S", cmd);
+	TCLAP::SwitchArg argGui("", "gui",
+		"Open featloc-viewer on the run: it follows the results as they are written (and stays "
+		"open after the run)",
+		cmd);
 	ConfigCommandLine config(cmd, "LASER:PORT_DIR=10941",
 		"the reference configuration with a [Live] section");
 	int exitCode = 0;
@@ -126,6 +153,7 @@ int LiveApp::main(int argc, char** argv)
 	ResultsFolder folder(argOut.isSet()
 			? argOut.getValue()
 			: cfg.resolvePath(OutputOptions::kSection, "dir", rc.output.dir));
+	if (argGui.getValue()) openViewer(folder.dir());
 	LiveSource source(cfg, liveOptions, folder.stagedFile(kRecording),
 		folder.stagedFile(kLateRecording), argDuration.getValue(), &signals.flag());
 	// Sensor sections not in [Live] sensors are kept for another run (as

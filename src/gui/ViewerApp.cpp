@@ -99,6 +99,12 @@ int ViewerApp::main(int argc, char** argv)
 	TCLAP::MultiArg<std::string> argRematchSet("", "rematch-set",
 		"A parameter of the --rematch class, KEY=VALUE as in the ini (repeatable)", false,
 		"KEY=VALUE", cmd);
+	TCLAP::SwitchArg argFollow("", "follow",
+		"INPUT is the results folder of a run in progress (featloc-live, featloc-run): read it "
+		"again every second and show the newest step",
+		cmd);
+	TCLAP::ValueArg<double> argShotAfter("", "screenshot-after",
+		"With --screenshot: take it after S seconds (default 0.8)", false, 0.8, "S", cmd);
 	TCLAP::ValueArg<unsigned> argRedraws("", "measure-redraws",
 		"Redraw the map page N times, print the time per redraw and exit (benchmarks)", false, 0,
 		"N", cmd);
@@ -115,7 +121,14 @@ int ViewerApp::main(int argc, char** argv)
 	// Everything that can fail is checked before a window opens.
 	std::string folder;
 	const std::string input = argInput.getValue();
-	if (!input.empty())
+	if (argFollow.getValue())
+	{
+		// The run may not have created its folder yet.
+		if (input.empty()) throw UsageError("--follow needs the run's results folder as INPUT");
+		if (fs::exists(input) && !fs::is_directory(input))
+			throw UsageError("--follow: '" + input + "' is not a folder");
+	}
+	else if (!input.empty())
 	{
 		if (!fs::exists(input)) throw InputError("'" + input + "': no such file or folder");
 		folder = fs::is_directory(input) ? input : runOnRawlog(input, argConfig.getValue());
@@ -166,6 +179,7 @@ int ViewerApp::main(int argc, char** argv)
 			frame->matchPanel().rematch();
 		}
 	}
+	if (argFollow.getValue()) frame->follow(input);
 	int result = 0;
 	wxTimer timer;
 	if (argRedraws.getValue() > 0)
@@ -201,7 +215,7 @@ int ViewerApp::main(int argc, char** argv)
 			}
 			frame->Close(true);
 		});
-		timer.StartOnce(800);
+		timer.StartOnce(static_cast<int>(1000 * std::max(0.1, argShotAfter.getValue())));
 	}
 	wxTheApp->OnRun();
 	return result;

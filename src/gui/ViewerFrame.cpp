@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 
 #include "featloc/gui/MapCanvas.h"
@@ -23,6 +24,11 @@
 
 namespace featloc
 {
+namespace
+{
+constexpr int kFollowPeriodMs = 1000;
+}  // namespace
+
 ViewerFrame::ViewerFrame()
 	: wxFrame(nullptr, wxID_ANY, "featloc-viewer", wxDefaultPosition, wxSize(1200, 850))
 {
@@ -112,14 +118,7 @@ void ViewerFrame::openResults(const std::string& folder, bool showProgress)
 		if (progress) progress->Update(static_cast<int>(999 * f));
 	});
 	progress.reset();
-	m_results = std::move(loaded);
-	m_map->setResults(m_results);
-	m_match->setResults(m_results);
-	m_plots->setResults(m_results);
-	m_stereo->setResults(m_results);
-	std::vector<double> times;
-	for (const auto& s : m_results.steps) times.push_back(s.t);
-	m_timeline->setTimes(times);
+	present(std::move(loaded));
 	SetTitle("featloc-viewer: " + folder);
 	size_t scans = 0;
 	for (const auto& s : m_results.steps) scans += s.scan ? 1 : 0;
@@ -136,6 +135,66 @@ void ViewerFrame::openResults(const std::string& folder, bool showProgress)
 	}
 	SetStatusText(problems.empty() ? wxString("every file read") : wxString("not shown: " + problems), 1);
 	showStep(0);
+}
+
+void ViewerFrame::present(RunResults loaded)
+{
+	m_results = std::move(loaded);
+	m_map->setResults(m_results);
+	m_match->setResults(m_results);
+	m_plots->setResults(m_results);
+	m_stereo->setResults(m_results);
+	std::vector<double> times;
+	for (const auto& s : m_results.steps) times.push_back(s.t);
+	m_timeline->setTimes(times);
+}
+
+void ViewerFrame::follow(const std::string& folder)
+{
+	m_followed = folder;
+	m_followTimer.SetOwner(this);
+	Bind(wxEVT_TIMER, [this](wxTimerEvent&) { onFollowTimer(); }, m_followTimer.GetId());
+	SetStatusText("following " + folder + ": waiting for the run's first step", 0);
+	onFollowTimer();
+	m_followTimer.Start(kFollowPeriodMs);
+}
+
+void ViewerFrame::onFollowTimer()
+{
+	namespace fs = std::filesystem;
+	// The run's staging folder while it runs, the folder once published.
+	const fs::path target(m_followed);
+	std::string folder = m_followed;
+	auto newest = fs::file_time_type::min();  // (libstdc++'s zero is year 2174)
+	std::error_code ec;
+	const std::string prefix = target.filename().string() + ".featloc-partial-";
+	const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+	for (const auto& e : fs::directory_iterator(parent, ec))
+		if (e.path().filename().string().rfind(prefix, 0) == 0 &&
+			fs::exists(e.path() / "poses_cov.txt") && e.last_write_time(ec) >= newest)
+		{
+			newest = e.last_write_time(ec);
+			folder = e.path().string();
+		}
+	if (!fs::exists(fs::path(folder) / "poses_cov.txt")) return;
+	RunResults loaded;
+	try
+	{
+		loaded = RunResultsLoader::load(folder);
+	}
+	catch (const std::exception&)
+	{
+		return;	 // the run has not written its first step yet
+	}
+	const bool grew = loaded.steps.size() != m_results.steps.size() || folder != m_results.folder;
+	if (!grew) return;
+	const bool atEnd = m_results.steps.empty() || m_timeline->step() + 1 >= m_results.steps.size();
+	const size_t keep = m_timeline->step();
+	present(std::move(loaded));
+	showStep(atEnd ? m_results.steps.size() - 1 : std::min(keep, m_results.steps.size() - 1));
+	SetStatusText(wxString::Format("following %s: %zu steps", folder, m_results.steps.size()), 0);
+	std::cout << "featloc-viewer: following " << folder << ": " << m_results.steps.size()
+			  << " steps" << std::endl;
 }
 
 void ViewerFrame::showStep(size_t i)

@@ -1,5 +1,6 @@
 #pragma once
 #include <wx/frame.h>
+#include <wx/timer.h>
 
 #include <string>
 
@@ -35,6 +36,11 @@ class ViewerFrame : public wxFrame
 	 * and printed on stderr. */
 	void openResults(const std::string& folder, bool showProgress);
 	void showStep(size_t i);
+	/** Follows a run in progress: every second, reads the newest
+	 * `folder.featloc-partial-PID` staging folder (where featloc-run and
+	 * featloc-live write until they finish), else `folder`, and shows the
+	 * latest step when there are new ones. */
+	void follow(const std::string& folder);
 	void showPage(Page page);
 	const RunResults& results() const { return m_results; }
 	/** Shows the map page and redraws it `n` times, each with a slightly
@@ -48,7 +54,13 @@ class ViewerFrame : public wxFrame
 	void buildMenu();
 	void onKey(wxKeyEvent& e);
 
+	/** Shows `loaded` on every page, the timeline at its start. */
+	void present(RunResults loaded);
+	void onFollowTimer();
+
 	RunResults m_results;
+	std::string m_followed;
+	wxTimer m_followTimer;
 	TimelineBar* m_timeline;
 	wxNotebook* m_pages;
 	MapCanvas* m_map;
