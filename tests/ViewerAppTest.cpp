@@ -373,3 +373,19 @@ TEST(Viewer, LiveGuiOpensTheViewerOnTheRun)
 	EXPECT_NE(live.find("featloc-viewer (pid "), std::string::npos) << live;
 	EXPECT_NE(r.output.find("viewer-running"), std::string::npos) << r.output << live;
 }
+
+TEST(Viewer, PlayAdvancesAtTheLogsOwnRate)
+{
+	TempDir tmp;
+	const std::string dir = runInto(tmp.file("m"), "matcher");
+	const CommandResult r = viewer(shellQuote(dir) + " --play --screenshot " +
+		shellQuote(tmp.file("p.png")) + " --screenshot-after 2");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto at = r.output.find("(step ");
+	ASSERT_NE(at, std::string::npos) << r.output;
+	const int step = std::stoi(r.output.substr(at + 6));
+	// 2 s of wall time at 1x is at most ~2.5 s of this ~10 Hz log (the
+	// timer's ticks advance log time; a loaded machine ticks less often).
+	EXPECT_GE(step, 3) << r.output;
+	EXPECT_LE(step, 40) << r.output;
+}

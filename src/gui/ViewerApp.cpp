@@ -12,10 +12,10 @@
 #include <iostream>
 
 #include "featloc/app/AppMain.h"
-#include "featloc/app/RunApp.h"
 #include "featloc/app/UsageError.h"
 #include "featloc/core/InputError.h"
 #include "featloc/gui/MatchPanel.h"
+#include "featloc/gui/RawlogRunner.h"
 #include "featloc/gui/StereoPanel.h"
 #include "featloc/gui/ViewerFrame.h"
 #include "featloc/gui/WindowScreenshot.h"
@@ -32,40 +32,6 @@ class WxApp : public wxApp
    public:
 	bool OnInit() override { return true; }
 };
-
-// featloc-run in this process with these arguments; its exit code.
-int featlocRun(std::vector<std::string> args)
-{
-	args.insert(args.begin(), "featloc-run");
-	std::vector<char*> argv;
-	for (auto& a : args) argv.push_back(a.data());
-	return RunApp().main(static_cast<int>(argv.size()), argv.data());
-}
-
-// featloc-run on a rawlog into a fresh temporary folder; returns the folder.
-std::string runOnRawlog(const std::string& rawlog, std::string config)
-{
-	// TCLAP remembers process-wide that an optional unlabeled argument was
-	// declared (the viewer's INPUT) and would refuse featloc-run's own.
-	TCLAP::OptionalUnlabeledTracker<>::alreadyOptional() = false;
-	char tmpl[] = "/tmp/featloc-viewer-XXXXXX";
-	if (!mkdtemp(tmpl)) throw InputError("cannot create a temporary folder in /tmp");
-	const std::string dir = tmpl;
-	if (config.empty())
-	{
-		// The built-in defaults, which are config.ini's.
-		config = dir + "/defaults.ini";
-		if (featlocRun({"--write-config", config}) != 0)
-			throw InputError("cannot write the default configuration to " + config);
-	}
-	std::cerr << "featloc-viewer: running featloc-run " << config << " " << rawlog << " into "
-			  << dir << "/results\n";
-	const int code = featlocRun({config, rawlog, "--out", dir + "/results", "-q"});
-	if (code != 0)
-		throw InputError("featloc-run failed on '" + rawlog + "' (exit code " +
-			std::to_string(code) + "): see its messages above");
-	return dir + "/results";
-}
 
 ViewerFrame::Page parsePage(const std::string& name)
 {
@@ -99,6 +65,7 @@ int ViewerApp::main(int argc, char** argv)
 	TCLAP::MultiArg<std::string> argRematchSet("", "rematch-set",
 		"A parameter of the --rematch class, KEY=VALUE as in the ini (repeatable)", false,
 		"KEY=VALUE", cmd);
+	TCLAP::SwitchArg argPlay("", "play", "Start playing (at the log's own rate)", cmd);
 	TCLAP::SwitchArg argFollow("", "follow",
 		"INPUT is the results folder of a run in progress (featloc-live, featloc-run): read it "
 		"again every second and show the newest step",
@@ -131,7 +98,7 @@ int ViewerApp::main(int argc, char** argv)
 	else if (!input.empty())
 	{
 		if (!fs::exists(input)) throw InputError("'" + input + "': no such file or folder");
-		folder = fs::is_directory(input) ? input : runOnRawlog(input, argConfig.getValue());
+		folder = fs::is_directory(input) ? input : RawlogRunner::run(input, argConfig.getValue());
 	}
 	const char* display = std::getenv("DISPLAY");
 	const char* wayland = std::getenv("WAYLAND_DISPLAY");
@@ -180,6 +147,7 @@ int ViewerApp::main(int argc, char** argv)
 		}
 	}
 	if (argFollow.getValue()) frame->follow(input);
+	if (argPlay.getValue()) frame->play();
 	int result = 0;
 	wxTimer timer;
 	if (argRedraws.getValue() > 0)
@@ -201,7 +169,8 @@ int ViewerApp::main(int argc, char** argv)
 				frame->Refresh();
 				frame->Update();
 				WindowScreenshot::save(*frame, shot);
-				std::cout << "featloc-viewer: screenshot " << shot << "\n";
+				std::cout << "featloc-viewer: screenshot " << shot << " (step " << frame->step()
+						  << ")\n";
 				if (page == ViewerFrame::Page::Match)
 					std::cout << frame->matchPanel().summaryText() << "re-matched: "
 							  << frame->matchPanel().rematchText() << "\n";

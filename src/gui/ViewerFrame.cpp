@@ -2,6 +2,7 @@
 
 #include <wx/dirdlg.h>
 #include <wx/filedlg.h>
+#include <wx/utils.h>
 #include <wx/menu.h>
 #include <wx/msgdlg.h>
 #include <wx/notebook.h>
@@ -17,6 +18,7 @@
 #include "featloc/gui/MapCanvas.h"
 #include "featloc/gui/MatchPanel.h"
 #include "featloc/gui/PlotsPanel.h"
+#include "featloc/gui/RawlogRunner.h"
 #include "featloc/gui/RunResultsLoader.h"
 #include "featloc/gui/StereoPanel.h"
 #include "featloc/gui/TimelineBar.h"
@@ -67,8 +69,10 @@ ViewerFrame::ViewerFrame()
 void ViewerFrame::buildMenu()
 {
 	auto* file = new wxMenu;
-	const int openId = wxWindow::NewControlId(), shotId = wxWindow::NewControlId();
+	const int openId = wxWindow::NewControlId(), rawlogId = wxWindow::NewControlId(),
+			  shotId = wxWindow::NewControlId();
 	file->Append(openId, "&Open results folder...\tCtrl+O");
+	file->Append(rawlogId, "Open &rawlog (runs featloc-run with the defaults)...\tCtrl+R");
 	file->Append(shotId, "Save &screenshot...\tCtrl+S");
 	file->AppendSeparator();
 	file->Append(wxID_EXIT, "&Quit\tCtrl+Q");
@@ -91,6 +95,27 @@ void ViewerFrame::buildMenu()
 			}
 		},
 		openId);
+	Bind(
+		wxEVT_MENU,
+		[this](wxCommandEvent&) {
+			wxFileDialog dlg(this, "Open a rawlog", "", "",
+				"Rawlogs (*.rawlog;*.rawlog.gz;*.log;*.log.gz)|*.rawlog;*.rawlog.gz;*.log;*.log.gz|"
+				"All files|*",
+				wxFD_OPEN | wxFD_FILE_MUST_EXIST);
+			if (dlg.ShowModal() != wxID_OK) return;
+			try
+			{
+				wxBusyCursor busy;
+				SetStatusText("running featloc-run on " + dlg.GetPath() + " ...", 0);
+				Update();
+				openResults(RawlogRunner::run(dlg.GetPath().ToStdString(), ""), true);
+			}
+			catch (const std::exception& e)
+			{
+				wxMessageBox(e.what(), "featloc-viewer", wxICON_ERROR, this);
+			}
+		},
+		rawlogId);
 	Bind(
 		wxEVT_MENU,
 		[this](wxCommandEvent&) {
@@ -228,6 +253,9 @@ double ViewerFrame::measureMapRedraws(unsigned n)
 	return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() /
 		std::max(n, 1u);
 }
+
+size_t ViewerFrame::step() const { return m_timeline->step(); }
+void ViewerFrame::play() { m_timeline->setPlaying(true); }
 
 void ViewerFrame::showPage(Page page) { m_pages->SetSelection(static_cast<size_t>(page)); }
 

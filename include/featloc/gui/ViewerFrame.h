@@ -36,6 +36,8 @@ class ViewerFrame : public wxFrame
 	 * and printed on stderr. */
 	void openResults(const std::string& folder, bool showProgress);
 	void showStep(size_t i);
+	size_t step() const;  //!< the step shown
+	void play();  //!< what the Play button does
 	/** Follows a run in progress: every second, reads the newest
 	 * `folder.featloc-partial-PID` staging folder (where featloc-run and
 	 * featloc-live write until they finish), else `folder`, and shows the
