@@ -175,6 +175,16 @@ void MapCanvas::setResults(const RunResults& results)
 	if (results.groundTruth)
 		for (const auto& p : results.groundTruth->poses)
 			gt.push_back((mrpt::poses::CPose2D(results.groundTruthToEstimate) + mrpt::poses::CPose2D(p.pose)).asTPose());
+	// The robot's 3-sigma ellipse along the path, about 100 of them (the
+	// current step's is drawn stronger by setStep).
+	const size_t every = std::max<size_t>(1, results.steps.size() / 100);
+	for (size_t i = 0; i < results.steps.size(); i += every)
+	{
+		const auto& st = results.steps[i];
+		if (st.cov(0, 0) <= 0 || st.cov(1, 1) <= 0) continue;
+		scene->insert(ellipse(st.pose.x, st.pose.y, st.cov(0, 0), st.cov(0, 1), st.cov(1, 1),
+			kPathEllipses));
+	}
 	scene->insert(polyline(gt, kGroundTruth, 2.f, kGroundTruthZ));
 	scene->insert(polyline(est, kTrajectory, 2.f, kTrajectoryZ));
 	// Landmarks: a cross 0.2 m wide (seen at any zoom) and the 3-sigma

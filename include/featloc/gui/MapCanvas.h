@@ -17,7 +17,8 @@ namespace featloc
 {
 /** featloc-viewer's 2-D map view, on MRPT's wx OpenGL canvas: every scan at
  * its estimated pose, the estimated trajectory and the ground truth (in the
- * estimate's frame), 3-sigma ellipses of the robot and of the landmarks,
+ * estimate's frame), 3-sigma ellipses of the robot (about 100 along the
+ * path, and the current step's) and of the landmarks,
  * and the current step's scan (red) over its reference keyframe scan
  * (green). Seen from above with an orthographic camera; left or right drag
  * pans, the wheel zooms. */
@@ -41,6 +42,7 @@ class MapCanvas : public mrpt::gui::CWxGLCanvasBase
 	static constexpr unsigned char kReferenceScan[3] = {0, 190, 190};
 	static constexpr unsigned char kScans[3] = {150, 150, 150};
 	static constexpr unsigned char kLandmarks[3] = {160, 60, 200};
+	static constexpr unsigned char kPathEllipses[3] = {250, 200, 130};
 
    protected:
 	void OnPreRender() override;
