@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""Errors of a run's scan matches against ground truth, from matches.txt.
+
+Usage: scripts/match-errors.py RESULTS/matches.txt GT [--all]
+
+For every match that did not succeed (status failed or gate) -- or every
+match with --all -- prints the converged estimate's error and the initial
+guess's (odometry's) error against the ground truth's relative motion
+between the reference scan's time and the current scan's, so that a guess
+gate's rejection can be told right (the estimate is wrong) or wrong (the
+estimate is right and the guess is not). GT: 't x y yaw' rows (MRPT's
+.GT.txt) or TUM; nearest row within 10 ms.
+"""
+import bisect
+import math
+import sys
+
+
+def read_gt(path):
+    rows = []
+    for line in open(path):
+        f = line.replace(",", " ").split()
+        if not f or f[0][0] in "#%":
+            continue
+        if len(f) == 8:  # TUM: yaw from the quaternion
+            qx, qy, qz, qw = map(float, f[4:8])
+            yaw = math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))
+            rows.append((float(f[0]), float(f[1]), float(f[2]), yaw))
+        else:
+            rows.append(tuple(float(v) for v in f[:4]))
+    rows.sort()
+    return rows
+
+
+def nearest(rows, times, t):
+    i = bisect.bisect_left(times, t)
+    best = min((j for j in (i - 1, i) if 0 <= j < len(rows)), key=lambda j: abs(times[j] - t))
+    return rows[best] if abs(times[best] - t) <= 0.01 else None
+
+
+def relative(a, b):
+    dx, dy = b[1] - a[1], b[2] - a[2]
+    c, s = math.cos(a[3]), math.sin(a[3])
+    return (c * dx + s * dy, -s * dx + c * dy, math.atan2(math.sin(b[3] - a[3]), math.cos(b[3] - a[3])))
+
+
+def error(p, q):
+    dyaw = math.atan2(math.sin(p[2] - q[2]), math.cos(p[2] - q[2]))
+    return math.hypot(p[0] - q[0], p[1] - q[1]), math.degrees(dyaw)
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    gt = read_gt(sys.argv[2])
+    times = [r[0] for r in gt]
+    every = "--all" in sys.argv
+    print("t ref_t status used | estimate error m deg | guess error m deg | reason")
+    counts = {}
+    for line in open(sys.argv[1]):
+        if line.startswith("#"):
+            continue
+        f = line.split()
+        t, ref_t, status, used = float(f[0]), float(f[1]), f[2], f[3]
+        if status == "ok" and not every:
+            continue
+        a, b = nearest(gt, times, ref_t), nearest(gt, times, t)
+        if not a or not b:
+            print(f"{t:.3f} {ref_t:.3f} {status} {used} | no ground truth at these times")
+            continue
+        truth = relative(a, b)
+        guess = tuple(map(float, f[9:12]))
+        est = tuple(map(float, f[12:15]))
+        ee, ge = error(est, truth), error(guess, truth)
+        right = ee[0] <= 0.05 and abs(ee[1]) <= 1.0
+        counts[(status, right)] = counts.get((status, right), 0) + 1
+        print(f"{t:.3f} {ref_t:.3f} {status} {used} | {ee[0]:.3f} {ee[1]:+.2f} | "
+              f"{ge[0]:.3f} {ge[1]:+.2f} | {' '.join(f[33:])[:90]}")
+    for (status, right), n in sorted(counts.items()):
+        print(f"# {status}: {n} with the estimate {'within' if right else 'outside'} 0.05 m / 1 deg of the truth")
+
+
+if __name__ == "__main__":
+    main()
