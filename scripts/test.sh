@@ -13,6 +13,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   [ -f "$FEATLOC_BUILD_DIR/CMakeCache.txt" ] && cmake "$FEATLOC_BUILD_DIR" $FEATLOC_CMAKE_ARGS > /dev/null
   export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
   export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1:suppressions=$ROOT/tests/sanitizer/ubsan.supp}"
+  export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$ROOT/tests/sanitizer/lsan.supp:print_suppressions=0}"
 elif [ -n "${1:-}" ]; then
   echo "usage: scripts/test.sh [--sanitize]" >&2
   exit 2

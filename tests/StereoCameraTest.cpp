@@ -465,8 +465,8 @@ TEST(StereoImport, RealPairsBecomeRawlogsThatRunReads)
 		std::vector<cv::Point2f> rawPx, undist;
 		for (const auto& pr : pairs) rawPx.push_back(pr.first);
 		cv::undistortPoints(rawPx, undist, K, D);
-		const auto Rraw = mrpt::poses::CPose3D(raw[i]->cameraPose).getRotationMatrix().asEigen();
-		const auto Rrect = mrpt::poses::CPose3D(rect[i]->cameraPose).getRotationMatrix().asEigen();
+		const Eigen::Matrix3d Rraw = mrpt::poses::CPose3D(raw[i]->cameraPose).getRotationMatrix().asEigen();
+		const Eigen::Matrix3d Rrect = mrpt::poses::CPose3D(rect[i]->cameraPose).getRotationMatrix().asEigen();
 		// ORB places keypoints on pyramid levels, a pixel or more apart
 		// between two images of different scale: single rays scatter. A
 		// wrong camera pose is a rotation common to all of them, so what is
