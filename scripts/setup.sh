@@ -12,6 +12,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri
 )
+# Extra packages a caller needs (scripts/fuzz.sh: clang and its libFuzzer).
+PACKAGES+=("$@")
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -192,3 +192,22 @@ TEST(ConfigValues, RowsAreParsedStrictly)
 				  .find("row 2 has 4 numbers, expected 2 or 3"),
 		std::string::npos);
 }
+
+// Found by fuzz/fuzz_config: MRPT's ini preprocessor threw a bare
+// runtime_error on an unclosed $env{ / $eval{, without the file's name.
+TEST(TrackedConfig, AnUnclosedPreprocessorExpressionIsAConfigErrorNamingTheFile)
+{
+	for (const char* text : {"[A]\nk = $env{ the first scan\n", "[A]\nk = $eval{1+\n"})
+	{
+		featloc::TrackedConfig cfg;
+		try
+		{
+			cfg.loadText(text, "my.ini");
+			ADD_FAILURE() << "no error for " << text;
+		}
+		catch (const featloc::ConfigError& e)
+		{
+			EXPECT_NE(std::string(e.what()).find("my.ini: "), std::string::npos) << e.what();
+		}
+	}
+}

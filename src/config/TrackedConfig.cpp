@@ -1,5 +1,7 @@
 #include "featloc/config/TrackedConfig.h"
 
+#include "featloc/core/ExceptionText.h"
+
 #include <mrpt/system/filesystem.h>
 #include <mrpt/system/string_utils.h>
 #include <yaml-cpp/yaml.h>
@@ -168,7 +170,16 @@ void TrackedConfig::loadText(
 	const std::string& text, const std::string& originName,
 	const std::string& baseDir)
 {
-	m_values.setContent(text);
+	try
+	{
+		m_values.setContent(text);
+	}
+	catch (const std::exception& e)
+	{
+		// MRPT's preprocessor ($env{}, $eval{}, @define) throws a bare
+		// runtime_error ("Line 51: Expected closing `}`"): say which file.
+		throw ConfigError(originName + ": " + exceptionText(e));
+	}
 	m_sourceName = originName;
 	m_origins.clear();
 

@@ -8,6 +8,7 @@
 
 #include <sstream>
 
+#include "featloc/core/ExceptionText.h"
 #include "featloc/core/InputError.h"
 #include "featloc/io/GzipFileInputStream.h"
 #include "featloc/registerClasses.h"
@@ -54,33 +55,6 @@ class CountingInputStream : public mrpt::io::CStream
 	bool m_shortRead = false;
 };
 
-/** The "Message:" lines of an MRPT exception (which nests the original
- * exceptions and appends call stacks), innermost last, joined; or what()
- * for other exceptions. */
-std::string conciseMessage(const std::exception& e)
-{
-	const std::string text = e.what();
-	std::istringstream in(text);
-	std::string line, out;
-	while (std::getline(in, line))
-	{
-		const auto pos = line.find("Message:");
-		if (pos == std::string::npos) continue;
-		std::string msg = line.substr(pos + 8);
-		const auto first = msg.find_first_not_of(" \t");
-		msg = first == std::string::npos ? "" : msg.substr(first);
-		if (!msg.empty()) out += (out.empty() ? "" : " <- ") + msg;
-	}
-	// MRPT quotes what it read as a class name: from a damaged file, raw
-	// bytes. Keep the message printable (and valid UTF-8 for summary.json).
-	std::string msg = out.empty() ? text : out;
-	for (char& c : msg)
-	{
-		const auto u = static_cast<unsigned char>(c);
-		if ((u < 0x20 && c != '\n') || u >= 0x7f) c = '?';
-	}
-	return msg;
-}
 }  // namespace
 
 struct RawlogReader::Impl
@@ -125,10 +99,10 @@ bool RawlogReader::next(RawlogEntry& entry)
 			<< " (byte " << before << " of the uncompressed stream) ";
 		if (in.shortRead())
 			msg << "is cut short: the file is truncated ("
-				<< conciseMessage(e) << ")";
+				<< exceptionText(e) << ")";
 		else
 			msg << "cannot be read: the file is corrupt or not a rawlog ("
-				<< conciseMessage(e) << ")";
+				<< exceptionText(e) << ")";
 		if (m_nextIndex > 0)
 			msg << "; the " << m_nextIndex
 				<< " entries before it were read correctly";

@@ -7,6 +7,7 @@
 
 #include "featloc/config/ConfigValues.h"
 #include "featloc/core/ConfigError.h"
+#include "featloc/core/ExceptionText.h"
 #include "featloc/core/InputError.h"
 
 namespace featloc
@@ -35,7 +36,16 @@ void addPieces(
 
 std::vector<MapWall> loadWorldFile(const std::string& path)
 {
-	mrpt::config::CConfigFile cfg(path);
+	mrpt::config::CConfigFile cfg;
+	try
+	{
+		cfg.setFileName(path);
+	}
+	catch (const std::exception& e)
+	{
+		// MRPT's preprocessor ($env{}, $eval{}) throws without the file's name.
+		throw InputError(path + ": " + exceptionText(e));
+	}
 	std::vector<std::string> sections;
 	cfg.getAllSections(sections);
 	std::vector<MapWall> out;
