@@ -24,6 +24,7 @@
 #include "featloc/live/LiveOptions.h"
 #include "featloc/sim/DeviceFault.h"
 #include "featloc/sim/ScipLaserServer.h"
+#include "support/LiveEmulator.h"
 #include "support/CommandRunner.h"
 #include "support/FreePort.h"
 #include "support/DocumentedKeys.h"
@@ -40,25 +41,6 @@ const std::string kRun = FEATLOC_RUN_EXE;
 const std::string kSim = FEATLOC_SIM_EXE;
 const std::string kConfig = std::string(FEATLOC_SOURCE_DIR) + "/configs/live-emulator.ini";
 const std::string kWorld = std::string(FEATLOC_SOURCE_DIR) + "/worlds/office.ini";
-
-/** featloc-sim --serve in the background (its pid in $emu): a UTM-30LX at
- * 40 Hz and odometry at 100 Hz driving the office world. */
-std::string emulatorCommand(const std::string& prefix, unsigned short laser, unsigned short odo,
-	const std::string& extra = "")
-{
-	return shellQuote(kSim) + " " + shellQuote(kWorld) + " --out " + shellQuote(prefix) +
-		" --serve -q --laser-port " + std::to_string(laser) + " --odometry-port " +
-		std::to_string(odo) +
-		" --set Laser:preset=hokuyo_utm30lx --set Laser:rate=40 --set Odometry:rate=100"
-		" --set Simulation:duration=40 " + extra + " > " +
-		shellQuote(prefix + ".out") + " 2>&1 & emu=$!; ";
-}
-
-std::string liveArgs(unsigned short laser, unsigned short odo)
-{
-	return shellQuote(kConfig) + " -q --set LASER:PORT_DIR=" + std::to_string(laser) +
-		" --set ODOMETRY:port=" + std::to_string(odo);
-}
 
 nlohmann::json readJson(const std::string& file)
 {

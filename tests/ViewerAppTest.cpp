@@ -14,10 +14,13 @@
 #include "featloc/eval/TrajectoryFile.h"
 #include "support/CommandRunner.h"
 #include "support/FreePort.h"
+#include "support/LiveEmulator.h"
 #include "support/TempDir.h"
 
 using featloc::test::CommandResult;
+using featloc::test::emulatorCommand;
 using featloc::test::freePort;
+using featloc::test::liveArgs;
 using featloc::test::runCommand;
 using featloc::test::shellQuote;
 using featloc::test::TempDir;
@@ -30,24 +33,6 @@ const std::string kViewer = FEATLOC_VIEWER_EXE;
 const std::string kSource = FEATLOC_SOURCE_DIR;
 const std::string kConfig = kSource + "/config.ini";
 const std::string kLive = FEATLOC_LIVE_EXE;
-const std::string kSim = FEATLOC_SIM_EXE;
-
-/** Shell lines: featloc-sim's device emulator in the background ($emu), a
- * Hokuyo at 40 Hz and odometry at 100 Hz in the office world (as
- * LiveAppTest), and featloc-live's arguments for it. */
-std::string startEmulator(const std::string& prefix, unsigned short laser, unsigned short odo)
-{
-	return shellQuote(kSim) + " " + shellQuote(kSource + "/worlds/office.ini") + " --out " +
-		shellQuote(prefix) + " --serve -q --laser-port " + std::to_string(laser) +
-		" --odometry-port " + std::to_string(odo) +
-		" --set Laser:preset=hokuyo_utm30lx --set Laser:rate=40 --set Odometry:rate=100"
-		" --set Simulation:duration=40 > /dev/null 2>&1 & emu=$!; sleep 0.5; ";
-}
-std::string liveArgs(unsigned short laser, unsigned short odo)
-{
-	return shellQuote(kSource + "/configs/live-emulator.ini") + " -q --set LASER:PORT_DIR=" +
-		std::to_string(laser) + " --set ODOMETRY:port=" + std::to_string(odo);
-}
 
 // MapCanvas's colours (RGB 30,80,220 / 20,170,60 / 230,30,30 / 0,190,190),
 // told apart by their dominant hue: lines are antialiased, so their pixels
@@ -330,7 +315,7 @@ TEST(Viewer, FollowsALiveRunAsItIsWritten)
 	const std::string out = tmp.file("live");
 	// The viewer starts before the run, follows its staging folder while it
 	// runs, and takes its screenshot 5 s in.
-	const std::string script = startEmulator(tmp.file("emu"), laser, odo) +
+	const std::string script = emulatorCommand(tmp.file("emu"), laser, odo) + "sleep 0.5; " +
 		shellQuote(kViewer) + " " + shellQuote(out) + " --follow --screenshot " +
 		shellQuote(tmp.file("f.png")) + " --screenshot-after 5 > " + shellQuote(tmp.file("v.txt")) +
 		" 2>&1 & v=$!; " + shellQuote(kLive) + " " + liveArgs(laser, odo) + " --out " +
@@ -361,7 +346,8 @@ TEST(Viewer, LiveGuiOpensTheViewerOnTheRun)
 	const std::string out = tmp.file("live");
 	// featloc-live --gui starts featloc-viewer --follow in its own process
 	// (it stays after the run): the test checks it is running, then ends it.
-	const std::string script = startEmulator(tmp.file("emu"), laser, odo) + shellQuote(kLive) +
+	const std::string script = emulatorCommand(tmp.file("emu"), laser, odo) + "sleep 0.5; " +
+		shellQuote(kLive) +
 		" " + liveArgs(laser, odo) + " --out " + shellQuote(out) + " --duration 3 --gui > " +
 		shellQuote(tmp.file("l.txt")) + " 2>&1; kill $emu; " +
 		"pid=$(sed -n 's/.*featloc-viewer (pid \\([0-9]*\\)).*/\\1/p' " +
