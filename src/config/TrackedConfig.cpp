@@ -103,16 +103,6 @@ void TrackedConfig::loadYaml(
 	auto where = [&](const YAML::Node& n) {
 		return originName + ":" + std::to_string(n.Mark().line + 1);
 	};
-	auto scalarList = [&](const YAML::Node& seq, const std::string& at) {
-		std::string out;
-		for (const auto& item : seq)
-		{
-			if (!item.IsScalar())
-				throw ConfigError(at + ": nested lists go at most two deep ([[x, y], ...])");
-			out += (out.empty() ? "" : " ") + item.as<std::string>();
-		}
-		return out;
-	};
 	YAML::Node root;
 	try
 	{
@@ -129,6 +119,35 @@ void TrackedConfig::loadYaml(
 	if (!root.IsMap())
 		throw ConfigError(
 			where(root) + ": expected a map of sections (Section: {key: value})");
+	try
+	{
+		readYamlSections(root, originName, baseDir);
+	}
+	catch (const YAML::Exception& e)
+	{
+		// A key or an item that is not a scalar where one is needed
+		// (yaml-cpp's "bad conversion"): found by fuzz/fuzz_world_file.
+		throw ConfigError(originName + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg +
+			" (keys and list items must be scalars)");
+	}
+}
+
+void TrackedConfig::readYamlSections(
+	const YAML::Node& root, const std::string& originName, const std::string& baseDir)
+{
+	auto where = [&](const YAML::Node& n) {
+		return originName + ":" + std::to_string(n.Mark().line + 1);
+	};
+	auto scalarList = [&](const YAML::Node& seq, const std::string& at) {
+		std::string out;
+		for (const auto& item : seq)
+		{
+			if (!item.IsScalar())
+				throw ConfigError(at + ": nested lists go at most two deep ([[x, y], ...])");
+			out += (out.empty() ? "" : " ") + item.as<std::string>();
+		}
+		return out;
+	};
 	for (const auto& sec : root)
 	{
 		const std::string section = sec.first.as<std::string>();

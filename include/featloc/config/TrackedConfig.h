@@ -8,6 +8,11 @@
 #include <utility>
 #include <vector>
 
+namespace YAML
+{
+class Node;
+}
+
 namespace featloc
 {
 /** An INI configuration (MRPT syntax) that remembers every key a component
@@ -97,6 +102,11 @@ class TrackedConfig : public mrpt::config::CConfigFileBase
 		bool failIfNotFound = false) const override;
 
    private:
+	/** loadYaml's sections and keys (yaml-cpp throws on a non-scalar key or
+	 * item; loadYaml turns that into a ConfigError). */
+	void readYamlSections(
+		const YAML::Node& root, const std::string& originName, const std::string& baseDir);
+
 	struct Origin
 	{
 		std::string description;  //!< "file.ini:12" or "--set S:k=v"
