@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "featloc/core/InputError.h"
+#include "featloc/math/CovarianceFromUpperTriangle.h"
 
 namespace featloc
 {
@@ -178,12 +179,7 @@ Trajectory TrajectoryFile::read(const std::string& path, Format format, Format* 
 				p.t = r[0];
 				p.pose = {r[1], r[2], mrpt::math::wrapToPi(r[3])};
 				p.hasCovariance = true;
-				p.cov(0, 0) = r[4];
-				p.cov(0, 1) = p.cov(1, 0) = r[5];
-				p.cov(0, 2) = p.cov(2, 0) = r[6];
-				p.cov(1, 1) = r[7];
-				p.cov(1, 2) = p.cov(2, 1) = r[8];
-				p.cov(2, 2) = r[9];
+				p.cov = covarianceFromUpperTriangle(&r[4]);
 				break;
 		}
 		if (!traj.poses.empty() && p.t < traj.poses.back().t)

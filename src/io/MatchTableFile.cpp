@@ -4,22 +4,10 @@
 #include <sstream>
 
 #include "featloc/core/InputError.h"
+#include "featloc/math/CovarianceFromUpperTriangle.h"
 
 namespace featloc
 {
-namespace
-{
-void upperTriangle(const double* c, mrpt::math::CMatrixDouble33& m)
-{
-	m(0, 0) = c[0];
-	m(0, 1) = m(1, 0) = c[1];
-	m(0, 2) = m(2, 0) = c[2];
-	m(1, 1) = c[3];
-	m(1, 2) = m(2, 1) = c[4];
-	m(2, 2) = c[5];
-}
-}  // namespace
-
 const char* MatchTableFile::header()
 {
 	return "featloc scan matches: t ref_t status used iterations time_ms goodness "
@@ -50,9 +38,9 @@ std::vector<MatchTableFile::Row> MatchTableFile::read(const std::string& path)
 			throw InputError(
 				path + ":" + std::to_string(lineNo) + ": not a match-table row (" + header() + ")");
 		r.used = used != 0;
-		upperTriangle(c, r.cov);
-		upperTriangle(c + 6, r.guessCov);
-		upperTriangle(c + 12, r.gateAllowance);
+		r.cov = covarianceFromUpperTriangle(c);
+		r.guessCov = covarianceFromUpperTriangle(c + 6);
+		r.gateAllowance = covarianceFromUpperTriangle(c + 12);
 		std::getline(ss >> std::ws, r.reason);
 		if (r.reason == "-") r.reason.clear();
 		rows.push_back(std::move(r));
