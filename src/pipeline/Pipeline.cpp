@@ -204,6 +204,7 @@ void Pipeline::processStep(
 	MatchResult match;
 	const MatchResult* matchPtr = nullptr;
 	bool usedMatch = false;
+	std::string fallbackReason;	 // why the estimator did not use a good match
 	if (step.index == 0)
 		m_estimator->start(m_options.initialPose(), step);
 	else
@@ -232,10 +233,10 @@ void Pipeline::processStep(
 		if (matchPtr && !usedMatch)
 		{
 			stats.fallbacks++;
+			if (match.success) fallbackReason = m_estimator->lastFallbackReason();
 			if (match.success && stats.rejectionExamples.size() < kMaxFailureExamples)
-				stats.rejectionExamples.push_back(
-					"scan " + std::to_string(step.scanIndex) + " (entry #" +
-					std::to_string(step.entryIndex) + "): " + m_estimator->lastFallbackReason());
+				stats.rejectionExamples.push_back("scan " + std::to_string(step.scanIndex) +
+					" (entry #" + std::to_string(step.entryIndex) + "): " + fallbackReason);
 		}
 	}
 	if (step.scan && (!m_keyframeScan || isNewKeyframe(matchPtr)))
@@ -256,8 +257,8 @@ void Pipeline::processStep(
 	stats.landmarksInMap = landmarks.size();
 	const StereoStepResult* stereo = m_estimator->lastStereo();
 	if (stereo) countStereo(*stereo, stats);
-	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch, &landmarks, stereo,
-		matchPtr && !usedMatch && matchPtr->success ? m_estimator->lastFallbackReason() : ""};
+	const StepRecord record{
+		step, m_estimator->pose(), matchPtr, usedMatch, &landmarks, stereo, fallbackReason};
 	for (auto* o : outputs) o->onStep(record);
 }
 
