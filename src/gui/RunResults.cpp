@@ -15,6 +15,15 @@ size_t RunResults::stepNearest(double t) const
 	return i;
 }
 
+std::optional<size_t> RunResults::stepAt(double t) const
+{
+	constexpr double kSameTime = 1e-6;	// [s]
+	if (steps.empty()) return std::nullopt;
+	const size_t i = stepNearest(t);
+	if (std::abs(steps[i].t - t) > kSameTime) return std::nullopt;
+	return i;
+}
+
 const RunResults::StereoFrame* RunResults::stereoAt(size_t step) const
 {
 	const auto it = std::lower_bound(stereo.begin(), stereo.end(), step,

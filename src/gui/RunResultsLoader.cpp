@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "featloc/core/ExceptionText.h"
 #include "featloc/core/InputError.h"
 #include "featloc/eval/TrajectoryFile.h"
 #include "featloc/io/RawlogReader.h"
@@ -23,12 +24,6 @@ namespace featloc
 namespace
 {
 namespace fs = std::filesystem;
-
-// A step and a rawlog observation are the same instant when their times
-// agree to the microsecond (both come from the same mrpt::Clock value).
-constexpr double kSameTime = 1e-6;
-
-std::string describe(const std::exception& e) { return e.what(); }
 
 void readScans(const std::string& path, const std::string& poseLabel, RunResults& r,
 	const std::function<void(double)>& progress)
@@ -43,12 +38,10 @@ void readScans(const std::string& path, const std::string& poseLabel, RunResults
 		else if (auto pose = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(obs);
 				 pose && pose->sensorLabel == poseLabel && lastScan)
 		{
-			const double t = mrpt::Clock::toDouble(pose->timestamp);
-			auto& step = r.steps[r.stepNearest(t)];
-			if (std::abs(step.t - t) <= kSameTime &&
-				std::abs(mrpt::Clock::toDouble(lastScan->timestamp) - t) <= kSameTime)
+			const auto step = r.stepAt(mrpt::Clock::toDouble(pose->timestamp));
+			if (step && r.stepAt(mrpt::Clock::toDouble(lastScan->timestamp)) == step)
 			{
-				step.scan = lastScan;
+				r.steps[*step].scan = lastScan;
 				attached++;
 			}
 			lastScan.reset();
@@ -75,13 +68,12 @@ void readStereo(const std::string& path, RunResults& r)
 	StereoPairReader::Pair pair;
 	while (reader.next(pair))
 	{
-		const double t = mrpt::Clock::toDouble(pair.observation->timestamp);
-		const size_t step = r.stepNearest(t);
-		if (std::abs(r.steps[step].t - t) > kSameTime) continue;
+		const auto step = r.stepAt(mrpt::Clock::toDouble(pair.observation->timestamp));
+		if (!step) continue;
 		char name[32];
-		std::snprintf(name, sizeof(name), "%06zu.png", step);
+		std::snprintf(name, sizeof(name), "%06zu.png", *step);
 		const fs::path picture = fs::path(path).parent_path() / "stereo_debug" / name;
-		r.stereo.push_back({step, pair.observation, pair.images,
+		r.stereo.push_back({*step, pair.observation, pair.images,
 			fs::exists(picture) ? picture.string() : std::string()});
 	}
 }
@@ -91,12 +83,11 @@ void readMatches(const std::string& path, RunResults& r)
 	r.matches = MatchTableFile::read(path);
 	for (size_t i = 0; i < r.matches.size(); i++)
 	{
-		auto& step = r.steps[r.stepNearest(r.matches[i].t)];
-		if (std::abs(step.t - r.matches[i].t) > kSameTime) continue;
-		step.match = static_cast<int>(i);
-		const size_t ref = r.stepNearest(r.matches[i].referenceT);
-		if (std::abs(r.steps[ref].t - r.matches[i].referenceT) <= kSameTime)
-			step.reference = static_cast<int>(ref);
+		const auto step = r.stepAt(r.matches[i].t);
+		if (!step) continue;
+		r.steps[*step].match = static_cast<int>(i);
+		if (const auto ref = r.stepAt(r.matches[i].referenceT))
+			r.steps[*step].reference = static_cast<int>(*ref);
 	}
 }
 
@@ -155,7 +146,7 @@ RunResults RunResultsLoader::load(
 		}
 		catch (const std::exception& e)
 		{
-			r.problems.push_back(std::string(name) + " could not be read: " + describe(e));
+			r.problems.push_back(std::string(name) + " could not be read: " + exceptionText(e));
 		}
 	};
 
@@ -217,7 +208,7 @@ RunResults RunResultsLoader::load(
 			}
 			catch (const std::exception& e)
 			{
-				r.problems.push_back("ground truth: " + describe(e));
+				r.problems.push_back("ground truth: " + exceptionText(e));
 			}
 		optional("nees.txt", [&](const std::string& path) {
 			for (const auto& v : readNumberRows(path, 2)) r.nees.emplace_back(v[0], v[1]);

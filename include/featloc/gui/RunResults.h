@@ -70,6 +70,9 @@ struct RunResults
 
 	/** The step whose time is nearest to t (steps must not be empty). */
 	size_t stepNearest(double t) const;
+	/** The step at time t: an output row and a rawlog observation of the
+	 * same step agree to the microsecond (both are one mrpt::Clock value). */
+	std::optional<size_t> stepAt(double t) const;
 	/** The stereo frame of step i, or nullptr. */
 	const StereoFrame* stereoAt(size_t step) const;
 };
