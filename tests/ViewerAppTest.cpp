@@ -274,9 +274,11 @@ TEST(Viewer, RematchRunsAnotherClassOrParametersOnTheSamePair)
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	EXPECT_NE(r.output.find("re-matched: featloc::PcmFeatureMatcher: success"), std::string::npos)
 		<< r.output;
-	// A key the class does not have is an error naming the section and key.
+	// A key the class does not have is an error naming the section and key,
+	// with featloc-run's "did you mean".
 	r = viewer(base + " --rematch IdcMatcher --rematch-set maxIterations=5");
-	EXPECT_NE(r.output.find("[ScanMatcher.IdcMatcher] has no key 'maxIterations'"),
+	EXPECT_NE(r.output.find("[ScanMatcher.IdcMatcher] maxIterations: unknown key (did you mean "
+							"'max_iterations'?)"),
 		std::string::npos) << r.output;
 	r = viewer(base + " --rematch NoSuchMatcher");
 	EXPECT_EQ(r.exitCode, 2) << r.output;

@@ -1,7 +1,5 @@
 #include "featloc/gui/MatchPanel.h"
 
-#include <mrpt/config/CConfigFile.h>
-#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
 #include <wx/button.h>
@@ -14,11 +12,11 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
-#include <set>
 #include <sstream>
 #include <vector>
 
 #include "featloc/app/UsageError.h"
+#include "featloc/config/TrackedConfig.h"
 #include "featloc/gui/ScanPairPanel.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/scan/ScanPoints.h"
@@ -88,6 +86,12 @@ MatchPanel::MatchPanel(wxWindow* parent) : wxPanel(parent)
 void MatchPanel::setResults(const RunResults& results)
 {
 	m_results = &results;
+	m_configText.clear();
+	if (!results.configPath.empty())
+	{
+		std::ifstream in(results.configPath);
+		m_configText.assign(std::istreambuf_iterator<char>(in), {});
+	}
 	const int i = m_class->FindString(results.matcherClass);
 	m_class->SetSelection(i == wxNOT_FOUND ? 0 : i);
 	setStep(0);
@@ -99,49 +103,28 @@ std::string MatchPanel::runMatcher(const std::string& className, const std::stri
 	const auto& step = m_results->steps[m_step];
 	const auto& row = m_results->matches[static_cast<size_t>(step.match)];
 	const auto& ref = m_results->steps[static_cast<size_t>(step.reference)];
-	mrpt::config::CConfigFileMemory cfg;
-	if (!m_results->configPath.empty())
-	{
-		std::ifstream in(m_results->configPath);
-		cfg.setContent(std::string(std::istreambuf_iterator<char>(in), {}));
-	}
-	cfg.write("ScanMatcher", "class", className);
+	// The run's configuration with the class and the overrides applied as
+	// --set would apply them; TrackedConfig then names any key the matcher
+	// does not read (a typo, with "did you mean"), as featloc-run does.
+	TrackedConfig cfg;
+	cfg.loadText(m_configText, m_results->configPath.empty() ? "(built-in defaults)"
+															 : m_results->configPath);
+	cfg.applyOverride(std::string(ScanMatcherFactory::kSection) + ":class=" + className);
 	const std::string section = ScanMatcherFactory::paramsSection(className);
-	// The keys this class reads are the ones it writes: a typo is an error,
-	// not a parameter silently left at its default.
-	std::set<std::string> known;
-	{
-		mrpt::config::CConfigFileMemory saved;
-		ScanMatcherFactory::create(className)->saveParams(saved, section);
-		std::vector<std::string> keys;
-		saved.getAllKeys(section, keys);
-		for (std::string k : keys)	// written padded for alignment
-			known.insert(k.erase(k.find_last_not_of(' ') + 1));
-	}
 	std::istringstream lines(overrides);
-	std::string line;
-	while (std::getline(lines, line))
+	for (std::string line; std::getline(lines, line);)
 	{
-		const auto eq = line.find('=');
-		if (line.find_first_not_of(" \t") == std::string::npos) continue;
-		if (eq == std::string::npos)
+		if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+		if (line.find('=') == std::string::npos)
 			throw std::runtime_error("'" + line + "' is not 'key = value'");
-		auto trim = [](std::string s) {
-			s.erase(0, s.find_first_not_of(" \t"));
-			s.erase(s.find_last_not_of(" \t\r") + 1);
-			return s;
-		};
-		const std::string key = trim(line.substr(0, eq));
-		if (!known.count(key))
-		{
-			std::string list;
-			for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-			throw std::runtime_error(
-				"[" + section + "] has no key '" + key + "' (its keys: " + list + ")");
-		}
-		cfg.write(section, key, trim(line.substr(eq + 1)));
+		cfg.applyOverride(section + ":" + line);
 	}
 	auto matcher = ScanMatcherFactory::createFromConfig(cfg);
+	std::vector<std::string> sections;
+	cfg.getAllSections(sections);
+	for (const auto& other : sections)	// the rest of the run's configuration
+		if (other != section) cfg.acceptSection(other);
+	cfg.requireAllKeysRead();
 	const mrpt::poses::CPosePDFGaussian guess(mrpt::poses::CPose2D(row.guess), row.guessCov);
 	const MatchResult r = matcher->match(*ref.scan, *step.scan, guess, row.gateAllowance);
 	const mrpt::poses::CPose2D sensorEstimate = (mrpt::poses::CPose2D() - planarSensorPose(*ref.scan)) +

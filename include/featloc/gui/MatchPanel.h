@@ -42,6 +42,7 @@ class MatchPanel : public wxPanel
 		ScanPairPanel& panel, const std::string& caption) const;
 
 	const RunResults* m_results = nullptr;
+	std::string m_configText;  //!< the run's config_used.ini, read once
 	size_t m_step = 0;
 	wxTextCtrl *m_info, *m_rerunInfo, *m_params;
 	wxChoice* m_class;
