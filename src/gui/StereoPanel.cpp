@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
+#include "featloc/core/ExceptionText.h"
 #include "featloc/io/DecodedStereoPair.h"
 #include "featloc/output/StereoPairPicture.h"
 #include "featloc/stereo/StableVerticalLandmarks.h"
@@ -31,15 +32,16 @@ wxBitmap toBitmap(const cv::Mat& bgr)
 	return wxBitmap(img);
 }
 
-// The segment-stage options of the run's StableVerticalLandmarks.
-StereoVerticalLines::Options segmentStageOptions(const RunResults& r)
+// The segment-stage options of the run's StableVerticalLandmarks (its
+// [StereoLandmarks.StableVerticalLandmarks] section, without the map file,
+// which the segment stage does not need).
+StereoVerticalLines::Options segmentStageOptions(const std::string& configPath)
 {
 	StableVerticalLandmarks extractor;
-	if (!r.configPath.empty())
+	if (!configPath.empty())
 	{
-		mrpt::config::CConfigFile cfg(r.configPath);
+		mrpt::config::CConfigFile cfg(configPath);
 		const std::string section = "StereoLandmarks.StableVerticalLandmarks";
-		// The map file is not needed for the segment stage.
 		mrpt::config::CConfigFileMemory copy;
 		std::vector<std::string> keys;
 		cfg.getAllKeys(section, keys);
@@ -47,17 +49,7 @@ StereoVerticalLines::Options segmentStageOptions(const RunResults& r)
 			if (k != "map") copy.write(section, k, cfg.read_string(section, k, ""));
 		extractor.loadParams(copy, section);
 	}
-	const auto& e = extractor.options;
-	StereoVerticalLines::Options o;
-	o.segments = e.segments;
-	o.matching = e.matching;
-	o.sad.block_size = e.block_size;
-	o.sad.uniqueness_ratio = e.uniqueness_ratio;
-	o.sad.texture_threshold = e.texture_threshold;
-	o.sad.tolerance_px = e.disparity_tolerance_px;
-	o.num_disparities = e.num_disparities;
-	o.sigma_img = e.sigma_img;
-	return o;
+	return extractor.segmentStageOptions();
 }
 }  // namespace
 
@@ -70,6 +62,17 @@ StereoPanel::StereoPanel(wxWindow* parent) : wxPanel(parent)
 void StereoPanel::setResults(const RunResults& results)
 {
 	m_results = &results;
+	m_options.reset();
+	m_optionsError.clear();
+	if (!results.stereo.empty())
+		try
+		{
+			m_options = segmentStageOptions(results.configPath);
+		}
+		catch (const std::exception& e)
+		{
+			m_optionsError = exceptionText(e);
+		}
 	setStep(0);
 }
 
@@ -89,26 +92,29 @@ void StereoPanel::setStep(size_t i)
 		m_runPicture = toBitmap(cv::imread(f->debugPicture, cv::IMREAD_COLOR));
 	else
 		text << "the run wrote no picture of this step ([Output] stereo_debug_every); ";
-	try
-	{
-		const StereoVerticalLines lines(segmentStageOptions(*m_results));
-		const auto& s = m_results->steps[i];
-		const mrpt::poses::CPose3D camera =
-			mrpt::poses::CPose3D(mrpt::poses::CPose2D(s.pose)) +
-			mrpt::poses::CPose3D(f->observation->cameraPose);
-		const auto r = lines.extract(f->images->left, f->images->right,
-			f->observation->getStereoCameraParams(), camera, "step " + std::to_string(i));
-		size_t supported = 0;
-		for (const auto& why : r.matchRejection) supported += why.empty() ? 1 : 0;
-		m_pairPicture = toBitmap(StereoPairPicture::draw(f->images->left, f->images->right, r));
-		text << "segment stage: " << r.left.size() << " left and " << r.right.size()
-			 << " right segments, " << r.matches.size() << " DP matches, " << supported
-			 << " supported by the SAD disparity, " << r.lines.size() << " vertical lines";
-	}
-	catch (const std::exception& e)
-	{
-		text << "segment stage not run: " << e.what();
-	}
+	if (!m_options)
+		text << "segment stage not run: " << m_optionsError;
+	else
+		try
+		{
+			const StereoVerticalLines lines(*m_options);
+			const auto& s = m_results->steps[i];
+			const mrpt::poses::CPose3D camera =
+				mrpt::poses::CPose3D(mrpt::poses::CPose2D(s.pose)) +
+				mrpt::poses::CPose3D(f->observation->cameraPose);
+			const auto r = lines.extract(f->images->left, f->images->right,
+				f->observation->getStereoCameraParams(), camera, "step " + std::to_string(i));
+			size_t supported = 0;
+			for (const auto& why : r.matchRejection) supported += why.empty() ? 1 : 0;
+			m_pairPicture = toBitmap(StereoPairPicture::draw(f->images->left, f->images->right, r));
+			text << "segment stage: " << r.left.size() << " left and " << r.right.size()
+				 << " right segments, " << r.matches.size() << " DP matches, " << supported
+				 << " supported by the SAD disparity, " << r.lines.size() << " vertical lines";
+		}
+		catch (const std::exception& e)
+		{
+			text << "segment stage not run: " << exceptionText(e);
+		}
 	m_text = text.str();
 	Refresh(false);
 }

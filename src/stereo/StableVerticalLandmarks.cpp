@@ -156,6 +156,17 @@ SadDisparity StableVerticalLandmarks::sad() const
 	return SadDisparity(o);
 }
 
+StereoVerticalLines::Options StableVerticalLandmarks::segmentStageOptions() const
+{
+	StereoVerticalLines::Options o;
+	o.segments = options.segments;
+	o.matching = options.matching;
+	o.sad = sad().options;
+	o.num_disparities = options.num_disparities;
+	o.sigma_img = options.sigma_img;
+	return o;
+}
+
 StereoLandmarkFrame StableVerticalLandmarks::process(
 	const cv::Mat& left, const cv::Mat& right, const StereoHead& head,
 	const mrpt::poses::CPosePDFGaussian& robot) const

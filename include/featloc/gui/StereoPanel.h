@@ -2,9 +2,11 @@
 #include <wx/bitmap.h>
 #include <wx/panel.h>
 
+#include <optional>
 #include <string>
 
 #include "featloc/gui/RunResults.h"
+#include "featloc/stereo/StereoVerticalLines.h"
 
 namespace featloc
 {
@@ -27,6 +29,10 @@ class StereoPanel : public wxPanel
 	void onPaint(wxPaintEvent&);
 
 	const RunResults* m_results = nullptr;
+	/** The segment stage's options, read once per results folder (or why
+	 * they could not be). */
+	std::optional<StereoVerticalLines::Options> m_options;
+	std::string m_optionsError;
 	wxBitmap m_runPicture, m_pairPicture;
 	std::string m_text;
 };

@@ -9,6 +9,7 @@
 #include "featloc/stereo/SadDisparity.h"
 #include "featloc/stereo/SegmentStereoMatcher.h"
 #include "featloc/stereo/StereoLandmarkExtractor.h"
+#include "featloc/stereo/StereoVerticalLines.h"
 #include "featloc/stereo/VerticalSegmentDetector.h"
 
 namespace featloc
@@ -108,6 +109,9 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 	cv::Mat disparity(const cv::Mat& left, const cv::Mat& right, int minDisparity = 0, int numDisparities = 0) const;
 	/** Stage 2 with this extractor's options. */
 	SadDisparity sad() const;
+	/** Stages 2.1-2.2 alone (StereoVerticalLines, no map) with this
+	 * extractor's options: what featloc-viewer redraws for a pair. */
+	StereoVerticalLines::Options segmentStageOptions() const;
 
    private:
 	std::string m_mapPath;	//!< options.map resolved
