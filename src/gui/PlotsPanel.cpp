@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "featloc/eval/TrajectoryEvaluator.h"
 #include "featloc/gui/TimeSeriesPlot.h"
 
 namespace featloc
@@ -14,8 +15,6 @@ namespace
 // The 95% quantile of chi-square with 3 degrees of freedom, the bound
 // featloc-run's NEES figure uses.
 constexpr double kChi2_3dof_95 = 7.815;
-// Ground truth further than this from a step's time is not paired with it.
-constexpr double kMaxPairingGap = 0.05;	 // [s]
 }  // namespace
 
 PlotsPanel::PlotsPanel(wxWindow* parent) : wxPanel(parent)
@@ -38,26 +37,33 @@ std::vector<std::pair<double, double>> PlotsPanel::positionErrors(const RunResul
 {
 	std::vector<std::pair<double, double>> out;
 	if (!r.groundTruth || r.steps.empty()) return out;
-	const auto& gt = r.groundTruth->poses;
-	const mrpt::poses::CPose2D toEstimate(r.groundTruthToEstimate);
-	const double t0 = r.steps[0].t;
-	for (size_t i = 0; i < r.steps.size(); i++)
+	// The steps paired with the ground truth as featloc-run paired them for
+	// its ATE (TrajectoryEvaluator, the run's max_time_difference).
+	Trajectory estimate;
+	for (const auto& s : r.steps)
 	{
-		const auto& s = r.steps[i];
-		const TimedPose* ref = nullptr;
-		if (!r.groundTruth->timed)
-			ref = i < gt.size() ? &gt[i] : nullptr;	// untimed: paired in order
-		else
-		{
-			auto it = std::lower_bound(gt.begin(), gt.end(), s.t,
-				[](const TimedPose& p, double t) { return p.t < t; });
-			if (it != gt.begin() && (it == gt.end() || std::abs((it - 1)->t - s.t) < std::abs(it->t - s.t)))
-				--it;
-			if (it != gt.end() && std::abs(it->t - s.t) <= kMaxPairingGap) ref = &*it;
-		}
-		if (!ref) continue;
-		const mrpt::poses::CPose2D g = toEstimate + mrpt::poses::CPose2D(ref->pose);
-		out.emplace_back(s.t - t0, std::hypot(g.x() - s.pose.x, g.y() - s.pose.y));
+		estimate.repeatedTimes |= !estimate.poses.empty() && estimate.poses.back().t == s.t;
+		TimedPose p;
+		p.t = s.t;
+		p.pose = s.pose;
+		estimate.poses.push_back(p);
+	}
+	std::vector<std::pair<size_t, size_t>> pairs;
+	try
+	{
+		pairs = TrajectoryEvaluator(r.maxTimeDifference).associate(*r.groundTruth, estimate);
+	}
+	catch (const std::exception&)
+	{
+		return out;	 // times that cannot be paired: no plot (the run said why)
+	}
+	const mrpt::poses::CPose2D toEstimate(r.groundTruthToEstimate);
+	for (const auto& [g, e] : pairs)
+	{
+		const mrpt::poses::CPose2D ref =
+			toEstimate + mrpt::poses::CPose2D(r.groundTruth->poses[g].pose);
+		const auto& s = r.steps[e];
+		out.emplace_back(s.t - r.steps[0].t, std::hypot(ref.x() - s.pose.x, ref.y() - s.pose.y));
 	}
 	return out;
 }

@@ -172,6 +172,9 @@ RunResults RunResultsLoader::load(
 		r.estimator = j.value("estimator", "");
 		if (j.contains("evaluation"))
 			evaluatedReference = j["evaluation"].value("reference", "");
+		if (j.contains("evaluation"))
+			r.maxTimeDifference =
+				j["evaluation"].value("max_time_difference_s", r.maxTimeDifference);
 		if (j.contains("evaluation") && j["evaluation"].contains("alignment"))
 		{
 			const auto& a = j["evaluation"]["alignment"];

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "featloc/eval/EvaluationOptions.h"
 #include "featloc/eval/Trajectory.h"
 #include "featloc/io/MatchTableFile.h"
 
@@ -57,6 +58,9 @@ struct RunResults
 	 * the SE(2) alignment featloc-run applied to the estimate before its ATE
 	 * (summary.json evaluation.alignment; identity without one). */
 	mrpt::math::TPose2D groundTruthToEstimate;
+	/** The run's evaluation pairing tolerance (summary.json
+	 * evaluation.max_time_difference_s) [s]. */
+	double maxTimeDifference = EvaluationOptions().max_time_difference;
 	/** nees.txt rows: time [s], NEES (3 dof). */
 	std::vector<std::pair<double, double>> nees;
 	std::vector<Landmark> landmarks;
