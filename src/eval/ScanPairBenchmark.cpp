@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "featloc/eval/EvaluationReport.h"
 #include "featloc/eval/ErrorStats.h"
 #include "featloc/math/DiagonalPoseGaussian.h"
 
@@ -106,11 +107,10 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 		const auto nees = ErrorStats::of(a.nees);
 		r.meanNees = nees.mean;
 		r.medianNees = nees.median;
-		// 7.815: the 95% quantile of chi-square with 3 degrees of freedom.
 		r.neesWithin95 = a.nees.empty()
 			? 0.0
 			: static_cast<double>(std::count_if(a.nees.begin(), a.nees.end(),
-				  [](double v) { return v <= 7.815; })) /
+				  [](double v) { return v <= EvaluationReport::kNeesBound95; })) /
 				static_cast<double>(a.nees.size());
 	}
 	return res;

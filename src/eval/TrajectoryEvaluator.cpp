@@ -205,8 +205,7 @@ void TrajectoryEvaluator::neesOf(
 			ref.x() - moved.x(), ref.y() - moved.y(), mrpt::math::wrapToPi(ref.phi() - moved.phi()));
 		nees.push_back(d.dot(ldlt.solve(d)));
 		rep.neesSeries.emplace_back(est.t, nees.back());
-		// 7.815: the 95% quantile of chi-square with 3 degrees of freedom.
-		if (nees.back() <= 7.815) within++;
+		if (nees.back() <= EvaluationReport::kNeesBound95) within++;
 	}
 	if (nees.empty()) return;
 	rep.hasNees = true;

@@ -10,13 +10,6 @@
 
 namespace featloc
 {
-namespace
-{
-// The 95% quantile of chi-square with 3 degrees of freedom, the bound
-// featloc-run's NEES figure uses.
-constexpr double kChi2_3dof_95 = 7.815;
-}  // namespace
-
 PlotsPanel::PlotsPanel(wxWindow* parent) : wxPanel(parent)
 {
 	auto* sizer = new wxBoxSizer(wxVERTICAL);
@@ -80,7 +73,7 @@ void PlotsPanel::setResults(const RunResults& r)
 	for (const auto& m : r.matches) times.emplace_back(m.t - t0, m.timeMs);
 	m_nees->setSeries(std::move(nees), tEnd,
 		r.groundTruth ? "nees.txt is missing" : "no ground truth: no NEES");
-	m_nees->setBand(0, kChi2_3dof_95);
+	m_nees->setBand(0, EvaluationReport::kNeesBound95);
 	m_time->setSeries(std::move(times), tEnd, "no scan matches in this run");
 }
 

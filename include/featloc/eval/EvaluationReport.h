@@ -34,6 +34,9 @@ struct EvaluationReport
 	bool hasNees = false;
 	ErrorStats nees;  //!< per pose: 3 on average if consistent
 	double neesWithin95 = 0;  //!< share within chi2(3) 95%: 0.95 if consistent
+	/** The bound of neesWithin95: the 95% quantile of chi-square with 3
+	 * degrees of freedom. */
+	static constexpr double kNeesBound95 = 7.815;
 	/** Per pose: (estimate's time [s], NEES), in time order. */
 	std::vector<std::pair<double, double>> neesSeries;
 
