@@ -13,8 +13,10 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 
+#include "featloc/core/ExceptionText.h"
 #include "featloc/gui/MapCanvas.h"
 #include "featloc/gui/MatchPanel.h"
 #include "featloc/gui/PlotsPanel.h"
@@ -69,69 +71,50 @@ ViewerFrame::ViewerFrame()
 void ViewerFrame::buildMenu()
 {
 	auto* file = new wxMenu;
-	const int openId = wxWindow::NewControlId(), rawlogId = wxWindow::NewControlId(),
-			  shotId = wxWindow::NewControlId();
-	file->Append(openId, "&Open results folder...\tCtrl+O");
-	file->Append(rawlogId, "Open &rawlog (runs featloc-run with the defaults)...\tCtrl+R");
-	file->Append(shotId, "Save &screenshot...\tCtrl+S");
-	file->AppendSeparator();
-	file->Append(wxID_EXIT, "&Quit\tCtrl+Q");
 	auto* bar = new wxMenuBar;
 	bar->Append(file, "&File");
 	SetMenuBar(bar);
+	// A menu item whose action shows its errors in a message box.
+	auto item = [&](const wxString& label, std::function<void()> action) {
+		const int id = wxWindow::NewControlId();
+		file->Append(id, label);
+		Bind(
+			wxEVT_MENU,
+			[this, action](wxCommandEvent&) {
+				try
+				{
+					action();
+				}
+				catch (const std::exception& e)
+				{
+					wxMessageBox(exceptionText(e), "featloc-viewer", wxICON_ERROR, this);
+				}
+			},
+			id);
+	};
+	item("&Open results folder...\tCtrl+O", [this] {
+		wxDirDialog dlg(this, "Open a featloc-run results folder");
+		if (dlg.ShowModal() == wxID_OK) openResults(dlg.GetPath().ToStdString(), true);
+	});
+	item("Open &rawlog (runs featloc-run with the defaults)...\tCtrl+R", [this] {
+		wxFileDialog dlg(this, "Open a rawlog", "", "",
+			"Rawlogs (*.rawlog;*.rawlog.gz;*.log;*.log.gz)|*.rawlog;*.rawlog.gz;*.log;*.log.gz|"
+			"All files|*",
+			wxFD_OPEN | wxFD_FILE_MUST_EXIST);
+		if (dlg.ShowModal() != wxID_OK) return;
+		wxBusyCursor busy;
+		SetStatusText("running featloc-run on " + dlg.GetPath() + " ...", 0);
+		Update();
+		openResults(RawlogRunner::run(dlg.GetPath().ToStdString(), ""), true);
+	});
+	item("Save &screenshot...\tCtrl+S", [this] {
+		wxFileDialog dlg(this, "Save a screenshot", "", "featloc-viewer.png", "PNG (*.png)|*.png",
+			wxFD_SAVE | wxFD_OVERWRITE_PROMPT);
+		if (dlg.ShowModal() == wxID_OK) WindowScreenshot::save(*this, dlg.GetPath().ToStdString());
+	});
+	file->AppendSeparator();
+	file->Append(wxID_EXIT, "&Quit\tCtrl+Q");
 	Bind(wxEVT_MENU, [this](wxCommandEvent&) { Close(); }, wxID_EXIT);
-	Bind(
-		wxEVT_MENU,
-		[this](wxCommandEvent&) {
-			wxDirDialog dlg(this, "Open a featloc-run results folder");
-			if (dlg.ShowModal() != wxID_OK) return;
-			try
-			{
-				openResults(dlg.GetPath().ToStdString(), true);
-			}
-			catch (const std::exception& e)
-			{
-				wxMessageBox(e.what(), "featloc-viewer", wxICON_ERROR, this);
-			}
-		},
-		openId);
-	Bind(
-		wxEVT_MENU,
-		[this](wxCommandEvent&) {
-			wxFileDialog dlg(this, "Open a rawlog", "", "",
-				"Rawlogs (*.rawlog;*.rawlog.gz;*.log;*.log.gz)|*.rawlog;*.rawlog.gz;*.log;*.log.gz|"
-				"All files|*",
-				wxFD_OPEN | wxFD_FILE_MUST_EXIST);
-			if (dlg.ShowModal() != wxID_OK) return;
-			try
-			{
-				wxBusyCursor busy;
-				SetStatusText("running featloc-run on " + dlg.GetPath() + " ...", 0);
-				Update();
-				openResults(RawlogRunner::run(dlg.GetPath().ToStdString(), ""), true);
-			}
-			catch (const std::exception& e)
-			{
-				wxMessageBox(e.what(), "featloc-viewer", wxICON_ERROR, this);
-			}
-		},
-		rawlogId);
-	Bind(
-		wxEVT_MENU,
-		[this](wxCommandEvent&) {
-			wxFileDialog dlg(this, "Save a screenshot", "", "featloc-viewer.png", "PNG (*.png)|*.png",
-				wxFD_SAVE | wxFD_OVERWRITE_PROMPT);
-			if (dlg.ShowModal() != wxID_OK) return;
-			try
-			{
-				WindowScreenshot::save(*this, dlg.GetPath().ToStdString());
-			}
-			catch (const std::exception& e)
-			{
-				wxMessageBox(e.what(), "featloc-viewer", wxICON_ERROR, this);
-			}
-		},
-		shotId);
 }
 
 void ViewerFrame::openResults(const std::string& folder, bool showProgress)
