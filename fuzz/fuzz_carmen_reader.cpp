@@ -1,19 +1,10 @@
-// Fuzz target: CarmenLogReader (Radish/CARMEN FLASER logs).
-#include <cstdint>
-
-#include "FuzzInput.h"
-#include "featloc/core/InputError.h"
-#include "featloc/io/CarmenLogReader.h"
+// Fuzz target: the CARMEN log reader.
+// Its body, featloc::fuzz::carmenReader (FuzzBodies.h), also runs the
+// regression inputs in the normal test suite.
+#include "FuzzBodies.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-	featloc::fuzz::FuzzFile file(data, size, ".log");
-	try
-	{
-		featloc::CarmenLogReader::read(file.path, featloc::CarmenLogReader::Options());
-	}
-	catch (const featloc::InputError&)
-	{
-	}
+	featloc::fuzz::carmenReader(data, size);
 	return 0;
 }
