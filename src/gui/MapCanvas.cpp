@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <unordered_set>
 
+#include "featloc/output/ThreeSigmaEllipse.h"
 #include "featloc/scan/ScanPoints.h"
 
 namespace featloc
@@ -81,16 +82,9 @@ mrpt::opengl::CSetOfLines::Ptr polyline(const std::vector<mrpt::math::TPose2D>& 
 mrpt::opengl::CEllipsoid2D::Ptr ellipse(
 	double x, double y, double cxx, double cxy, double cyy, const unsigned char (&rgb)[3])
 {
-	auto e = mrpt::opengl::CEllipsoid2D::Create();
-	mrpt::math::CMatrixDouble22 c;
-	c(0, 0) = cxx;
-	c(0, 1) = c(1, 0) = cxy;
-	c(1, 1) = cyy;
-	e->setCovMatrixAndMean(c, mrpt::math::CVectorFixedDouble<2>({x, y}));
-	e->setQuantiles(3.0f);
+	auto e = threeSigmaEllipse(x, y, cxx, cxy, cyy, 0.025);
 	colour(*e, rgb);
 	e->setLineWidth(2);
-	e->setLocation(0, 0, 0.025);
 	return e;
 }
 }  // namespace

@@ -13,24 +13,19 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "featloc/output/ThreeSigmaEllipse.h"
 #include "featloc/scan/ScanPoints.h"
 
 namespace featloc
 {
 namespace
 {
-mrpt::opengl::CEllipsoid2D::Ptr ellipse(
+// 0.03 m up: above the scans and the path.
+std::shared_ptr<mrpt::opengl::CEllipsoid2D> ellipse(
 	const Eigen::Vector2d& mean, const Eigen::Matrix2d& cov)
 {
-	auto e = mrpt::opengl::CEllipsoid2D::Create();
-	mrpt::math::CMatrixDouble22 c;
-	c(0, 0) = cov(0, 0);
-	c(0, 1) = c(1, 0) = 0.5 * (cov(0, 1) + cov(1, 0));
-	c(1, 1) = cov(1, 1);
-	e->setCovMatrixAndMean(c, mrpt::math::CVectorFixedDouble<2>({mean.x(), mean.y()}));
-	e->setQuantiles(3.0f);
-	e->setLocation(0, 0, 0.03);
-	return e;
+	return threeSigmaEllipse(
+		mean.x(), mean.y(), cov(0, 0), 0.5 * (cov(0, 1) + cov(1, 0)), cov(1, 1), 0.03);
 }
 }  // namespace
 
