@@ -15,21 +15,7 @@ import bisect
 import math
 import sys
 
-
-def read_gt(path):
-    rows = []
-    for line in open(path):
-        f = line.replace(",", " ").split()
-        if not f or f[0][0] in "#%":
-            continue
-        if len(f) == 8:  # TUM: yaw from the quaternion
-            qx, qy, qz, qw = map(float, f[4:8])
-            yaw = math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))
-            rows.append((float(f[0]), float(f[1]), float(f[2]), yaw))
-        else:
-            rows.append(tuple(float(v) for v in f[:4]))
-    rows.sort()
-    return rows
+from planar_poses import read_poses, relative, wrap
 
 
 def nearest(rows, times, t):
@@ -38,21 +24,14 @@ def nearest(rows, times, t):
     return rows[best] if abs(times[best] - t) <= 0.01 else None
 
 
-def relative(a, b):
-    dx, dy = b[1] - a[1], b[2] - a[2]
-    c, s = math.cos(a[3]), math.sin(a[3])
-    return (c * dx + s * dy, -s * dx + c * dy, math.atan2(math.sin(b[3] - a[3]), math.cos(b[3] - a[3])))
-
-
 def error(p, q):
-    dyaw = math.atan2(math.sin(p[2] - q[2]), math.cos(p[2] - q[2]))
-    return math.hypot(p[0] - q[0], p[1] - q[1]), math.degrees(dyaw)
+    return math.hypot(p[0] - q[0], p[1] - q[1]), math.degrees(wrap(p[2] - q[2]))
 
 
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
-    gt = read_gt(sys.argv[2])
+    gt = read_poses(sys.argv[2])
     times = [r[0] for r in gt]
     every = "--all" in sys.argv
     print("t ref_t status used | estimate error m deg | guess error m deg | reason")
@@ -68,7 +47,7 @@ def main():
         if not a or not b:
             print(f"{t:.3f} {ref_t:.3f} {status} {used} | no ground truth at these times")
             continue
-        truth = relative(a, b)
+        truth = relative(a[1:4], b[1:4])
         guess = tuple(map(float, f[9:12]))
         est = tuple(map(float, f[12:15]))
         ee, ge = error(est, truth), error(guess, truth)

@@ -12,23 +12,10 @@ import bisect
 import math
 import sys
 
-
-def rows(path):
-    with open(path) as f:
-        return [list(map(float, l.split())) for l in f if l.strip() and l[0] not in "#%"]
+from planar_poses import read_poses, relative
 
 
-def wrap(a):
-    return (a + math.pi) % (2 * math.pi) - math.pi
-
-
-def rel(a, b):
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    c, s = math.cos(a[2]), math.sin(a[2])
-    return (c * dx + s * dy, -s * dx + c * dy, wrap(b[2] - a[2]))
-
-
-odo, gt = rows(sys.argv[1]), rows(sys.argv[2])
+odo, gt = read_poses(sys.argv[1]), read_poses(sys.argv[2])
 n = int(sys.argv[3]) if len(sys.argv) > 3 else 6
 gtt = [g[0] for g in gt]
 
@@ -40,8 +27,8 @@ def gt_at(t):
 
 steps = []
 for k in range(1, len(odo)):
-    o = rel(odo[k - 1][1:4], odo[k][1:4])
-    g = rel(gt_at(odo[k - 1][0]), gt_at(odo[k][0]))
+    o = relative(odo[k - 1][1:4], odo[k][1:4])
+    g = relative(gt_at(odo[k - 1][0]), gt_at(odo[k][0]))
     steps.append((k, odo[k][0] - odo[k - 1][0], math.hypot(*o[:2]), math.hypot(*g[:2]),
                   math.hypot(o[0] - g[0], o[1] - g[1]), math.degrees(o[2]), math.degrees(g[2])))
 errs = sorted(s[4] for s in steps)
