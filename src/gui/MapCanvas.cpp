@@ -41,8 +41,8 @@ mrpt::opengl::CPointCloud::Ptr cloud(
 // The map's scans are drawn one point per cell: a robot sees the same
 // walls again and again, so a long log's millions of points shrink to what
 // the walls are. Cells of 2, 4, 8 and 16 cm; each redraw uses the finest
-// that is not smaller than a pixel (OnPreRender), so redraws stay fast
-// however long the log.
+// whose cells are at least kPixelsPerCell pixels (OnPreRender), so the
+// points drawn follow the walls' extent, not the number of scans.
 constexpr double kMapCellSize = 0.02;  // [m]
 constexpr float kPixelsPerCell = 2;
 
