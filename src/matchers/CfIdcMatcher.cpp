@@ -51,12 +51,12 @@ void CfIdcMatcher::Parameters::saveToConfigFile(
 	idc.saveToConfigFile(c, s);
 }
 
-void CfIdcMatcher::loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void CfIdcMatcher::loadOwnParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
 {
 	params.loadFromConfigFile(cfg, section);
 }
 
-void CfIdcMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const
+void CfIdcMatcher::saveOwnParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const
 {
 	params.saveToConfigFile(cfg, section);
 }

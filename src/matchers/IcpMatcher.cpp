@@ -143,13 +143,13 @@ mrpt::slam::CICP::TConfigParams IcpMatcher::Parameters::toCICP() const
 	return o;
 }
 
-void IcpMatcher::loadParams(
+void IcpMatcher::loadOwnParams(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
 {
 	params.loadFromConfigFile(cfg, section);
 }
 
-void IcpMatcher::saveParams(
+void IcpMatcher::saveOwnParams(
 	mrpt::config::CConfigFileBase& cfg, const std::string& section) const
 {
 	params.saveToConfigFile(cfg, section);

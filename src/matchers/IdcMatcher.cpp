@@ -18,12 +18,12 @@ void IdcMatcher::Parameters::saveToConfigFile(
 	idc.saveToConfigFile(c, s);
 }
 
-void IdcMatcher::loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void IdcMatcher::loadOwnParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
 {
 	params.loadFromConfigFile(cfg, section);
 }
 
-void IdcMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const
+void IdcMatcher::saveOwnParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const
 {
 	params.saveToConfigFile(cfg, section);
 }

@@ -156,14 +156,14 @@ void PcmFeatureMatcher::Parameters::saveToConfigFile(
 		"[deg] failure when the estimate's rotation sigma exceeds this");
 }
 
-void PcmFeatureMatcher::loadParams(
+void PcmFeatureMatcher::loadOwnParams(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
 {
 	params.loadFromConfigFile(cfg, section);
 	m_extractor.params = params.extraction;
 }
 
-void PcmFeatureMatcher::saveParams(
+void PcmFeatureMatcher::saveOwnParams(
 	mrpt::config::CConfigFileBase& cfg, const std::string& section) const
 {
 	params.saveToConfigFile(cfg, section);

@@ -26,6 +26,18 @@ mrpt::poses::CPose2D planar(const mrpt::poses::CPose3D& p)
 }
 }  // namespace
 
+void ScanMatcher::loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+	m_coarse.options.loadFromConfigFile(cfg, section);
+	loadOwnParams(cfg, section);
+}
+
+void ScanMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const
+{
+	m_coarse.options.saveToConfigFile(cfg, section);
+	saveOwnParams(cfg, section);
+}
+
 std::string ScanMatcher::className() const
 {
 	return GetRuntimeClass()->className;
@@ -44,12 +56,17 @@ MatchResult ScanMatcher::match(
 	// Robot motion X, sensor motion Y: X = S1 (+) Y (+) S2^-1, hence
 	// Y = S1^-1 (+) X (+) S2. MRPT propagates the covariance through both
 	// compositions with their Jacobians.
-	mrpt::poses::CPosePDFGaussian sensorGuess = initialGuess;
-	sensorGuess.changeCoordinatesReference(mrpt::poses::CPose2D() - s1);
-	sensorGuess += s2;
+	auto toSensorFrames = [&](mrpt::poses::CPosePDFGaussian g) {
+		g.changeCoordinatesReference(mrpt::poses::CPose2D() - s1);
+		g += s2;
+		return g;
+	};
+	// The coarse search's window also covers what the gate allows for.
+	mrpt::poses::CPosePDFGaussian window = initialGuess;
+	window.cov += gateAllowance;
 
-	MatchResult r = matchInSensorFrames(
-		ScanPoints::fromScan(reference), ScanPoints::fromScan(current), sensorGuess);
+	MatchResult r = matchInSensorFrames(ScanPoints::fromScan(reference),
+		ScanPoints::fromScan(current), toSensorFrames(initialGuess), toSensorFrames(window));
 
 	r.estimate.changeCoordinatesReference(s1);
 	r.estimate += mrpt::poses::CPose2D() - s2;
@@ -70,7 +87,7 @@ MatchResult ScanMatcher::match(
 	const mrpt::poses::CPosePDFGaussian& initialGuess)
 {
 	const auto t0 = std::chrono::steady_clock::now();
-	MatchResult r = matchInSensorFrames(reference, current, initialGuess);
+	MatchResult r = matchInSensorFrames(reference, current, initialGuess, initialGuess);
 	r.guess = initialGuess;
 	checkAgainstGuess(initialGuess, r);
 	r.timeSeconds =
@@ -98,12 +115,14 @@ void ScanMatcher::checkAgainstGuess(
 		m2, gate, std::hypot(d[0], d[1]), mrpt::RAD2DEG(d[2]));
 	r.success = false;
 	r.rejectedByGuessGate = true;
+	r.failureKind = "guess_gate";
 	r.failureReason = buf;
 }
 
 MatchResult ScanMatcher::matchInSensorFrames(
 	const ScanPoints& reference, const ScanPoints& current,
-	const mrpt::poses::CPosePDFGaussian& initialGuess)
+	const mrpt::poses::CPosePDFGaussian& initialGuess,
+	const mrpt::poses::CPosePDFGaussian& window)
 {
 	MatchResult r;
 	r.estimate = initialGuess;
@@ -113,16 +132,52 @@ MatchResult ScanMatcher::matchInSensorFrames(
 		current.size() < kMinPointsPerScan)
 	{
 		r.success = false;
+		r.failureKind = "too_few_points";
 		r.failureReason = "too few valid points (reference " +
 			std::to_string(reference.size()) + ", current " +
 			std::to_string(current.size()) + "; need at least " +
 			std::to_string(kMinPointsPerScan) + ")";
 	}
+	else if (m_coarse.options.enabled)
+		matchFromCoarseSearch(reference, current, window, r);
 	else
 	{
 		matchPoints(reference, current, initialGuess, r);
+		if (!r.success) r.failureKind = "matcher";
 	}
 	return r;
+}
+
+void ScanMatcher::matchFromCoarseSearch(const ScanPoints& reference, const ScanPoints& current,
+	const mrpt::poses::CPosePDFGaussian& window, MatchResult& r)
+{
+	const CorrelativeScanSearch::Result coarse = m_coarse.search(reference, current, window);
+	r.coarseScore = coarse.bestScore;
+	r.coarseSecondScore = coarse.secondScore;
+	if (!coarse.success)
+	{
+		r.success = false;
+		r.failureKind = "no_overlap";
+		r.failureReason = coarse.failureReason;
+		return;
+	}
+	matchPoints(reference, current,
+		mrpt::poses::CPosePDFGaussian(coarse.best, coarse.gridCovariance()), r);
+	if (!r.success)
+	{
+		r.failureKind = "matcher";
+		return;
+	}
+	// The estimate against the search's other solutions (and its own best,
+	// if the iterations walked away from it into another minimum). Refining
+	// the rival too and keeping the better refinement was tried: it moved
+	// few matches from flagged to right and some to silently wrong (people
+	// walking), so an ambiguous match fails.
+	const auto amb = m_coarse.ambiguity(coarse, r.estimate.mean, window);
+	if (!amb.ambiguous) return;
+	r.success = false;
+	r.failureKind = "ambiguous";
+	r.failureReason = amb.reason;
 }
 
 MatchInspection ScanMatcher::inspectLastMatch(const ScanPoints& reference,

@@ -93,10 +93,10 @@ class CfIdcMatcher : public ScanMatcher
 
 	Parameters params;
 
-	void loadParams(
+	void loadOwnParams(
 		const mrpt::config::CConfigFileBase& cfg,
 		const std::string& section) override;
-	void saveParams(
+	void saveOwnParams(
 		mrpt::config::CConfigFileBase& cfg,
 		const std::string& section) const override;
 

@@ -23,6 +23,16 @@ struct MatchResult
 	 * guess for the guess's covariance (guess_gate_chi2): `estimate` is the
 	 * converged motion. */
 	bool rejectedByGuessGate = false;
+	/** What kind of failure (empty on success), for the counts of
+	 * summary.json and featloc-bench: "too_few_points", "no_overlap" (the
+	 * coarse search), "ambiguous" (another solution explains the scan about
+	 * as well as the estimate), "guess_gate", or "matcher" (the matcher's
+	 * own reasons). */
+	std::string failureKind;
+	/** The coarse search (CorrelativeScanSearch) when it ran: the share of
+	 * points on the reference at its best pose and at its best contender
+	 * (0 when it did not run or found none). */
+	double coarseScore = 0, coarseSecondScore = 0;
 	/** What the gates add to the guess's covariance (ScanMatcher::match's
 	 * gateAllowance; zero when none). */
 	mrpt::math::CMatrixDouble33 gateAllowance;

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "featloc/matchers/CorrelativeScanSearch.h"
 #include "featloc/matchers/MatchInspection.h"
 #include "featloc/matchers/MatchResult.h"
 #include "featloc/scan/ScanPoints.h"
@@ -24,7 +25,14 @@ namespace featloc
  * scans to their sensor frames (ScanPoints), converts the guess with the
  * scans' sensorPose, calls matchPoints(), and converts the result (mean and
  * covariance) back. Subclasses implement matchPoints() only, in the sensor
- * frame, on bearing-ordered valid points. */
+ * frame, on bearing-ordered valid points.
+ *
+ * The wide basin (issue "scan matchers that hold up"): unless
+ * `coarse_search = false`, every matcher's iterations start from the best
+ * pose of a correlative search over the guess's window
+ * (CorrelativeScanSearch), and a match whose search finds too little overlap
+ * or two distinct solutions, or whose iterations leave the search's solution,
+ * fails with the reason instead of returning a confident wrong answer. */
 class ScanMatcher : public mrpt::rtti::CObject
 {
 	DEFINE_VIRTUAL_MRPT_OBJECT(ScanMatcher)
@@ -32,16 +40,16 @@ class ScanMatcher : public mrpt::rtti::CObject
    public:
 	~ScanMatcher() override = default;
 
-	/** Reads this matcher's parameters from `section`; unspecified keys
-	 * keep their defaults. Throws ConfigError on a bad value. */
-	virtual void loadParams(
-		const mrpt::config::CConfigFileBase& cfg,
-		const std::string& section) = 0;
+	/** Reads this matcher's parameters from `section` (the coarse search's
+	 * `coarse_*` keys and the matcher's own); unspecified keys keep their
+	 * defaults. Throws ConfigError on a bad value. */
+	void loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 
 	/** Writes every parameter, with its unit and meaning as a comment. */
-	virtual void saveParams(
-		mrpt::config::CConfigFileBase& cfg,
-		const std::string& section) const = 0;
+	void saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const;
+
+	/** The wide-basin stage's parameters (`coarse_*` keys). */
+	CorrelativeScanSearch::Options& coarseSearchOptions() { return m_coarse.options; }
 
 	/** Motion of the robot from the reference scan to the current scan.
 	 * \param initialGuess robot-frame motion guess (e.g. the odometry
@@ -77,6 +85,12 @@ class ScanMatcher : public mrpt::rtti::CObject
 	std::string className() const;
 
    protected:
+	/** The matcher's own parameters (the paper's and featloc's additions). */
+	virtual void loadOwnParams(
+		const mrpt::config::CConfigFileBase& cfg, const std::string& section) = 0;
+	virtual void saveOwnParams(
+		mrpt::config::CConfigFileBase& cfg, const std::string& section) const = 0;
+
 	/** Matchers that reject estimates implausibly far from the initial
 	 * guess return the Mahalanobis^2 threshold (0: no check). match()
 	 * applies it in the robot frame, with the guess's and the estimate's
@@ -93,10 +107,19 @@ class ScanMatcher : public mrpt::rtti::CObject
 		MatchResult& result) = 0;
 
    private:
-	/** Point checks and matchPoints(), no timing, no guess check. */
+	/** Point checks, the coarse search over `window`'s 3 sigma (the guess
+	 * with the gate allowance) and matchPoints(); no timing, no guess
+	 * check. */
 	MatchResult matchInSensorFrames(
 		const ScanPoints& reference, const ScanPoints& current,
-		const mrpt::poses::CPosePDFGaussian& initialGuess);
+		const mrpt::poses::CPosePDFGaussian& initialGuess,
+		const mrpt::poses::CPosePDFGaussian& window);
+	/** The iterations from the coarse search's solution, and the check that
+	 * they stay on it. */
+	void matchFromCoarseSearch(const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPosePDFGaussian& window, MatchResult& r);
+
+	CorrelativeScanSearch m_coarse;
 	void checkAgainstGuess(const mrpt::poses::CPosePDFGaussian& guess, MatchResult& r) const;
 };
 

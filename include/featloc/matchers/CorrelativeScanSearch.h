@@ -1,0 +1,162 @@
+#pragma once
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+
+#include <string>
+#include <vector>
+
+#include "featloc/scan/PointNoiseEstimator.h"
+#include "featloc/scan/ScanPoints.h"
+#include "featloc/scan/ScanSegment.h"
+
+namespace featloc
+{
+/** The wide-basin stage in front of every featloc matcher: Olson's
+ * multi-resolution correlative scan matching ("Real-time correlative scan
+ * matching", ICRA 2009, sections III-IV), as Cartographer's and Karto's
+ * front ends use it.
+ *
+ * The reference scan becomes a lookup table: each cell holds
+ * exp(-d^2 / 2 sigma_hit^2), d the distance to the reference surface (its
+ * points joined where consecutive, OpenCV's distance transform). A pose's
+ * score is the mean table value under the current scan's points placed by
+ * that pose: the share of the scan that lies on the reference. Every pose of
+ * the guess's 3-sigma window is scored, on a grid of `resolution` in
+ * translation and of one cell's motion at the far points in rotation, by
+ * branch and bound: low-resolution tables holding the maximum over each
+ * block of 2^L x 2^L cells bound every pose of a block, and blocks are
+ * opened best bound first, each split in four.
+ *
+ * A scan that is nowhere on the reference has too little overlap: the
+ * search fails. The search also keeps going down to contender_ratio x the
+ * best score, to find the contenders: poses further than coarse_distinct_xy
+ * or coarse_distinct_yaw_DEG from the best (featloc-bench's gross error).
+ * Once the matcher has refined the best, ambiguity() compares its estimate
+ * with them on a sharp score (sigma of about the range noise, every
+ * current point), point by point: a
+ * distinct solution that the points do not clearly reject makes the match
+ * ambiguous,
+ * and it is reported as a failure: a flagged failure is better than a
+ * confident wrong answer. The sharp score is what decides because the
+ * search's own score is smooth by design (its wide sigma makes the basin)
+ * and cannot tell a corridor's stretches apart that the matcher can. */
+class CorrelativeScanSearch
+{
+   public:
+	struct Options : public mrpt::config::CLoadableOptions
+	{
+		/** coarse_search. Off by default until its ambiguity test holds on
+		 * noisy logs (doc/benchmarks.md, "Wide basin"). */
+		bool enabled = false;
+		double windowSigmas = 3.0;	//!< half-window in sigmas of the guess
+		double minWindowXY = 0.10;	//!< [m] half-window at least this
+		double minWindowYaw = 0.05235987755982988;	//!< [rad] (3 deg)
+		double maxWindowXY = 0.60;	//!< [m] half-window at most this
+		double maxWindowYaw = 0.4363323129985824;  //!< [rad] (25 deg)
+		double resolution = 0.03;  //!< [m] lookup cell and translation step
+		double hitSigma = 0.05;	 //!< [m] width of the table around the surface
+		unsigned int maxPoints = 150;  //!< current points scored (evenly picked)
+		double minScore = 0.25;	 //!< fail below this share of points on the reference
+		double contenderRatio = 0.90;  //!< poses scoring this x the best are contenders
+		double ambiguityZ = 1.0;  //!< fail unless the points favour the estimate by this z (0: off)
+		double sharpSigma = 0.02;  //!< [m] width of the sharp score, at least (else 2x the scan's scatter)
+		/** Solutions further apart than this in translation or rotation are
+		 * distinct: the silent-gross-error thresholds of featloc-bench. */
+		double distinctXY = 0.10;  //!< [m]
+		double distinctYaw = 0.03490658503988659;  //!< [rad] (2 deg)
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+	};
+
+	struct Result
+	{
+		bool success = false;
+		std::string failureReason;
+		mrpt::poses::CPose2D best;	//!< pose of current in reference
+		double bestScore = 0;  //!< share of the scored points on the reference [0-1]
+		struct Contender
+		{
+			mrpt::poses::CPose2D pose;
+			double score = 0;
+		};
+		/** The best poses distinct from `best` and from one another that
+		 * score at least contenderRatio x bestScore, best first. */
+		std::vector<Contender> contenders;
+		double secondScore = 0;	 //!< the first contender's (0: none)
+		double windowXY[2] = {0, 0}, windowYaw = 0;	 //!< half-widths searched
+		double resolution = 0;	//!< [m] translation step used (cell size)
+		double yawStep = 0;	 //!< [rad] rotation step
+		size_t posesScored = 0;	 //!< low- and full-resolution poses scored
+		/** Covariance to give the matcher that refines `best`: one step of
+		 * the search grid as one sigma. */
+		mrpt::math::CMatrixDouble33 gridCovariance() const;
+	};
+
+	Options options;
+
+	/** Searches the window around `guess` (its mean, 3 sigma of its
+	 * covariance clamped to [min, max] windows). `reference` and `current`
+	 * are in their sensor frames, `guess` is current's pose in reference's. */
+	Result search(const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPosePDFGaussian& guess);
+
+	/** Mean of exp(-d^2 / 2 sigma^2) over every current point of the last
+	 * search(), d its distance to the reference surface at `pose`, sigma the
+	 * larger of sharp_sigma and twice the reference's point scatter. */
+	double sharpScoreAt(const mrpt::poses::CPose2D& pose) const;
+
+	/** The paired evidence for `a` over `b`: z = sum(d_i) / sqrt(sum(d_i^2)),
+	 * d_i point i's sharp score at a minus at b (0 when they score alike). */
+	double evidence(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const;
+
+	struct Ambiguity
+	{
+		bool ambiguous = false;
+		mrpt::poses::CPose2D rival;	 //!< the solution the points do not reject
+		double z = 0;  //!< evidence for the estimate over the rival
+		std::string reason;
+	};
+	/** Whether `estimate` (the matcher's refinement of r.best) is
+	 * ambiguous: a contender of `r` (or r.best itself), distinct from it,
+	 * inside the 99% region of `guess` (the search's window covariance),
+	 * and at its best grid neighbour, that the points do not reject
+	 * (evidence(estimate, contender) < ambiguityZ). */
+	Ambiguity ambiguity(const Result& r, const mrpt::poses::CPose2D& estimate,
+		const mrpt::poses::CPosePDFGaussian& guess) const;
+
+	/** Whether two poses are distinct solutions (distinctXY, distinctYaw). */
+	bool distinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const;
+
+   private:
+	/** The tables of `reference`, with levels up to blocks as wide as a
+	 * window of +-halfWindowXY. */
+	void buildTables(const ScanPoints& reference, double halfWindowXY);
+	void pickPoints(const ScanPoints& current);
+	/** Every grid pose of r's window whose score reaches contenderRatio x
+	 * the best (only the best when the ambiguity test is off), best first. */
+	std::vector<Result::Contender> branchAndBound(
+		const mrpt::poses::CPosePDFGaussian& guess, Result& r) const;
+	/** The grid neighbour of `o` (one step in x, y, yaw) with the best
+	 * sharp score. */
+	mrpt::poses::CPose2D bestGridNeighbour(const Result& r, const mrpt::poses::CPose2D& o) const;
+	/** Every current point's sharp score at `pose`. */
+	void sharpScores(const mrpt::poses::CPose2D& pose, std::vector<double>& out) const;
+
+	// The lookup tables, row-major, m_width x m_height cells of
+	// m_resolution from (m_x0, m_y0): [0] the full-resolution one, [L] the
+	// maxima over blocks of 2^L x 2^L cells.
+	std::vector<std::vector<float>> m_levels;
+	int m_width = 0, m_height = 0;
+	double m_x0 = 0, m_y0 = 0, m_resolution = 0;
+	int m_top = 0;	// the top level
+	std::vector<float> m_distance;	// [m] to the reference surface, full resolution
+	std::vector<ScanSegment> m_segments;  // the reference's surfaces
+	PointNoiseEstimator m_noise;
+	double m_sharpSigma = 0;  // [m] the sharp score's width for this reference
+	std::vector<double> m_px, m_py;	 // the scored current points
+	std::vector<double> m_allX, m_allY;	 // every current point (sharp score)
+};
+}  // namespace featloc

@@ -1,0 +1,502 @@
+#include "featloc/matchers/CorrelativeScanSearch.h"
+
+#include <mrpt/core/bits_math.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <queue>
+#include <opencv2/imgproc.hpp>
+
+#include "featloc/config/ConfigValues.h"
+#include "featloc/scan/AdaptiveBreakpointSegmenter.h"
+
+namespace featloc
+{
+namespace
+{
+/** The tables never exceed this many cells: a reference spread wider than
+ * resolution x 1500 cells per side is searched at a coarser resolution. */
+constexpr double kMaxTableCells = 1500.0 * 1500.0;
+
+/** The breakpoint rule that joins reference points into surfaces: lambda
+ * (the most grazing incidence still one surface) and the range noise. */
+constexpr double kJoinLambda = 0.08726646259971647;	 //!< [rad] (5 deg)
+constexpr double kJoinSigmaR = 0.01;  //!< [m]
+/** The sharp score's sigma is at least this many times the reference
+ * scan's own point scatter (PointNoiseEstimator). */
+constexpr double kSharpNoiseFactor = 2.0;
+
+/** Levels of the branch and bound: blocks of up to 2^6 = 64 cells a side. */
+constexpr int kMaxLevel = 6;
+/** Contenders outside the guess's 99% region (chi2, 3 dof) are ignored. */
+constexpr double kPlausibleChi2 = 11.34;
+/** At most this many contenders are refined and compared with the estimate. */
+constexpr size_t kMaxContenders = 6;
+}  // namespace
+
+void CorrelativeScanSearch::Options::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace featloc::config;
+	read(c, s, "coarse_search", enabled);
+	read(c, s, "coarse_window_sigmas", windowSigmas);
+	read(c, s, "coarse_min_window_xy", minWindowXY);
+	readDegrees(c, s, "coarse_min_window_yaw_DEG", minWindowYaw);
+	read(c, s, "coarse_max_window_xy", maxWindowXY);
+	readDegrees(c, s, "coarse_max_window_yaw_DEG", maxWindowYaw);
+	read(c, s, "coarse_resolution", resolution);
+	read(c, s, "coarse_hit_sigma", hitSigma);
+	read(c, s, "coarse_max_points", maxPoints);
+	read(c, s, "coarse_min_score", minScore);
+	read(c, s, "coarse_contender_ratio", contenderRatio);
+	read(c, s, "coarse_ambiguity_z", ambiguityZ);
+	read(c, s, "coarse_sharp_sigma", sharpSigma);
+	read(c, s, "coarse_distinct_xy", distinctXY);
+	readDegrees(c, s, "coarse_distinct_yaw_DEG", distinctYaw);
+	require(windowSigmas > 0, c, s, "coarse_window_sigmas", "> 0");
+	require(minWindowXY >= 0, c, s, "coarse_min_window_xy", ">= 0");
+	require(minWindowYaw >= 0, c, s, "coarse_min_window_yaw_DEG", ">= 0");
+	require(maxWindowXY >= minWindowXY && maxWindowXY <= 5, c, s, "coarse_max_window_xy",
+		"in [coarse_min_window_xy, 5]");
+	require(maxWindowYaw >= minWindowYaw && maxWindowYaw <= M_PI, c, s,
+		"coarse_max_window_yaw_DEG", "in [coarse_min_window_yaw_DEG, 180]");
+	require(resolution >= 0.005 && resolution <= 0.5, c, s, "coarse_resolution",
+		"in [0.005, 0.5]");
+	require(hitSigma > 0, c, s, "coarse_hit_sigma", "> 0");
+	require(maxPoints >= 3, c, s, "coarse_max_points", ">= 3");
+	require(minScore >= 0 && minScore <= 1, c, s, "coarse_min_score", "in [0, 1]");
+	require(ambiguityZ >= 0, c, s, "coarse_ambiguity_z", ">= 0 (0 disables the check)");
+	require(contenderRatio > 0 && contenderRatio <= 1, c, s, "coarse_contender_ratio", "in (0, 1]");
+	require(sharpSigma > 0, c, s, "coarse_sharp_sigma", "> 0");
+	require(distinctXY > 0, c, s, "coarse_distinct_xy", "> 0");
+	require(distinctYaw > 0, c, s, "coarse_distinct_yaw_DEG", "> 0");
+}
+
+void CorrelativeScanSearch::Options::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	using namespace featloc::config;
+	write(c, s, "coarse_search", enabled,
+		"wide basin: correlative search of the guess's window before the iterations "
+		"(Olson 2009; not in the paper)");
+	write(c, s, "coarse_window_sigmas", windowSigmas,
+		"half-window searched, in sigmas of the guess (gate allowance included)");
+	write(c, s, "coarse_min_window_xy", minWindowXY, "[m] half-window at least this");
+	writeDegrees(c, s, "coarse_min_window_yaw_DEG", minWindowYaw,
+		"[deg] half-window at least this");
+	write(c, s, "coarse_max_window_xy", maxWindowXY, "[m] half-window at most this");
+	writeDegrees(c, s, "coarse_max_window_yaw_DEG", maxWindowYaw,
+		"[deg] half-window at most this");
+	write(c, s, "coarse_resolution", resolution,
+		"[m] lookup cell and translation step (coarser if the reference is very wide)");
+	write(c, s, "coarse_hit_sigma", hitSigma,
+		"[m] a point this far from the reference scores exp(-1/2)");
+	write(c, s, "coarse_max_points", maxPoints, "current points scored (evenly picked)");
+	write(c, s, "coarse_min_score", minScore,
+		"match fails if no pose puts this share of points on the reference [0-1]");
+	write(c, s, "coarse_contender_ratio", contenderRatio,
+		"poses scoring this x the search's best are contenders for the ambiguity check");
+	write(c, s, "coarse_ambiguity_z", ambiguityZ,
+		"match fails unless the points favour the estimate over every distinct contender "
+		"by this z (paired, sharp scores; 0: off)");
+	write(c, s, "coarse_sharp_sigma", sharpSigma,
+		"[m] width of the sharp score that compares the estimate with the contenders");
+	write(c, s, "coarse_distinct_xy", distinctXY,
+		"[m] solutions further apart than this (or coarse_distinct_yaw_DEG) are distinct");
+	writeDegrees(c, s, "coarse_distinct_yaw_DEG", distinctYaw,
+		"[deg] solutions turned further apart than this are distinct");
+}
+
+mrpt::math::CMatrixDouble33 CorrelativeScanSearch::Result::gridCovariance() const
+{
+	// The best pose is the grid pose nearest the peak: within half a step
+	// of it; one step as one sigma leaves the refining matcher room.
+	mrpt::math::CMatrixDouble33 c;
+	c(0, 0) = c(1, 1) = resolution * resolution;
+	c(2, 2) = yawStep * yawStep;
+	return c;
+}
+
+void CorrelativeScanSearch::pickPoints(const ScanPoints& current)
+{
+	m_px.clear();
+	m_py.clear();
+	m_allX.clear();
+	m_allY.clear();
+	for (const auto& p : current.points)
+	{
+		m_allX.push_back(p.x);
+		m_allY.push_back(p.y);
+	}
+	const size_t n = current.size();
+	const size_t m = std::min<size_t>(n, options.maxPoints);
+	for (size_t k = 0; k < m; k++)
+	{
+		const auto& p = current.points[k * n / m];
+		m_px.push_back(p.x);
+		m_py.push_back(p.y);
+	}
+}
+
+void CorrelativeScanSearch::buildTables(const ScanPoints& reference, double halfWindowXY)
+{
+	double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+	for (const auto& p : reference.points)
+	{
+		xmin = std::min(xmin, p.x);
+		xmax = std::max(xmax, p.x);
+		ymin = std::min(ymin, p.y);
+		ymax = std::max(ymax, p.y);
+	}
+	const double margin = 3 * options.hitSigma;
+	double res = options.resolution;
+	const double spanX = xmax - xmin + 2 * margin, spanY = ymax - ymin + 2 * margin;
+	if (spanX * spanY / (res * res) > kMaxTableCells)
+		res = std::sqrt(spanX * spanY / kMaxTableCells);
+	m_resolution = res;
+	// The top level of the branch and bound covers the window with up to
+	// 4 x 4 blocks per rotation (a wider top costs more table than it saves).
+	const int cellsAcross = 2 * static_cast<int>(std::ceil(halfWindowXY / res)) + 1;
+	m_top = 0;
+	while (m_top < kMaxLevel && 4 * (1 << m_top) < cellsAcross) m_top++;
+	// The low side also holds one top-level block: a block's bound reads up
+	// to its side - 1 cells beyond the point's own cell.
+	const double lowMargin = margin + static_cast<double>(1 << m_top) * res;
+	m_x0 = xmin - lowMargin;
+	m_y0 = ymin - lowMargin;
+	m_width = static_cast<int>(std::ceil((xmax + margin - m_x0) / res)) + 1;
+	m_height = static_cast<int>(std::ceil((ymax + margin - m_y0) / res)) + 1;
+
+	// The surface: zero pixels in a 255 image, then the distance of every
+	// pixel to the nearest zero one.
+	cv::Mat surface(m_height, m_width, CV_8U, cv::Scalar(255));
+	auto pixel = [&](const ScanPoint& p) {
+		return cv::Point(static_cast<int>((p.x - m_x0) / res), static_cast<int>((p.y - m_y0) / res));
+	};
+	// Consecutive points of one surface are joined, as Borges & Aldon's
+	// adaptive breakpoint detector keeps them in one segment, down to a
+	// grazing incidence of kJoinLambda. Isolated points (more grazing, or
+	// thin objects) are left out: a current point scores best where it
+	// falls on a reference *sample*, so with them "no motion" would beat the
+	// true motion along a corridor's walls (the beams fall where they fell).
+	AdaptiveBreakpointSegmenter::Parameters join;
+	join.lambda = kJoinLambda;
+	join.sigma_r = kJoinSigmaR;
+	AdaptiveBreakpointSegmenter(join).segment(reference, m_segments);
+	for (const auto& seg : m_segments)
+		for (uint32_t i = seg.first + 1; i <= seg.last; i++)
+			cv::line(surface, pixel(reference.points[i - 1]), pixel(reference.points[i]),
+				cv::Scalar(0), 1, cv::LINE_8);
+	// The sharp score's width follows the scan's own scatter about its
+	// surfaces: a current point and the (noisy) reference surface are
+	// sqrt(2) s apart on average, and a score narrower than that would
+	// judge solutions by their noise.
+	m_sharpSigma = std::max(options.sharpSigma, kSharpNoiseFactor * m_noise.estimate(reference.points, m_segments));
+	cv::Mat distance;
+	cv::distanceTransform(surface, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+	m_distance.resize(static_cast<size_t>(m_width) * static_cast<size_t>(m_height));
+	cv::Mat metres(m_height, m_width, CV_32F, m_distance.data());
+	distance.convertTo(metres, CV_32F, res);
+	const size_t cells = static_cast<size_t>(m_width) * static_cast<size_t>(m_height);
+	m_levels.resize(static_cast<size_t>(m_top) + 1);
+	for (auto& t : m_levels) t.resize(cells);  // every cell is written below
+	cv::Mat table(m_height, m_width, CV_32F, m_levels[0].data());
+	// exp(-d^2 / 2 sigma^2), d in metres.
+	const double k = -0.5 * (res / options.hitSigma) * (res / options.hitSigma);
+	cv::multiply(distance, distance, distance, k);
+	cv::exp(distance, table);
+
+	// Olson's low-resolution tables, one per level of the branch and bound:
+	// level L holds the maximum over the 2^L x 2^L cells at and above-right
+	// of each cell, so that one lookup bounds every translation of a block
+	// of that side. Level L + 1 is the maximum of four shifted level-L views.
+	for (int L = 0; L < m_top; L++)
+	{
+		const int sft = 1 << L;
+		cv::Mat src(m_height, m_width, CV_32F, m_levels[static_cast<size_t>(L)].data());
+		cv::Mat dst(m_height, m_width, CV_32F, m_levels[static_cast<size_t>(L) + 1].data());
+		src.copyTo(dst);
+		const int w = m_width - sft, h = m_height - sft;
+		cv::Mat d = dst(cv::Rect(0, 0, w, h));
+		cv::max(d, src(cv::Rect(sft, 0, w, h)), d);
+		cv::max(d, src(cv::Rect(0, sft, w, h)), d);
+		cv::max(d, src(cv::Rect(sft, sft, w, h)), d);
+	}
+}
+
+CorrelativeScanSearch::Result CorrelativeScanSearch::search(
+	const ScanPoints& reference, const ScanPoints& current,
+	const mrpt::poses::CPosePDFGaussian& guess)
+{
+	Result r;
+	r.best = guess.mean;
+	if (reference.empty() || current.empty())
+	{
+		r.failureReason = "coarse search: an empty scan";
+		return r;
+	}
+	// The window: windowSigmas of the guess, clamped (the widest for a
+	// covariance that is not finite).
+	const auto& P = guess.cov;
+	auto half = [&](double var, double lo, double hi) {
+		const double h = options.windowSigmas * std::sqrt(std::max(var, 0.0));
+		return std::isfinite(h) ? std::clamp(h, lo, hi) : hi;
+	};
+	r.windowXY[0] = half(P(0, 0), options.minWindowXY, options.maxWindowXY);
+	r.windowXY[1] = half(P(1, 1), options.minWindowXY, options.maxWindowXY);
+	r.windowYaw = half(P(2, 2), options.minWindowYaw, options.maxWindowYaw);
+	buildTables(reference, std::max(r.windowXY[0], r.windowXY[1]));
+	pickPoints(current);
+	r.resolution = m_resolution;
+
+	// Rotation step: one cell's motion at the far points (Olson's choice),
+	// the 95th percentile of range so that one stray return does not set it.
+	const size_t n = m_px.size();
+	std::vector<double> ranges(n);
+	for (size_t i = 0; i < n; i++) ranges[i] = std::hypot(m_px[i], m_py[i]);
+	auto p95 = ranges.begin() + static_cast<long>((n - 1) * 95 / 100);
+	std::nth_element(ranges.begin(), p95, ranges.end());
+	r.yawStep = m_resolution / std::max(*p95, m_resolution);
+
+	const auto found = branchAndBound(guess, r);
+	if (found.empty())
+	{
+		r.failureReason = "coarse search: no current point near the reference in the window";
+		return r;
+	}
+	r.best = found.front().pose;
+	r.bestScore = found.front().score;
+	// Contenders: the best poses distinct from the best and from one another
+	// (a peak's own neighbours are not contenders).
+	for (const auto& f : found)
+	{
+		if (r.contenders.size() >= kMaxContenders) break;
+		bool isNew = distinct(f.pose, r.best);
+		for (const auto& c : r.contenders) isNew = isNew && distinct(f.pose, c.pose);
+		if (isNew) r.contenders.push_back(f);
+	}
+	if (!r.contenders.empty()) r.secondScore = r.contenders.front().score;
+
+	if (r.bestScore < options.minScore)
+	{
+		char buf[300];
+		std::snprintf(buf, sizeof(buf),
+			"coarse search: at best %.0f%% of the current points lie on the reference "
+			"(coarse_min_score %.0f%%): too little overlap in the window (+-%.2f m, +-%.1f deg)",
+			100 * r.bestScore, 100 * options.minScore, std::max(r.windowXY[0], r.windowXY[1]),
+			mrpt::RAD2DEG(r.windowYaw));
+		r.failureReason = buf;
+		return r;
+	}
+	r.success = true;
+	return r;
+}
+
+std::vector<CorrelativeScanSearch::Result::Contender> CorrelativeScanSearch::branchAndBound(
+	const mrpt::poses::CPosePDFGaussian& guess, Result& r) const
+{
+	const double res = m_resolution;
+	const size_t n = m_px.size();
+	const int nYaw = static_cast<int>(std::ceil(r.windowYaw / r.yawStep));
+	const int nx = static_cast<int>(std::ceil(r.windowXY[0] / res));
+	const int ny = static_cast<int>(std::ceil(r.windowXY[1] / res));
+	const double gx = guess.mean.x(), gy = guess.mean.y(), gw = guess.mean.phi();
+
+	// Each rotation's points as table cells at the guess's translation; a
+	// candidate translation adds whole cells to them.
+	const int yaws = 2 * nYaw + 1;
+	std::vector<int> cu(static_cast<size_t>(yaws) * n), cv(static_cast<size_t>(yaws) * n);
+	for (int w = 0; w < yaws; w++)
+	{
+		const double th = gw + (w - nYaw) * r.yawStep;
+		const double c = std::cos(th), s = std::sin(th);
+		for (size_t i = 0; i < n; i++)
+		{
+			const double x = c * m_px[i] - s * m_py[i] + gx, y = s * m_px[i] + c * m_py[i] + gy;
+			cu[static_cast<size_t>(w) * n + i] = static_cast<int>(std::floor((x - m_x0) / res));
+			cv[static_cast<size_t>(w) * n + i] = static_cast<int>(std::floor((y - m_y0) / res));
+		}
+	}
+	// Mean table value under rotation w's points moved by (dx, dy) cells:
+	// at level L, a bound for the block of 2^L x 2^L translations from there.
+	auto score = [&](int level, int w, int dx, int dy) {
+		const auto& t = m_levels[static_cast<size_t>(level)];
+		double sum = 0;
+		const size_t base = static_cast<size_t>(w) * n;
+		for (size_t i = 0; i < n; i++)
+		{
+			const int u = cu[base + i] + dx, v = cv[base + i] + dy;
+			if (u >= 0 && v >= 0 && u < m_width && v < m_height)
+				sum += t[static_cast<size_t>(v) * static_cast<size_t>(m_width) + static_cast<size_t>(u)];
+		}
+		return sum / static_cast<double>(n);
+	};
+
+	// Best bound first (Olson section IV; each block split in four as in
+	// Cartographer's fast correlative matcher).
+	struct Node
+	{
+		double bound;
+		int level, yaw, dx, dy;	 // dx, dy: the block's lowest cell offset
+		bool operator<(const Node& o) const { return bound < o.bound; }
+	};
+	std::priority_queue<Node> open;
+	const int side = 1 << m_top;
+	for (int w = 0; w < yaws; w++)
+		for (int bx = -nx; bx <= nx; bx += side)
+			for (int by = -ny; by <= ny; by += side)
+				open.push({score(m_top, w, bx, by), m_top, w, bx, by});
+	r.posesScored = open.size();
+
+	std::vector<Result::Contender> found;  // every full-resolution pose taken from the queue
+	double best = 0;
+	// Go on below the best to find the contenders too.
+	const double keepGoing = options.ambiguityZ > 0 ? options.contenderRatio : 1.0;
+	while (!open.empty())
+	{
+		const Node nd = open.top();
+		if (nd.bound <= 0 || nd.bound < keepGoing * best) break;
+		open.pop();
+		if (nd.level == 0)
+		{
+			best = std::max(best, nd.bound);
+			found.push_back({mrpt::poses::CPose2D(gx + nd.dx * res, gy + nd.dy * res,
+								 gw + (nd.yaw - nYaw) * r.yawStep),
+				nd.bound});
+			continue;
+		}
+		const int half = 1 << (nd.level - 1);
+		for (int cx = nd.dx; cx < nd.dx + 2 * half && cx <= nx; cx += half)
+			for (int cy = nd.dy; cy < nd.dy + 2 * half && cy <= ny; cy += half)
+			{
+				open.push({score(nd.level - 1, nd.yaw, cx, cy), nd.level - 1, nd.yaw, cx, cy});
+				r.posesScored++;
+			}
+	}
+	std::sort(found.begin(), found.end(),
+		[](const Result::Contender& a, const Result::Contender& c) { return a.score > c.score; });
+	return found;
+}
+
+void CorrelativeScanSearch::sharpScores(
+	const mrpt::poses::CPose2D& pose, std::vector<double>& out) const
+{
+	out.assign(m_allX.size(), 0.0);
+	if (m_distance.empty()) return;
+	const double c = std::cos(pose.phi()), s = std::sin(pose.phi());
+	const double k = -0.5 / (m_sharpSigma * m_sharpSigma);
+	for (size_t i = 0; i < m_allX.size(); i++)
+	{
+		const double x = c * m_allX[i] - s * m_allY[i] + pose.x(),
+					 y = s * m_allX[i] + c * m_allY[i] + pose.y();
+		const int u = static_cast<int>(std::floor((x - m_x0) / m_resolution));
+		const int v = static_cast<int>(std::floor((y - m_y0) / m_resolution));
+		if (u < 0 || v < 0 || u >= m_width || v >= m_height) continue;
+		const double d =
+			m_distance[static_cast<size_t>(v) * static_cast<size_t>(m_width) + static_cast<size_t>(u)];
+		out[i] = std::exp(k * d * d);
+	}
+}
+
+double CorrelativeScanSearch::sharpScoreAt(const mrpt::poses::CPose2D& pose) const
+{
+	std::vector<double> s;
+	sharpScores(pose, s);
+	double sum = 0;
+	for (double v : s) sum += v;
+	return s.empty() ? 0.0 : sum / static_cast<double>(s.size());
+}
+
+double CorrelativeScanSearch::evidence(
+	const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const
+{
+	// Paired, point by point: z = sum(d_i) / sqrt(sum(d_i^2)), d_i point i's
+	// sharp score at a minus at b. Points on a corridor's walls score alike
+	// under both and do not count; a door frame that only a explains does.
+	std::vector<double> sa, sb;
+	sharpScores(a, sa);
+	sharpScores(b, sb);
+	double sum = 0, sum2 = 0;
+	for (size_t i = 0; i < sa.size(); i++)
+	{
+		const double d = sa[i] - sb[i];
+		sum += d;
+		sum2 += d * d;
+	}
+	return sum2 > 0 ? sum / std::sqrt(sum2) : 0.0;
+}
+
+mrpt::poses::CPose2D CorrelativeScanSearch::bestGridNeighbour(
+	const Result& r, const mrpt::poses::CPose2D& o) const
+{
+	double best = -1;
+	mrpt::poses::CPose2D at = o;
+	for (int dw = -1; dw <= 1; dw++)
+		for (int dx = -1; dx <= 1; dx++)
+			for (int dy = -1; dy <= 1; dy++)
+			{
+				const mrpt::poses::CPose2D p(
+					o.x() + dx * r.resolution, o.y() + dy * r.resolution, o.phi() + dw * r.yawStep);
+				const double sc = sharpScoreAt(p);
+				if (sc > best)
+				{
+					best = sc;
+					at = p;
+				}
+			}
+	return at;
+}
+
+CorrelativeScanSearch::Ambiguity CorrelativeScanSearch::ambiguity(const Result& r,
+	const mrpt::poses::CPose2D& estimate, const mrpt::poses::CPosePDFGaussian& guess) const
+{
+	Ambiguity out;
+	if (options.ambiguityZ <= 0) return out;
+	// A contender the guess itself rules out is no ambiguity: the search's
+	// window is wider than the guess's covariance (its minimum absorbs
+	// over-confident odometry), and an accurate guess decides between two
+	// solutions that the scan cannot tell apart.
+	const Eigen::Matrix3d Pinv = guess.cov.asEigen().inverse();
+	auto plausible = [&](const mrpt::poses::CPose2D& p) {
+		const Eigen::Vector3d d(p.x() - guess.mean.x(), p.y() - guess.mean.y(),
+			mrpt::math::wrapToPi(p.phi() - guess.mean.phi()));
+		return !Pinv.allFinite() || d.dot(Pinv * d) <= kPlausibleChi2;
+	};
+	std::vector<mrpt::poses::CPose2D> others;
+	for (const auto& c : r.contenders) others.push_back(c.pose);
+	others.push_back(r.best);  // the estimate may have left the search's best
+	for (const auto& o : others)
+	{
+		if (!distinct(o, estimate) || !plausible(o)) continue;
+		// The contender sits on the search grid: it gets its best grid
+		// neighbour, so that quantisation does not favour the (continuous)
+		// estimate by much.
+		const mrpt::poses::CPose2D at = bestGridNeighbour(r, o);
+		const double z = evidence(estimate, at);
+		if (z >= options.ambiguityZ || !distinct(at, estimate)) continue;
+		out.ambiguous = true;
+		out.rival = at;
+		out.z = z;
+		const auto d = at - estimate;
+		char buf[320];
+		std::snprintf(buf, sizeof(buf),
+			"ambiguous: a solution %.2f m, %.1f deg from the estimate puts %.0f%% of the points "
+			"on the reference against %.0f%% at the estimate (evidence for the estimate z = "
+			"%.1f < coarse_ambiguity_z %.1f)",
+			std::hypot(d.x(), d.y()), mrpt::RAD2DEG(d.phi()), 100 * sharpScoreAt(at),
+			100 * sharpScoreAt(estimate), z, options.ambiguityZ);
+		out.reason = buf;
+		return out;
+	}
+	return out;
+}
+
+bool CorrelativeScanSearch::distinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const
+{
+	return std::hypot(a.x() - b.x(), a.y() - b.y()) > options.distinctXY ||
+		std::abs(mrpt::math::wrapToPi(a.phi() - b.phi())) > options.distinctYaw;
+}
+}  // namespace featloc
