@@ -27,6 +27,7 @@
 #include "featloc/io/RawlogReader.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/pipeline/ProgressBar.h"
+#include "featloc/plot/CurvePlot.h"
 #include "featloc/pipeline/StepAssembler.h"
 #include "featloc/registerClasses.h"
 
@@ -102,6 +103,67 @@ Sequence loadRawlog(
 	}
 	return seq;
 }
+/** --basin-levels: "XY/YAW_DEG,..." as (metres, radians). */
+std::vector<std::pair<double, double>> parseBasinLevels(const std::string& text)
+{
+	std::vector<std::pair<double, double>> out;
+	std::vector<std::string> items;
+	mrpt::system::tokenize(text, ",", items);
+	for (const auto& it : items)
+	{
+		double xy = 0, yaw = 0;
+		char extra = 0;
+		if (std::sscanf(it.c_str(), "%lf/%lf%c", &xy, &yaw, &extra) != 2 || !(xy >= 0) ||
+			!(yaw >= 0) || !std::isfinite(xy) || !std::isfinite(yaw))
+			throw UsageError("--basin-levels: '" + it + "' is not XY_M/YAW_DEG (two numbers >= 0)");
+		out.emplace_back(xy, mrpt::DEG2RAD(yaw));
+	}
+	if (out.empty()) throw UsageError("--basin-levels names no level");
+	return out;
+}
+
+void printHeader()
+{
+	std::printf(
+		"| data | matcher | pairs | flagged | silent gross | \\|t\\| err mean / median / p95 [mm] "
+		"| \\|w\\| err mean / median / p95 [deg] | MAE t_x / t_y [mm] | time/match mean / "
+		"median [ms] | iterations | NEES mean / in 95%% bound |\n");
+	std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+}
+
+std::string percent(size_t n, size_t of)
+{
+	char buf[32];
+	std::snprintf(buf, sizeof(buf), "%.1f%%", of ? 100.0 * static_cast<double>(n) / static_cast<double>(of) : 0.0);
+	return buf;
+}
+
+void printRow(const std::string& name, const ScanPairBenchmark::Result& r)
+{
+	std::printf(
+		"| %s | %s | %zu | %s | %s | %.2f / %.2f / %.1f | %.3f / %.3f / %.2f | %.2f / %.2f | "
+		"%.3f / %.3f | %.1f | %.2f / %.0f%% |\n",
+		name.c_str(), r.matcher.c_str(), r.pairs, percent(r.failures, r.pairs).c_str(),
+		percent(r.silentGross, r.pairs).c_str(), r.meanTrans * 1e3, r.medianTrans * 1e3,
+		r.p95Trans * 1e3, mrpt::RAD2DEG(r.maeYaw), mrpt::RAD2DEG(r.medianYaw),
+		mrpt::RAD2DEG(r.p95Yaw), r.maeX * 1e3, r.maeY * 1e3, r.meanTime * 1e3,
+		r.medianTime * 1e3, r.meanIterations, r.meanNees, 100 * r.neesWithin95);
+}
+
+nlohmann::json toJson(const ScanPairBenchmark::Result& r)
+{
+	return {{"matcher", r.matcher}, {"pairs", r.pairs}, {"failures", r.failures},
+		{"failures_by_kind", r.failuresByKind}, {"silent_gross_errors", r.silentGross},
+		{"success_rate", r.successRate()}, {"mae_x_m", r.maeX}, {"mae_y_m", r.maeY},
+		{"mae_yaw_deg", mrpt::RAD2DEG(r.maeYaw)}, {"mean_trans_err_m", r.meanTrans},
+		{"median_trans_err_m", r.medianTrans}, {"p95_trans_err_m", r.p95Trans},
+		{"median_yaw_err_deg", mrpt::RAD2DEG(r.medianYaw)},
+		{"p95_yaw_err_deg", mrpt::RAD2DEG(r.p95Yaw)}, {"time_mean_s", r.meanTime},
+		{"time_median_s", r.medianTime}, {"iterations_mean", r.meanIterations},
+		{"nees_mean", r.meanNees}, {"nees_median", r.medianNees},
+		{"nees_within_95", r.neesWithin95}, {"failure_examples", r.failureExamples},
+		{"silent_gross_examples", r.silentGrossExamples}};
+}
 }  // namespace
 
 int BenchApp::main(int argc, char** argv)
@@ -154,12 +216,21 @@ int BenchApp::main(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argName("", "name", "Data name in the table", false, "",
 		"NAME", cmd);
 	TCLAP::SwitchArg argHeader("", "header", "Print the Markdown table header", cmd);
+	TCLAP::ValueArg<std::string> argBasin("", "basin",
+		"Also run every matcher at each --basin-levels initial error (the "
+		"--perturbation kind) and plot the success rate against it (PNG): a pair "
+		"succeeds when it is neither flagged nor off by more than 10 cm or 2 deg",
+		false, "", "PNG", cmd);
+	TCLAP::ValueArg<std::string> argBasinLevels("", "basin-levels",
+		"Initial error bounds of the basin curve, XY_M/YAW_DEG,...", false,
+		"0.1/2,0.2/5,0.3/10,0.4/15,0.5/20", "LEVELS", cmd);
 	ConfigCommandLine config(cmd, "ScanMatcher.PcmFeatureMatcher:refinement=none", "");
 	int exitCode = 0;
 	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
 	if (argKind.getValue() != "uniform" && argKind.getValue() != "gaussian")
 		throw UsageError("--perturbation must be uniform or gaussian");
 	if (argStride.getValue() < 1) throw UsageError("--stride must be >= 1");
+	const auto basinLevels = parseBasinLevels(argBasinLevels.getValue());
 
 	TrackedConfig cfg;
 	config.load(cfg, argConfig.getValue());
@@ -240,40 +311,55 @@ int BenchApp::main(int argc, char** argv)
 	const std::string name = argName.isSet()
 		? argName.getValue()
 		: std::filesystem::path(data).filename().string();
-	if (argHeader.getValue())
-	{
-		std::printf(
-			"| data | matcher | pairs | failed | MAE t_x [mm] | MAE t_y [mm] | MAE w "
-			"[deg] | median \\|t err\\| [mm] | time/match mean [ms] | median [ms] | "
-			"iterations | mean NEES | NEES in 95%% bound |\n");
-		std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-	}
+	if (argHeader.getValue()) printHeader();
 	nlohmann::json j;
 	j["data"] = data;
 	j["pairs"] = pairs.size();
 	j["reference_matcher_failures"] = referenceFailures;
 	j["perturbation"] = {{"kind", o.perturbation}, {"xy_m", o.perturbXY},
 		{"yaw_deg", mrpt::RAD2DEG(o.perturbYaw)}, {"seed", o.seed}};
+	j["gross_error"] = {{"trans_m", o.grossTrans}, {"yaw_deg", mrpt::RAD2DEG(o.grossYaw)}};
 	if (o.applyMotion)
 		j["applied_motion"] = {{"x_m", o.appliedMotion.x()}, {"y_m", o.appliedMotion.y()},
 			{"yaw_deg", mrpt::RAD2DEG(o.appliedMotion.phi())}};
 	for (const auto& r : results)
 	{
-		std::printf(
-			"| %s | %s | %zu | %.1f%% | %.2f | %.2f | %.3f | %.2f | %.3f | %.3f | %.1f | %.2f | %.0f%% "
-			"|\n",
-			name.c_str(), r.matcher.c_str(), r.pairs,
-			100.0 * static_cast<double>(r.failures) / static_cast<double>(r.pairs),
-			r.maeX * 1e3, r.maeY * 1e3, mrpt::RAD2DEG(r.maeYaw), r.medianTrans * 1e3,
-			r.meanTime * 1e3, r.medianTime * 1e3, r.meanIterations, r.meanNees,
-			100 * r.neesWithin95);
-		j["results"].push_back({{"matcher", r.matcher}, {"pairs", r.pairs},
-			{"failures", r.failures}, {"mae_x_m", r.maeX}, {"mae_y_m", r.maeY},
-			{"mae_yaw_deg", mrpt::RAD2DEG(r.maeYaw)}, {"median_trans_err_m", r.medianTrans},
-			{"p95_trans_err_m", r.p95Trans}, {"time_mean_s", r.meanTime},
-			{"time_median_s", r.medianTime}, {"iterations_mean", r.meanIterations},
-			{"nees_mean", r.meanNees}, {"nees_median", r.medianNees},
-			{"nees_within_95", r.neesWithin95}, {"failure_examples", r.failureExamples}});
+		printRow(name, r);
+		j["results"].push_back(toJson(r));
+	}
+	if (argBasin.isSet())
+	{
+		// The basin curve: the same pairs and draws at each initial error.
+		CurvePlot plot;
+		plot.title = "Basin: " + name + " (" + o.perturbation + " initial errors, " +
+			std::to_string(pairs.size()) + " pairs)";
+		plot.xLabel = "initial error bound: +-xy [m] / +-yaw [deg]";
+		plot.yLabel = "success [%] (not flagged, within 10 cm and 2 deg)";
+		for (const auto& v : variants) plot.series.push_back({v.label, {}});
+		std::printf("\n| data | matcher | initial error | success | flagged | silent gross | \\|t\\| err mean [mm] |\n|---|---|---|---|---|---|---|\n");
+		for (const auto& [xy, yaw] : basinLevels)
+		{
+			char tick[48];
+			std::snprintf(tick, sizeof(tick), "%.2g / %.3g", xy, mrpt::RAD2DEG(yaw));
+			plot.xTicks.push_back(tick);
+			ScanPairBenchmark::Options lo = o;
+			lo.perturbXY = xy;
+			lo.perturbYaw = yaw;
+			const auto level = ScanPairBenchmark::run(pairs, matchers, lo);
+			for (size_t m = 0; m < level.size(); m++)
+			{
+				plot.series[m].values.push_back(100 * level[m].successRate());
+				std::printf("| %s | %s | +-%.2f m / +-%.1f deg | %.1f%% | %s | %s | %.2f |\n",
+					name.c_str(), variants[m].label.c_str(), xy, mrpt::RAD2DEG(yaw),
+					100 * level[m].successRate(), percent(level[m].failures, level[m].pairs).c_str(),
+					percent(level[m].silentGross, level[m].pairs).c_str(), level[m].meanTrans * 1e3);
+				auto row = toJson(level[m]);
+				row["matcher"] = variants[m].label;
+				row["initial_error"] = {{"xy_m", xy}, {"yaw_deg", mrpt::RAD2DEG(yaw)}};
+				j["basin"].push_back(row);
+			}
+		}
+		plot.save(argBasin.getValue());
 	}
 	if (argJson.isSet())
 	{

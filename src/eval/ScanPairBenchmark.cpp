@@ -1,5 +1,6 @@
 #include "featloc/eval/ScanPairBenchmark.h"
 
+#include <mrpt/core/bits_math.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
@@ -8,6 +9,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "featloc/eval/EvaluationReport.h"
 #include "featloc/eval/ErrorStats.h"
@@ -71,21 +73,36 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			res[m].pairs++;
 			a.time.push_back(r.timeSeconds);
 			a.iterations += r.iterations;
+			// Every pair counts: a failed match with the guess, which is what
+			// the pipeline then uses.
+			const auto& e = r.success ? r.estimate.mean : guess.mean;
+			const Eigen::Vector3d err(e.x() - truth.x(), e.y() - truth.y(),
+				mrpt::math::wrapToPi(e.phi() - truth.phi()));
+			const double et = std::hypot(err[0], err[1]), ew = std::abs(err[2]);
+			a.ex.push_back(std::abs(err[0]));
+			a.ey.push_back(std::abs(err[1]));
+			a.ew.push_back(ew);
+			a.et.push_back(et);
 			if (!r.success)
 			{
 				res[m].failures++;
+				res[m].failuresByKind[r.failureKind.empty() ? "matcher" : r.failureKind]++;
 				if (res[m].failureExamples.size() < 5)
 					res[m].failureExamples.push_back(
 						"pair " + std::to_string(k) + ": " + r.failureReason);
 				continue;
 			}
-			const auto& e = r.estimate.mean;
-			const Eigen::Vector3d err(e.x() - truth.x(), e.y() - truth.y(),
-				mrpt::math::wrapToPi(e.phi() - truth.phi()));
-			a.ex.push_back(std::abs(err[0]));
-			a.ey.push_back(std::abs(err[1]));
-			a.ew.push_back(std::abs(err[2]));
-			a.et.push_back(std::hypot(err[0], err[1]));
+			if (et > o.grossTrans || ew > o.grossYaw)
+			{
+				res[m].silentGross++;
+				if (res[m].silentGrossExamples.size() < 5)
+				{
+					char buf[160];
+					std::snprintf(buf, sizeof(buf), "pair %zu: off by %.3f m, %.2f deg", k, et,
+						mrpt::RAD2DEG(ew));
+					res[m].silentGrossExamples.push_back(buf);
+				}
+			}
 			a.nees.push_back(err.dot(r.estimate.cov.asEigen().ldlt().solve(err)));
 		}
 		if (progress) progress(k + 1);
@@ -96,8 +113,12 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 		auto& r = res[m];
 		r.maeX = ErrorStats::of(a.ex).mean;
 		r.maeY = ErrorStats::of(a.ey).mean;
-		r.maeYaw = ErrorStats::of(a.ew).mean;
+		const auto w = ErrorStats::of(a.ew);
+		r.maeYaw = w.mean;
+		r.medianYaw = w.median;
+		r.p95Yaw = w.p95;
 		const auto t = ErrorStats::of(a.et);
+		r.meanTrans = t.mean;
 		r.medianTrans = t.median;
 		r.p95Trans = t.p95;
 		const auto time = ErrorStats::of(a.time);

@@ -3,6 +3,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -29,10 +30,13 @@ struct ScanPairSample
  * the paper: appliedMotion plus the Gaussian draw) and every matcher starts
  * from the mean motion.
  *
- * The same draw for every matcher; reported: the mean absolute errors in
- * t_x, t_y and w (both papers' metric) over the successful matches, the
- * failure rate, time and iterations per match, and the mean NEES of the
- * returned covariances. Matchers run interleaved pair by pair so that
+ * The same draw for every matcher. Every pair counts: a failed match counts
+ * with the error of its guess, which is what the pipeline then uses.
+ * Reported: the mean absolute errors in t_x, t_y and w (both papers'
+ * metric), mean / median / p95 of the translation and rotation errors, the
+ * flagged failures (by kind) and the silent gross errors (a success off by
+ * more than grossTrans or grossYaw), time and iterations per match, and the
+ * NEES of the returned covariances over the successes. Matchers run interleaved pair by pair so that
  * timings share the machine's state. */
 class ScanPairBenchmark
 {
@@ -48,19 +52,34 @@ class ScanPairBenchmark
 		 * matcher starts from appliedMotion (the mean). */
 		bool applyMotion = false;
 		mrpt::poses::CPose2D appliedMotion;
+		/** A success off by more than this is a silent gross error. */
+		double grossTrans = 0.10;  //!< [m]
+		double grossYaw = 0.03490658503988659;	//!< [rad] (2 deg)
 	};
 	struct Result
 	{
 		std::string matcher;
-		size_t pairs = 0, failures = 0;
+		size_t pairs = 0;
+		size_t failures = 0;  //!< flagged: the matcher said it failed
+		std::map<std::string, size_t> failuresByKind;  //!< MatchResult::failureKind
+		size_t silentGross = 0;	 //!< successes off by > grossTrans or > grossYaw
+		/** Over every pair (failures at the guess's error). */
 		double maeX = 0, maeY = 0, maeYaw = 0;	//!< [m], [m], [rad]
-		double medianTrans = 0, p95Trans = 0;  //!< [m] |t error|
+		double meanTrans = 0, medianTrans = 0, p95Trans = 0;  //!< [m] |t error|
+		double medianYaw = 0, p95Yaw = 0;  //!< [rad] |w error|
 		double meanTime = 0, medianTime = 0;  //!< [s] per match
 		double meanIterations = 0;
 		double meanNees = 0;  //!< over successes (3 for a consistent covariance)
 		double medianNees = 0;	//!< 2.37 for a consistent covariance
 		double neesWithin95 = 0;  //!< share within chi2(3) 95% (0.95 if consistent)
-		std::vector<std::string> failureExamples;
+		std::vector<std::string> failureExamples, silentGrossExamples;
+		/** Share of pairs neither flagged nor grossly wrong. */
+		double successRate() const
+		{
+			return pairs ? static_cast<double>(pairs - failures - silentGross) /
+					static_cast<double>(pairs)
+						 : 0.0;
+		}
 	};
 
 	/** Called after each pair with the number of pairs done so far. */
