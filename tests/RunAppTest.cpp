@@ -455,3 +455,73 @@ TEST(FeatlocBench, NunezProtocolWithMatcherVariantsSideBySide)
 	EXPECT_EQ(braces.exitCode, 2);
 	EXPECT_NE(braces.output.find("unbalanced"), std::string::npos) << braces.output;
 }
+
+// summary.json counts the failed matches by kind; a coarse search that
+// demands 99% of the points on the reference fails every match for lack of
+// overlap, and the pipeline then uses odometry for each (the estimator
+// keeps its prediction on a flagged failure).
+TEST(FeatlocRun, FailedMatchesAreCountedByKindInTheSummary)
+{
+	registerClasses();
+	TempDir dir;
+	const CommandResult r = featlocRun(shellQuote(kConfig) + " " + shellQuote(kMalaga) + " --out " +
+		shellQuote(dir.file("out")) + " --set ScanMatcher.IcpMatcher:coarse_search=true" +
+		" --set ScanMatcher.IcpMatcher:coarse_min_score=0.99");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto s = readJson(dir.file("out/summary.json"));
+	const size_t matches = s["counts"]["matches"], failures = s["counts"]["match_failures"];
+	EXPECT_GT(matches, 100u);
+	EXPECT_EQ(failures, matches);
+	EXPECT_EQ(s["counts"]["match_failures_by_kind"]["no_overlap"], failures);
+	EXPECT_EQ(s["counts"]["fallbacks_to_odometry"], failures);
+	EXPECT_NE(s["failure_examples"][0].get<std::string>().find("coarse_min_score"), std::string::npos);
+
+	TempDir plain;
+	const CommandResult p = featlocRun(shellQuote(kConfig) + " " + shellQuote(kMalaga) + " --out " +
+		shellQuote(plain.file("out")));
+	ASSERT_EQ(p.exitCode, 0) << p.output;
+	const auto sp = readJson(plain.file("out/summary.json"));
+	size_t byKind = 0;
+	for (const auto& [kind, n] : sp["counts"]["match_failures_by_kind"].items()) byKind += n.get<size_t>();
+	EXPECT_EQ(byKind, sp["counts"]["match_failures"].get<size_t>());
+}
+
+// Every pair counts: a failed pair with its guess's error, so a matcher
+// that fails everything scores exactly the guesses' errors; a matcher that
+// succeeds wrongly is a silent gross error. The basin curve is drawn.
+TEST(FeatlocBench, EveryPairCountsAndTheBasinCurveIsDrawn)
+{
+	TempDir dir;
+	const std::string sim = std::string(FEATLOC_SOURCE_DIR) + "/rawlogs/sim/";
+	const std::string common = shellQuote(FEATLOC_BENCH_EXE) + " " + shellQuote(kConfig) + " " +
+		shellQuote(sim + "office.rawlog") + " -g " + shellQuote(sim + "office.gt.txt") +
+		" --max-pairs 60 -q --perturb-xy 0.3 --perturb-yaw-deg 10";
+	const CommandResult r = runCommand(common + " -j " + shellQuote(dir.file("b.json")) +
+		" --basin " + shellQuote(dir.file("basin.png")) + " --basin-levels 0.1/2,0.5/20" +
+		" -m 'never=featloc::IcpMatcher{coarse_search=true;coarse_min_score=1},"
+		"one=featloc::IcpMatcher{maxIterations=1;minGoodness=0},"
+		"coarse=featloc::IdcMatcher{coarse_search=true}'");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto j = readJson(dir.file("b.json"));
+	ASSERT_EQ(j["results"].size(), 3u);
+	const auto& never = j["results"][0];
+	EXPECT_EQ(never["failures"], 60);
+	EXPECT_EQ(never["failures_by_kind"]["no_overlap"], 60);
+	EXPECT_EQ(never["silent_gross_errors"], 0);
+	EXPECT_EQ(never["success_rate"], 0.0);
+	// Uniform +-0.3 m per axis: the guesses' mean |t| error is about 0.23 m.
+	EXPECT_NEAR(never["mean_trans_err_m"].get<double>(), 0.23, 0.05);
+	// One ICP iteration from +-0.3 m / +-10 deg leaves many pairs far off,
+	// and nothing flags them.
+	EXPECT_GT(j["results"][1]["silent_gross_errors"].get<int>(), 10);
+	EXPECT_GT(j["results"][2]["success_rate"].get<double>(), 0.9);
+	// The basin: two levels x three matchers, and the picture.
+	ASSERT_EQ(j["basin"].size(), 6u);
+	EXPECT_NEAR(j["basin"][5]["initial_error"]["yaw_deg"].get<double>(), 20, 1e-9);
+	EXPECT_GT(std::filesystem::file_size(dir.file("basin.png")), 5000u);
+	EXPECT_NE(r.output.find("| office.rawlog | coarse | +-0.50 m / +-20.0 deg |"), std::string::npos)
+		<< r.output;
+	const CommandResult bad = runCommand(common + " --basin x.png --basin-levels 0.1-2");
+	EXPECT_EQ(bad.exitCode, 2);
+	EXPECT_NE(bad.output.find("--basin-levels: '0.1-2'"), std::string::npos) << bad.output;
+}

@@ -34,6 +34,7 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"keyframes", s.keyframes},
 		{"matches", s.matchesAttempted},
 		{"match_failures", s.matchFailures},
+		{"match_failures_by_kind", s.matchFailuresByKind},
 		{"fallbacks_to_odometry", s.fallbacks},
 		{"ignored_observations", s.ignoredObservations}};
 	if (s.stereoFrames)

@@ -38,6 +38,9 @@ struct RunStats
 	size_t keyframes = 0;  //!< reference scans used by the matcher
 	size_t matchesAttempted = 0;
 	size_t matchFailures = 0;  //!< matcher reported failure
+	/** The failures by MatchResult::failureKind (ambiguous, no_overlap,
+	 * guess_gate, matcher, too_few_points). */
+	std::map<std::string, size_t> matchFailuresByKind;
 	size_t fallbacks = 0;  //!< steps where the estimator used odometry
 	/** A few failure examples: "scan 123: reason". */
 	std::vector<std::string> failureExamples;
