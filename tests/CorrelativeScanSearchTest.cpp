@@ -8,10 +8,9 @@
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/ConfigError.h"
 #include "featloc/matchers/CorrelativeScanSearch.h"
-#include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/math/DiagonalPoseGaussian.h"
-#include "featloc/registerClasses.h"
 #include "support/ErrorMessage.h"
+#include "support/MatcherTestHelpers.h"
 #include "support/SyntheticRoom.h"
 
 using namespace featloc;
@@ -26,26 +25,16 @@ const char* kMatchers[] = {"featloc::IcpMatcher", "featloc::PcmFeatureMatcher",
 /** A matcher with the coarse search on (unless the overrides say off). */
 ScanMatcher::Ptr matcher(const std::string& cls, const std::string& overrides = "coarse_search=true")
 {
-	registerClasses();
-	auto m = ScanMatcherFactory::create(cls);
-	mrpt::config::CConfigFileMemory cfg;
-	cfg.setContent("[S]\n" + overrides + "\n");
-	m->loadParams(cfg, "S");
-	return m;
+	return test::configuredMatcher(cls, overrides);
 }
 
-/** The scan with Gaussian range noise: noise-free scans of the same walls
- * put the current beams exactly on the reference's samples at zero motion,
- * which no real sensor does. */
-mrpt::obs::CObservation2DRangeScan::Ptr noisy(
-	mrpt::obs::CObservation2DRangeScan::Ptr s, unsigned seed, double sigma = 0.01)
+/** 1 cm of range noise: noise-free scans of the same walls put the current
+ * beams exactly on the reference's samples at zero motion, which no real
+ * sensor does. */
+mrpt::obs::CObservation2DRangeScan::Ptr noisy(mrpt::obs::CObservation2DRangeScan::Ptr s, unsigned seed)
 {
 	mrpt::random::CRandomGenerator rng(seed);
-	for (size_t i = 0; i < s->getScanSize(); i++)
-		if (s->getScanRangeValidity(i))
-			s->setScanRange(
-				i, s->getScanRange(i) + static_cast<float>(sigma * rng.drawGaussian1D_normalized()));
-	return s;
+	return test::withRangeNoise(std::move(s), rng, 0.01);
 }
 
 double translationError(const CPose2D& a, const CPose2D& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }

@@ -20,6 +20,7 @@
 #include "featloc/scan/AdaptiveBreakpointSegmenter.h"
 #include "featloc/sim/SimWorld.h"
 #include "support/ErrorMessage.h"
+#include "support/MatcherTestHelpers.h"
 #include "support/SyntheticRoom.h"
 
 using namespace featloc;
@@ -30,14 +31,11 @@ namespace
 {
 const std::string kHall = std::string(FEATLOC_SOURCE_DIR) + "/worlds/hall-people.ini";
 
+/** The matchers' tests' helpers under their short names here. */
 mrpt::obs::CObservation2DRangeScan::Ptr noisy(
 	mrpt::obs::CObservation2DRangeScan::Ptr s, mrpt::random::CRandomGenerator& rng, double sigma)
 {
-	for (size_t i = 0; i < s->getScanSize(); i++)
-		if (s->getScanRangeValidity(i))
-			s->setScanRange(
-				i, s->getScanRange(i) + static_cast<float>(sigma * rng.drawGaussian1D_normalized()));
-	return s;
+	return test::withRangeNoise(std::move(s), rng, sigma);
 }
 
 ReferencePolyline polylineOf(const ScanPoints& s)
@@ -55,15 +53,9 @@ Eigen::Vector3d errorOf(const MatchResult& r, const CPose2D& truth)
 		mrpt::math::wrapToPi(r.estimate.mean.phi() - truth.phi())};
 }
 
-/** Matchers with parameter overrides ("key=value" lines). */
 ScanMatcher::Ptr matcher(const std::string& cls, const std::string& overrides = "")
 {
-	registerClasses();
-	auto m = ScanMatcherFactory::create(cls);
-	mrpt::config::CConfigFileMemory cfg;
-	cfg.setContent("[S]\n" + overrides + "\n");
-	m->loadParams(cfg, "S");
-	return m;
+	return test::configuredMatcher(cls, overrides);
 }
 
 const char* kIdcAsPublished = "final_phase=idc";

@@ -1,0 +1,29 @@
+#include "MatcherTestHelpers.h"
+
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include "featloc/matchers/ScanMatcherFactory.h"
+#include "featloc/registerClasses.h"
+
+namespace featloc::test
+{
+ScanMatcher::Ptr configuredMatcher(const std::string& cls, const std::string& overrides)
+{
+	registerClasses();
+	auto m = ScanMatcherFactory::create(cls);
+	mrpt::config::CConfigFileMemory cfg;
+	cfg.setContent("[S]\n" + overrides + "\n");
+	m->loadParams(cfg, "S");
+	return m;
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr withRangeNoise(
+	mrpt::obs::CObservation2DRangeScan::Ptr s, mrpt::random::CRandomGenerator& rng, double sigma)
+{
+	for (size_t i = 0; i < s->getScanSize(); i++)
+		if (s->getScanRangeValidity(i))
+			s->setScanRange(
+				i, s->getScanRange(i) + static_cast<float>(sigma * rng.drawGaussian1D_normalized()));
+	return s;
+}
+}  // namespace featloc::test

@@ -1,0 +1,19 @@
+#pragma once
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <string>
+
+#include "featloc/matchers/ScanMatcher.h"
+
+namespace featloc::test
+{
+/** A registered matcher with its defaults and `overrides` on top (ini
+ * lines "key=value", one per line). */
+ScanMatcher::Ptr configuredMatcher(const std::string& cls, const std::string& overrides = "");
+
+/** The scan with Gaussian range noise of `sigma` [m] on its valid beams. */
+mrpt::obs::CObservation2DRangeScan::Ptr withRangeNoise(
+	mrpt::obs::CObservation2DRangeScan::Ptr scan, mrpt::random::CRandomGenerator& rng,
+	double sigma);
+}  // namespace featloc::test
