@@ -359,6 +359,16 @@ int BenchApp::main(int argc, char** argv)
 				j["basin"].push_back(row);
 			}
 		}
+		// The value axis from the lowest tens of percent reached, so that
+		// the differences between good matchers show.
+		double lowest = 100;
+		for (const auto& sr : plot.series)
+			for (double v : sr.values) lowest = std::min(lowest, v);
+		plot.yMin = std::max(0.0, 10 * std::floor(lowest / 10) - 10);
+		// "X" and "X + something" next to each other: one colour, dashed.
+		plot.pairedSeries = plot.series.size() % 2 == 0;
+		for (size_t m = 0; plot.pairedSeries && m + 1 < variants.size(); m += 2)
+			plot.pairedSeries = variants[m + 1].className == variants[m].className;
 		plot.save(argBasin.getValue());
 	}
 	if (argJson.isSet())

@@ -20,6 +20,9 @@ class CurvePlot
 	std::vector<std::string> xTicks;
 	double yMin = 0, yMax = 100;
 	std::vector<Series> series;
+	/** Series 2k and 2k+1 are one thing with and without an option: one
+	 * colour, the second dashed with square markers. */
+	bool pairedSeries = false;
 
 	/** Throws std::runtime_error if the file cannot be written. */
 	void save(const std::string& pngPath, int width = 900, int height = 600) const;
