@@ -103,28 +103,45 @@ TEST(CorrelativeScanSearch, EveryMatcherConvergesFromTheWideBasin)
 	EXPECT_GT(publishedGross, 0u) << "the draws never leave the papers' own basins";
 }
 
-// Along a corridor the scans cannot tell where the robot is: every matcher
-// fails instead of returning a confident answer.
-TEST(CorrelativeScanSearch, CorridorMotionIsFlaggedAmbiguousByEveryMatcher)
+// Along a corridor the scans cannot tell where the robot is: no matcher
+// returns a confident answer. Each either fails (its own unconstrained-
+// direction check, or coarse_on_ambiguity = fail) or is flagged ambiguous
+// with its covariance grown along the corridor (the default, inflate), so
+// that a filter keeps its prediction there.
+TEST(CorrelativeScanSearch, CorridorMotionIsNeverAConfidentAnswer)
 {
 	const SyntheticRoom corridor = SyntheticRoom::corridor();
 	const auto ref = noisy(corridor.scan(CPose2D()), 1), cur = noisy(corridor.scan(CPose2D(0.3, 0, 0)), 2);
+	const auto guess = diagonalPoseGaussian(CPose2D(0.1, 0.05, 0.02), 0.3 / std::sqrt(3.0), 0.1);
+	size_t inflated = 0;
 	for (const std::string cls : kMatchers)
 	{
-		const MatchResult r = matcher(cls)->match(
-			*ref, *cur, diagonalPoseGaussian(CPose2D(0.1, 0.05, 0.02), 0.3 / std::sqrt(3.0), 0.1));
-		EXPECT_FALSE(r.success) << cls << " " << r.estimate.mean;
-		// The ambiguity check, or the matcher's own unconstrained-direction
-		// check where it comes first (PCM, IDC, CF-IDC).
-		EXPECT_TRUE(r.failureKind == "ambiguous" ||
-			r.failureReason.find("translation along direction (1.00, 0.00)") != std::string::npos)
-			<< cls << ": " << r.failureReason;
+		const MatchResult r = matcher(cls)->match(*ref, *cur, guess);
+		if (r.success)
+		{
+			EXPECT_TRUE(r.ambiguous) << cls << " " << r.estimate.mean;
+			EXPECT_NE(r.ambiguityReason.find("coarse_ambiguity_z"), std::string::npos);
+			// Along x the covariance covers the rivals (> 10 cm away); across
+			// the corridor and in yaw it stays small.
+			EXPECT_GT(std::sqrt(r.estimate.cov(0, 0)), 0.1) << cls;
+			EXPECT_LT(std::sqrt(r.estimate.cov(1, 1)), 0.05) << cls;
+			inflated++;
+		}
+		else
+			EXPECT_TRUE(r.failureKind == "ambiguous" ||
+				r.failureReason.find("translation along direction (1.00, 0.00)") != std::string::npos)
+				<< cls << ": " << r.failureReason;
+		const MatchResult f = matcher(cls, "coarse_search=true\ncoarse_on_ambiguity=fail")->match(*ref, *cur, guess);
+		EXPECT_FALSE(f.success) << cls << " with coarse_on_ambiguity = fail";
 	}
+	EXPECT_GT(inflated, 0u) << "no matcher reached the ambiguity test";
 }
 
-// A scan of another place: no matcher returns a match; the search's
-// overlap test catches the scan that is nowhere on the reference.
-TEST(CorrelativeScanSearch, AScanOfAnotherPlaceIsNeverMatched)
+// A scan of another place: no matcher returns an unflagged match (some
+// walls of it line up somewhere in the window, so a match may come back
+// flagged ambiguous); the search's overlap test catches the scan that is
+// nowhere on the reference.
+TEST(CorrelativeScanSearch, AScanOfAnotherPlaceIsNeverAConfidentMatch)
 {
 	const auto ref = SyntheticRoom::office().scan(CPose2D());
 	SyntheticRoom elsewhere;
@@ -135,8 +152,10 @@ TEST(CorrelativeScanSearch, AScanOfAnotherPlaceIsNeverMatched)
 	for (const std::string cls : kMatchers)
 	{
 		const MatchResult r = matcher(cls)->match(*ref, *cur, diagonalPoseGaussian(CPose2D(), 0.1, 0.05));
-		EXPECT_FALSE(r.success) << cls;
-		EXPECT_FALSE(r.failureKind.empty()) << cls << ": " << r.failureReason;
+		if (r.success)
+			EXPECT_TRUE(r.ambiguous) << cls << " " << r.estimate.mean;
+		else
+			EXPECT_FALSE(r.failureKind.empty()) << cls << ": " << r.failureReason;
 	}
 	SyntheticRoom empty;
 	empty.addCircle(3, 0, 0.3);

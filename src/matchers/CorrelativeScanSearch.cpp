@@ -54,6 +54,7 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	read(c, s, "coarse_contender_ratio", contenderRatio);
 	read(c, s, "coarse_ambiguity_z", ambiguityZ);
 	read(c, s, "coarse_sharp_sigma", sharpSigma);
+	readChoice(c, s, "coarse_on_ambiguity", onAmbiguity, {"inflate", "fail"});
 	read(c, s, "coarse_distinct_xy", distinctXY);
 	readDegrees(c, s, "coarse_distinct_yaw_DEG", distinctYaw);
 	require(windowSigmas > 0, c, s, "coarse_window_sigmas", "> 0");
@@ -102,6 +103,9 @@ void CorrelativeScanSearch::Options::saveToConfigFile(
 	write(c, s, "coarse_ambiguity_z", ambiguityZ,
 		"match fails unless the points favour the estimate over every distinct contender "
 		"by this z (paired, sharp scores; 0: off)");
+	write(c, s, "coarse_on_ambiguity", onAmbiguity,
+		"inflate (the covariance grows to cover every rival; the match is used, flagged) | "
+		"fail (the match fails)");
 	write(c, s, "coarse_sharp_sigma", sharpSigma,
 		"[m] width of the sharp score that compares the estimate with the contenders");
 	write(c, s, "coarse_distinct_xy", distinctXY,
@@ -267,8 +271,24 @@ CorrelativeScanSearch::Result CorrelativeScanSearch::search(
 		r.failureReason = "coarse search: no current point near the reference in the window";
 		return r;
 	}
-	r.best = found.front().pose;
-	r.bestScore = found.front().score;
+	// Olson's search maximises the scan's likelihood times the motion
+	// prior: each scored point as one unit of log-likelihood, the guess as
+	// a Gaussian. Where the scan decides (a score difference of a few
+	// points) the prior does not matter; along a corridor, where the scan
+	// scores a whole ridge alike, the guess picks the place on it.
+	const Eigen::Matrix3d Pinv = guess.cov.asEigen().inverse();
+	auto logPosterior = [&](const Result::Contender& f) {
+		const Eigen::Vector3d d(f.pose.x() - guess.mean.x(), f.pose.y() - guess.mean.y(),
+			mrpt::math::wrapToPi(f.pose.phi() - guess.mean.phi()));
+		const double prior = Pinv.allFinite() ? -0.5 * d.dot(Pinv * d) : 0.0;
+		return static_cast<double>(m_px.size()) * f.score + prior;
+	};
+	const auto top = std::max_element(found.begin(), found.end(),
+		[&](const Result::Contender& a, const Result::Contender& b) {
+			return logPosterior(a) < logPosterior(b);
+		});
+	r.best = top->pose;
+	r.bestScore = top->score;
 	// Contenders: the best poses distinct from the best and from one another
 	// (a peak's own neighbours are not contenders).
 	for (const auto& f : found)
@@ -477,8 +497,9 @@ CorrelativeScanSearch::Ambiguity CorrelativeScanSearch::ambiguity(const Result& 
 		const mrpt::poses::CPose2D at = bestGridNeighbour(r, o);
 		const double z = evidence(estimate, at);
 		if (z >= options.ambiguityZ || !distinct(at, estimate)) continue;
+		out.rivals.push_back(at);
+		if (out.ambiguous) continue;  // the reason names the first
 		out.ambiguous = true;
-		out.rival = at;
 		out.z = z;
 		const auto d = at - estimate;
 		char buf[320];
@@ -489,7 +510,6 @@ CorrelativeScanSearch::Ambiguity CorrelativeScanSearch::ambiguity(const Result& 
 			std::hypot(d.x(), d.y()), mrpt::RAD2DEG(d.phi()), 100 * sharpScoreAt(at),
 			100 * sharpScoreAt(estimate), z, options.ambiguityZ);
 		out.reason = buf;
-		return out;
 	}
 	return out;
 }

@@ -172,12 +172,30 @@ void ScanMatcher::matchFromCoarseSearch(const ScanPoints& reference, const ScanP
 	// if the iterations walked away from it into another minimum). Refining
 	// the rival too and keeping the better refinement was tried: it moved
 	// few matches from flagged to right and some to silently wrong (people
-	// walking), so an ambiguous match fails.
+	// walking).
 	const auto amb = m_coarse.ambiguity(coarse, r.estimate.mean, window);
 	if (!amb.ambiguous) return;
-	r.success = false;
-	r.failureKind = "ambiguous";
-	r.failureReason = amb.reason;
+	if (m_coarse.options.onAmbiguity == "fail")
+	{
+		r.success = false;
+		r.failureKind = "ambiguous";
+		r.failureReason = amb.reason;
+		return;
+	}
+	// Along a corridor the scans fix the heading and the cross-track
+	// position but not where along it: each rival's offset joins the
+	// covariance as one standard deviation, so it covers the rivals and
+	// leaves the directions the scans do fix as they were.
+	Eigen::Matrix3d C = r.estimate.cov.asEigen();
+	for (const auto& rival : amb.rivals)
+	{
+		const Eigen::Vector3d d(rival.x() - r.estimate.mean.x(), rival.y() - r.estimate.mean.y(),
+			mrpt::math::wrapToPi(rival.phi() - r.estimate.mean.phi()));
+		C += d * d.transpose();
+	}
+	r.estimate.cov = mrpt::math::CMatrixDouble33(C);
+	r.ambiguous = true;
+	r.ambiguityReason = amb.reason;
 }
 
 MatchInspection ScanMatcher::inspectLastMatch(const ScanPoints& reference,

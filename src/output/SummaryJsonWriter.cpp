@@ -35,6 +35,7 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"matches", s.matchesAttempted},
 		{"match_failures", s.matchFailures},
 		{"match_failures_by_kind", s.matchFailuresByKind},
+		{"ambiguous_matches_used", s.ambiguousMatches},
 		{"fallbacks_to_odometry", s.fallbacks},
 		{"ignored_observations", s.ignoredObservations}};
 	if (s.stereoFrames)

@@ -217,6 +217,7 @@ void Pipeline::processStep(
 			stats.matchesAttempted++;
 			stats.matchTimes.push_back(match.timeSeconds);
 			stats.matchIterations.push_back(match.iterations);
+			if (match.ambiguous) stats.ambiguousMatches++;
 			if (!match.success)
 			{
 				stats.matchFailures++;

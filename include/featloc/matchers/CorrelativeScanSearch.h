@@ -49,8 +49,12 @@ class CorrelativeScanSearch
 		 * noisy logs (doc/benchmarks.md, "Wide basin"). */
 		bool enabled = false;
 		double windowSigmas = 3.0;	//!< half-window in sigmas of the guess
-		double minWindowXY = 0.10;	//!< [m] half-window at least this
-		double minWindowYaw = 0.05235987755982988;	//!< [rad] (3 deg)
+		/** The half-window is at least this: odometry's covariance can be
+		 * far too small (a 5.7 deg turn error under a 1 deg sigma on MRPT's
+		 * simulated log), and a search that misses the truth is worse than
+		 * none. */
+		double minWindowXY = 0.20;	//!< [m]
+		double minWindowYaw = 0.13962634015954636;	//!< [rad] (8 deg)
 		double maxWindowXY = 0.60;	//!< [m] half-window at most this
 		double maxWindowYaw = 0.4363323129985824;  //!< [rad] (25 deg)
 		double resolution = 0.03;  //!< [m] lookup cell and translation step
@@ -58,7 +62,10 @@ class CorrelativeScanSearch
 		unsigned int maxPoints = 150;  //!< current points scored (evenly picked)
 		double minScore = 0.25;	 //!< fail below this share of points on the reference
 		double contenderRatio = 0.90;  //!< poses scoring this x the best are contenders
-		double ambiguityZ = 1.0;  //!< fail unless the points favour the estimate by this z (0: off)
+		double ambiguityZ = 1.0;  //!< ambiguous unless the points favour the estimate by this z (0: off)
+		/** What an ambiguous match becomes: "inflate" (its covariance grows
+		 * to cover every rival, and it is used, flagged) or "fail". */
+		std::string onAmbiguity = "inflate";
 		double sharpSigma = 0.02;  //!< [m] width of the sharp score, at least (else 2x the scan's scatter)
 		/** Solutions further apart than this in translation or rotation are
 		 * distinct: the silent-gross-error thresholds of featloc-bench. */
@@ -115,9 +122,11 @@ class CorrelativeScanSearch
 	struct Ambiguity
 	{
 		bool ambiguous = false;
-		mrpt::poses::CPose2D rival;	 //!< the solution the points do not reject
-		double z = 0;  //!< evidence for the estimate over the rival
-		std::string reason;
+		/** The solutions the points do not reject, at their best grid
+		 * neighbours. */
+		std::vector<mrpt::poses::CPose2D> rivals;
+		double z = 0;  //!< evidence for the estimate over the first rival
+		std::string reason;	 //!< about the first rival
 	};
 	/** Whether `estimate` (the matcher's refinement of r.best) is
 	 * ambiguous: a contender of `r` (or r.best itself), distinct from it,

@@ -29,6 +29,13 @@ struct MatchResult
 	 * as well as the estimate), "guess_gate", or "matcher" (the matcher's
 	 * own reasons). */
 	std::string failureKind;
+	/** A success that the coarse search found ambiguous (coarse_on_ambiguity
+	 * = inflate): the estimate's covariance was grown to cover every
+	 * solution the points do not reject (ambiguityReason says the first),
+	 * so a filter keeps its prediction along the ambiguity and uses the
+	 * match across it. Counted as flagged, not as a silent error. */
+	bool ambiguous = false;
+	std::string ambiguityReason;
 	/** The coarse search (CorrelativeScanSearch) when it ran: the share of
 	 * points on the reference at its best pose and at its best contender
 	 * (0 when it did not run or found none). */

@@ -41,6 +41,9 @@ struct RunStats
 	/** The failures by MatchResult::failureKind (ambiguous, no_overlap,
 	 * guess_gate, matcher, too_few_points). */
 	std::map<std::string, size_t> matchFailuresByKind;
+	/** Successful matches flagged ambiguous, used with an inflated
+	 * covariance (MatchResult::ambiguous). */
+	size_t ambiguousMatches = 0;
 	size_t fallbacks = 0;  //!< steps where the estimator used odometry
 	/** A few failure examples: "scan 123: reason". */
 	std::vector<std::string> failureExamples;
