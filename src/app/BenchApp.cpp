@@ -143,7 +143,7 @@ void printRow(const std::string& name, const ScanPairBenchmark::Result& r)
 	std::printf(
 		"| %s | %s | %zu | %s | %s | %.2f / %.2f / %.1f | %.3f / %.3f / %.2f | %.2f / %.2f | "
 		"%.3f / %.3f | %.1f | %.2f / %.0f%% |\n",
-		name.c_str(), r.matcher.c_str(), r.pairs, percent(r.failures, r.pairs).c_str(),
+		name.c_str(), r.matcher.c_str(), r.pairs, percent(r.flagged(), r.pairs).c_str(),
 		percent(r.silentGross, r.pairs).c_str(), r.meanTrans * 1e3, r.medianTrans * 1e3,
 		r.p95Trans * 1e3, mrpt::RAD2DEG(r.maeYaw), mrpt::RAD2DEG(r.medianYaw),
 		mrpt::RAD2DEG(r.p95Yaw), r.maeX * 1e3, r.maeY * 1e3, r.meanTime * 1e3,
@@ -153,7 +153,8 @@ void printRow(const std::string& name, const ScanPairBenchmark::Result& r)
 nlohmann::json toJson(const ScanPairBenchmark::Result& r)
 {
 	return {{"matcher", r.matcher}, {"pairs", r.pairs}, {"failures", r.failures},
-		{"failures_by_kind", r.failuresByKind}, {"silent_gross_errors", r.silentGross},
+		{"failures_by_kind", r.failuresByKind}, {"ambiguous_used", r.ambiguousUsed},
+		{"flagged", r.flagged()}, {"silent_gross_errors", r.silentGross},
 		{"success_rate", r.successRate()}, {"mae_x_m", r.maeX}, {"mae_y_m", r.maeY},
 		{"mae_yaw_deg", mrpt::RAD2DEG(r.maeYaw)}, {"mean_trans_err_m", r.meanTrans},
 		{"median_trans_err_m", r.medianTrans}, {"p95_trans_err_m", r.p95Trans},
@@ -351,7 +352,7 @@ int BenchApp::main(int argc, char** argv)
 				plot.series[m].values.push_back(100 * level[m].successRate());
 				std::printf("| %s | %s | +-%.2f m / +-%.1f deg | %.1f%% | %s | %s | %.2f |\n",
 					name.c_str(), variants[m].label.c_str(), xy, mrpt::RAD2DEG(yaw),
-					100 * level[m].successRate(), percent(level[m].failures, level[m].pairs).c_str(),
+					100 * level[m].successRate(), percent(level[m].flagged(), level[m].pairs).c_str(),
 					percent(level[m].silentGross, level[m].pairs).c_str(), level[m].meanTrans * 1e3);
 				auto row = toJson(level[m]);
 				row["matcher"] = variants[m].label;

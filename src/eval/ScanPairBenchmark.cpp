@@ -92,7 +92,16 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 						"pair " + std::to_string(k) + ": " + r.failureReason);
 				continue;
 			}
-			if (et > o.grossTrans || ew > o.grossYaw)
+			if (r.ambiguous)
+			{
+				// Used with its covariance grown over the rivals: flagged,
+				// and its error is what the pipeline uses.
+				res[m].ambiguousUsed++;
+				if (res[m].failureExamples.size() < 5)
+					res[m].failureExamples.push_back(
+						"pair " + std::to_string(k) + " (used, covariance inflated): " + r.ambiguityReason);
+			}
+			else if (et > o.grossTrans || ew > o.grossYaw)
 			{
 				res[m].silentGross++;
 				if (res[m].silentGrossExamples.size() < 5)

@@ -34,8 +34,9 @@ struct ScanPairSample
  * with the error of its guess, which is what the pipeline then uses.
  * Reported: the mean absolute errors in t_x, t_y and w (both papers'
  * metric), mean / median / p95 of the translation and rotation errors, the
- * flagged failures (by kind) and the silent gross errors (a success off by
- * more than grossTrans or grossYaw), time and iterations per match, and the
+ * flagged pairs (failures by kind, and successes flagged ambiguous, counted
+ * with their estimate's error) and the silent gross errors (another
+ * success off by more than grossTrans or grossYaw), time and iterations per match, and the
  * NEES of the returned covariances over the successes. Matchers run interleaved pair by pair so that
  * timings share the machine's state. */
 class ScanPairBenchmark
@@ -62,7 +63,10 @@ class ScanPairBenchmark
 		size_t pairs = 0;
 		size_t failures = 0;  //!< flagged: the matcher said it failed
 		std::map<std::string, size_t> failuresByKind;  //!< MatchResult::failureKind
-		size_t silentGross = 0;	 //!< successes off by > grossTrans or > grossYaw
+		/** Successes the matcher flagged ambiguous and used with an inflated
+		 * covariance (MatchResult::ambiguous): flagged, never silent. */
+		size_t ambiguousUsed = 0;
+		size_t silentGross = 0;	 //!< other successes off by > grossTrans or > grossYaw
 		/** Over every pair (failures at the guess's error). */
 		double maeX = 0, maeY = 0, maeYaw = 0;	//!< [m], [m], [rad]
 		double meanTrans = 0, medianTrans = 0, p95Trans = 0;  //!< [m] |t error|
@@ -73,10 +77,11 @@ class ScanPairBenchmark
 		double medianNees = 0;	//!< 2.37 for a consistent covariance
 		double neesWithin95 = 0;  //!< share within chi2(3) 95% (0.95 if consistent)
 		std::vector<std::string> failureExamples, silentGrossExamples;
+		size_t flagged() const { return failures + ambiguousUsed; }
 		/** Share of pairs neither flagged nor grossly wrong. */
 		double successRate() const
 		{
-			return pairs ? static_cast<double>(pairs - failures - silentGross) /
+			return pairs ? static_cast<double>(pairs - flagged() - silentGross) /
 					static_cast<double>(pairs)
 						 : 0.0;
 		}
