@@ -93,12 +93,6 @@ class CfIdcMatcher : public ScanMatcher
 
 	Parameters params;
 
-	void loadOwnParams(
-		const mrpt::config::CConfigFileBase& cfg,
-		const std::string& section) override;
-	void saveOwnParams(
-		mrpt::config::CConfigFileBase& cfg,
-		const std::string& section) const override;
 
 	const std::vector<SegmentReport>& lastCurrentSegments() const { return m_currentReport; }
 	const std::vector<SegmentReport>& lastReferenceSegments() const { return m_referenceReport; }
@@ -106,6 +100,12 @@ class CfIdcMatcher : public ScanMatcher
 		const mrpt::poses::CPose2D& sensorEstimate) const override;
 
    protected:
+	void loadOwnParams(
+		const mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) override;
+	void saveOwnParams(
+		mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) const override;
 	double guessGateChi2() const override { return params.idc.guess_gate_chi2; }
 	void matchPoints(
 		const ScanPoints& reference, const ScanPoints& current,

@@ -53,14 +53,13 @@ class IcpMatcher : public ScanMatcher
 
 	Parameters params;
 
+   protected:
 	void loadOwnParams(
 		const mrpt::config::CConfigFileBase& cfg,
 		const std::string& section) override;
 	void saveOwnParams(
 		mrpt::config::CConfigFileBase& cfg,
 		const std::string& section) const override;
-
-   protected:
 	void matchPoints(
 		const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPosePDFGaussian& initialGuess,

@@ -36,14 +36,13 @@ class IdcMatcher : public ScanMatcher
 
 	Parameters params;
 
+   protected:
 	void loadOwnParams(
 		const mrpt::config::CConfigFileBase& cfg,
 		const std::string& section) override;
 	void saveOwnParams(
 		mrpt::config::CConfigFileBase& cfg,
 		const std::string& section) const override;
-
-   protected:
 	double guessGateChi2() const override { return params.idc.guess_gate_chi2; }
 	void matchPoints(
 		const ScanPoints& reference, const ScanPoints& current,

@@ -88,12 +88,6 @@ class PcmFeatureMatcher : public ScanMatcher
 
 	Parameters params;
 
-	void loadOwnParams(
-		const mrpt::config::CConfigFileBase& cfg,
-		const std::string& section) override;
-	void saveOwnParams(
-		mrpt::config::CConfigFileBase& cfg,
-		const std::string& section) const override;
 
 	/** Features of the last match (sensor frames), for inspection. */
 	const std::vector<ScanFeature>& lastReferenceFeatures() const { return m_reference; }
@@ -102,6 +96,12 @@ class PcmFeatureMatcher : public ScanMatcher
 		const mrpt::poses::CPose2D& sensorEstimate) const override;
 
    protected:
+	void loadOwnParams(
+		const mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) override;
+	void saveOwnParams(
+		mrpt::config::CConfigFileBase& cfg,
+		const std::string& section) const override;
 	void matchPoints(
 		const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPosePDFGaussian& initialGuess,
