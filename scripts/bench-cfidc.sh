@@ -24,7 +24,7 @@ bench_init bench-cfidc "$@"
 LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 
 PAPER_IDC="final_phase=idc"
-PAPER_CFIDC="final_phase=idc;pairing_gate=false;segment_gate=0;curvature_sampling=normalized"
+PAPER_CFIDC="final_phase=idc;pairing_gate=false;pairing_fallback=false;segment_gate=0;curvature_sampling=normalized"
 MATCHERS="IDC as published=featloc::IdcMatcher{$PAPER_IDC},CF-IDC as published=featloc::CfIdcMatcher{$PAPER_CFIDC},IDC + featloc=featloc::IdcMatcher,CF-IDC + featloc=featloc::CfIdcMatcher,IcpMatcher=featloc::IcpMatcher"
 ERRORS="--perturbation gaussian --perturb-xy 0.05 --perturb-yaw-deg 5 --seed 1"
 HEADER=--header

@@ -60,7 +60,7 @@ ScanMatcher::Ptr matcher(const std::string& cls, const std::string& overrides = 
 
 const char* kIdcAsPublished = "final_phase=idc";
 const char* kCfIdcAsPublished =
-	"final_phase=idc\npairing_gate=false\nsegment_gate=0\ncurvature_sampling=normalized";
+	"final_phase=idc\npairing_gate=false\npairing_fallback=false\nsegment_gate=0\ncurvature_sampling=normalized";
 }  // namespace
 
 TEST(ReferencePolyline, SearchesEqualBruteForce)
@@ -388,6 +388,33 @@ TEST(IdcMatcher, FailuresAreReportedWithAReason)
 	EXPECT_NE(none.failureReason.find("no segment of 5 points or more in the current scan"),
 		std::string::npos)
 		<< none.failureReason;
+}
+
+// The fallback when the curvature pairing keeps under a third of the points
+// is a switch, and taking it is reported (summary.json and featloc-bench
+// count MatchResult::matcherFallback): with U_c = 1 nothing pairs.
+TEST(CfIdcMatcher, PairingFallbackIsASwitchAndIsReported)
+{
+	const SyntheticRoom room = SyntheticRoom::office();
+	const CPose2D p0(0.3, -0.4, 0.2), motion(0.15, 0.05, mrpt::DEG2RAD(4.0));
+	const auto ref = room.scan(p0), cur = room.scan(p0 + motion);
+	const auto guess = diagonalPoseGaussian(
+		CPose2D(motion.x() + 0.03, motion.y() - 0.02, motion.phi() + 0.02), 0.05, mrpt::DEG2RAD(3.0));
+	const MatchResult ordinary = matcher("featloc::CfIdcMatcher")->match(*ref, *cur, guess);
+	ASSERT_TRUE(ordinary.success) << ordinary.failureReason;
+	EXPECT_TRUE(ordinary.matcherFallback.empty()) << ordinary.matcherFallback;
+
+	const MatchResult fallback = matcher("featloc::CfIdcMatcher", "U_c=1")->match(*ref, *cur, guess);
+	ASSERT_TRUE(fallback.success) << fallback.failureReason;
+	EXPECT_NE(fallback.matcherFallback.find("IDC started from every segment"), std::string::npos)
+		<< fallback.matcherFallback;
+	EXPECT_LT(std::hypot(fallback.estimate.mean.x() - motion.x(), fallback.estimate.mean.y() - motion.y()), 1e-3);
+
+	const MatchResult paper =
+		matcher("featloc::CfIdcMatcher", "U_c=1\npairing_fallback=false")->match(*ref, *cur, guess);
+	EXPECT_FALSE(paper.success);
+	EXPECT_TRUE(paper.matcherFallback.empty());
+	EXPECT_FALSE(paper.failureReason.empty());
 }
 
 TEST(CfIdcMatcher, ParametersRoundTripAndBadValuesNameTheKey)

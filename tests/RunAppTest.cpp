@@ -485,6 +485,7 @@ TEST(FeatlocRun, FailedMatchesAreCountedByKindInTheSummary)
 	for (const auto& [kind, n] : sp["counts"]["match_failures_by_kind"].items()) byKind += n.get<size_t>();
 	EXPECT_EQ(byKind, sp["counts"]["match_failures"].get<size_t>());
 	EXPECT_EQ(sp["counts"]["ambiguous_matches_used"], 0);  // the coarse search is off by default
+	EXPECT_EQ(sp["counts"]["matcher_fallbacks"], 0);  // ICP has none
 }
 
 // Every pair counts: a failed pair with its guess's error, so a matcher

@@ -155,6 +155,7 @@ nlohmann::json toJson(const ScanPairBenchmark::Result& r)
 	return {{"matcher", r.matcher}, {"pairs", r.pairs}, {"failures", r.failures},
 		{"failures_by_kind", r.failuresByKind}, {"ambiguous_used", r.ambiguousUsed},
 		{"flagged", r.flagged()}, {"silent_gross_errors", r.silentGross},
+		{"matcher_fallbacks", r.matcherFallbacks},
 		{"success_rate", r.successRate()}, {"mae_x_m", r.maeX}, {"mae_y_m", r.maeY},
 		{"mae_yaw_deg", mrpt::RAD2DEG(r.maeYaw)}, {"mean_trans_err_m", r.meanTrans},
 		{"median_trans_err_m", r.medianTrans}, {"p95_trans_err_m", r.p95Trans},

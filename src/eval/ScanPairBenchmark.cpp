@@ -73,6 +73,7 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			res[m].pairs++;
 			a.time.push_back(r.timeSeconds);
 			a.iterations += r.iterations;
+			if (!r.matcherFallback.empty()) res[m].matcherFallbacks++;
 			// Every pair counts: a failed match with the guess, which is what
 			// the pipeline then uses.
 			const auto& e = r.success ? r.estimate.mean : guess.mean;

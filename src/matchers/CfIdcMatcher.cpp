@@ -29,6 +29,7 @@ void CfIdcMatcher::Parameters::loadFromConfigFile(
 	curvature.loadFromConfigFile(c, s);
 	correlation.loadFromConfigFile(c, s);
 	read(c, s, "pairing_gate", pairing_gate);
+	read(c, s, "pairing_fallback", pairing_fallback);
 	read(c, s, "segment_gate", segment_gate);
 	idc.loadFromConfigFile(c, s);
 	require(min_segment_points >= 2, c, s, "min_segment_points", "must be >= 2");
@@ -46,6 +47,8 @@ void CfIdcMatcher::Parameters::saveToConfigFile(
 	correlation.saveToConfigFile(c, s);
 	write(c, s, "pairing_gate", pairing_gate,
 		"compare only segments that can be the same object under the initial guess (false: the paper)");
+	write(c, s, "pairing_fallback", pairing_fallback,
+		"if the curvature pairing keeps under a third of the points, IDC starts from every segment (false: the paper, IDC on what was paired)");
 	write(c, s, "segment_gate", segment_gate,
 		"[m] keep the current segments within this (median) of the reference once IDC has converged, twice this at its switch to point-to-line (0: the paper's pairing decides)");
 	idc.saveToConfigFile(c, s);
@@ -309,9 +312,12 @@ void CfIdcMatcher::matchPoints(
 	size_t sizeable = 0;
 	for (const auto& s : m_currentReport)
 		if (s.segment.size() >= params.min_segment_points) sizeable += s.segment.size();
-	if (m_kept.size() < std::max<size_t>(3 * params.idc.min_pairs, sizeable / kMinPairedShare) ||
-		m_polyline.size() < 3 * params.idc.min_pairs)
+	if (params.pairing_fallback &&
+		(m_kept.size() < std::max<size_t>(3 * params.idc.min_pairs, sizeable / kMinPairedShare) ||
+			m_polyline.size() < 3 * params.idc.min_pairs))
 	{
+		result.matcherFallback = "the curvature pairing kept " + std::to_string(m_kept.size()) +
+			" of " + std::to_string(sizeable) + " points: IDC started from every segment";
 		// Too little paired to start from: every segment large enough.
 		for (auto* report : {&m_currentReport, &m_referenceReport})
 			for (auto& s : *report)

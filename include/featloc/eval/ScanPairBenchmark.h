@@ -66,6 +66,7 @@ class ScanPairBenchmark
 		/** Successes the matcher flagged ambiguous and used with an inflated
 		 * covariance (MatchResult::ambiguous): flagged, never silent. */
 		size_t ambiguousUsed = 0;
+		size_t matcherFallbacks = 0;  //!< the matcher took its own fallback (MatchResult)
 		size_t silentGross = 0;	 //!< other successes off by > grossTrans or > grossYaw
 		/** Over every pair (failures at the guess's error). */
 		double maeX = 0, maeY = 0, maeYaw = 0;	//!< [m], [m], [rad]

@@ -52,7 +52,8 @@ namespace featloc
  *   judged by an estimate that is right along it.
  * If the curvature pairing keeps less than a third of the points of the
  * segments large enough (or fewer than 3 min_pairs), IDC starts from all of
- * them (reported as the reason); if the segment gate would leave fewer than
+ * them (pairing_fallback; reported as the reason and in
+ * MatchResult::matcherFallback); if the segment gate would leave fewer than
  * 3 min_pairs points, the estimate is too poor to judge by and the
  * pairing's choice stands.
  *
@@ -70,6 +71,10 @@ class CfIdcMatcher : public ScanMatcher
 		CurvatureFunction::Parameters curvature;
 		CurvatureFunctionMatcher::Parameters correlation;
 		bool pairing_gate = true;
+		/** The pairing keeps under a third of the points: IDC starts from
+		 * every segment large enough (false: the paper, IDC on the paired
+		 * ones). Counted (MatchResult::matcherFallback). */
+		bool pairing_fallback = true;
 		double segment_gate = 0.05;	 //!< [m] 0 disables
 		IterativeDualCorrespondence::Parameters idc;
 

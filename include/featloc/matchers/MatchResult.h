@@ -36,6 +36,11 @@ struct MatchResult
 	 * match across it. Counted as flagged, not as a silent error. */
 	bool ambiguous = false;
 	std::string ambiguityReason;
+	/** Non-empty when the matcher took its own fallback and why (CF-IDC:
+	 * the curvature pairing kept under a third of the points, so IDC
+	 * started from every segment). Counted by summary.json and
+	 * featloc-bench. */
+	std::string matcherFallback;
 	/** The coarse search (CorrelativeScanSearch) when it ran: the share of
 	 * points on the reference at its best pose and at its best contender
 	 * (0 when it did not run or found none). */

@@ -44,6 +44,9 @@ struct RunStats
 	/** Successful matches flagged ambiguous, used with an inflated
 	 * covariance (MatchResult::ambiguous). */
 	size_t ambiguousMatches = 0;
+	/** Matches where the matcher took its own fallback
+	 * (MatchResult::matcherFallback). */
+	size_t matcherFallbacks = 0;
 	size_t fallbacks = 0;  //!< steps where the estimator used odometry
 	/** A few failure examples: "scan 123: reason". */
 	std::vector<std::string> failureExamples;
