@@ -1,7 +1,6 @@
 #include "featloc/eval/ScanPairBenchmark.h"
 
 #include <mrpt/core/bits_math.h>
-#include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -14,6 +13,7 @@
 #include "featloc/eval/EvaluationReport.h"
 #include "featloc/eval/ErrorStats.h"
 #include "featloc/math/DiagonalPoseGaussian.h"
+#include "featloc/math/PoseDifference.h"
 
 namespace featloc
 {
@@ -77,8 +77,7 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			// Every pair counts: a failed match with the guess, which is what
 			// the pipeline then uses.
 			const auto& e = r.success ? r.estimate.mean : guess.mean;
-			const Eigen::Vector3d err(e.x() - truth.x(), e.y() - truth.y(),
-				mrpt::math::wrapToPi(e.phi() - truth.phi()));
+			const Eigen::Vector3d err = poseDifference(e, truth);
 			const double et = std::hypot(err[0], err[1]), ew = std::abs(err[2]);
 			a.ex.push_back(std::abs(err[0]));
 			a.ey.push_back(std::abs(err[1]));
@@ -87,7 +86,7 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			if (!r.success)
 			{
 				res[m].failures++;
-				res[m].failuresByKind[r.failureKind.empty() ? "matcher" : r.failureKind]++;
+				res[m].failuresByKind[r.failureKind]++;
 				if (res[m].failureExamples.size() < 5)
 					res[m].failureExamples.push_back(
 						"pair " + std::to_string(k) + ": " + r.failureReason);

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "featloc/core/InputError.h"
+#include "featloc/math/PoseDifference.h"
 
 namespace featloc
 {
@@ -201,8 +202,7 @@ void TrajectoryEvaluator::neesOf(
 		const Eigen::LDLT<Eigen::Matrix3d> ldlt(P);
 		if (ldlt.info() != Eigen::Success || !(P.determinant() > 0)) continue;
 		const CPose2D ref = asPose(reference.poses[r]), moved = anchor + asPose(est);
-		const Eigen::Vector3d d(
-			ref.x() - moved.x(), ref.y() - moved.y(), mrpt::math::wrapToPi(ref.phi() - moved.phi()));
+		const Eigen::Vector3d d = poseDifference(ref, moved);
 		nees.push_back(d.dot(ldlt.solve(d)));
 		rep.neesSeries.emplace_back(est.t, nees.back());
 		if (nees.back() <= EvaluationReport::kNeesBound95) within++;

@@ -1,7 +1,6 @@
 #include "featloc/matchers/CorrelativeScanSearch.h"
 
 #include <mrpt/core/bits_math.h>
-#include <mrpt/math/wrap2pi.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -11,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "featloc/config/ConfigValues.h"
+#include "featloc/math/PoseDifference.h"
 #include "featloc/scan/AdaptiveBreakpointSegmenter.h"
 
 namespace featloc
@@ -35,6 +35,24 @@ constexpr int kMaxLevel = 6;
 constexpr double kPlausibleChi2 = 11.34;
 /** At most this many contenders are refined and compared with the estimate. */
 constexpr size_t kMaxContenders = 6;
+
+/** Squared Mahalanobis distance of `pose` from the guess (Pinv its inverse
+ * covariance); 0 when the guess's covariance has no finite inverse (no
+ * prior). */
+double guessMahalanobis2(
+	const mrpt::poses::CPose2D& pose, const mrpt::poses::CPose2D& mean, const Eigen::Matrix3d& Pinv)
+{
+	if (!Pinv.allFinite()) return 0;
+	const Eigen::Vector3d d = poseDifference(pose, mean);
+	return d.dot(Pinv * d);
+}
+
+double mean(const std::vector<double>& v)
+{
+	double sum = 0;
+	for (double x : v) sum += x;
+	return v.empty() ? 0.0 : sum / static_cast<double>(v.size());
+}
 }  // namespace
 
 void CorrelativeScanSearch::Options::loadFromConfigFile(
@@ -277,16 +295,18 @@ CorrelativeScanSearch::Result CorrelativeScanSearch::search(
 	// points) the prior does not matter; along a corridor, where the scan
 	// scores a whole ridge alike, the guess picks the place on it.
 	const Eigen::Matrix3d Pinv = guess.cov.asEigen().inverse();
-	auto logPosterior = [&](const Result::Contender& f) {
-		const Eigen::Vector3d d(f.pose.x() - guess.mean.x(), f.pose.y() - guess.mean.y(),
-			mrpt::math::wrapToPi(f.pose.phi() - guess.mean.phi()));
-		const double prior = Pinv.allFinite() ? -0.5 * d.dot(Pinv * d) : 0.0;
-		return static_cast<double>(m_px.size()) * f.score + prior;
-	};
-	const auto top = std::max_element(found.begin(), found.end(),
-		[&](const Result::Contender& a, const Result::Contender& b) {
-			return logPosterior(a) < logPosterior(b);
-		});
+	const Result::Contender* top = nullptr;
+	double topLogPosterior = 0;
+	for (const auto& f : found)
+	{
+		const double lp = static_cast<double>(n) * f.score -
+			0.5 * guessMahalanobis2(f.pose, guess.mean, Pinv);
+		if (!top || lp > topLogPosterior)
+		{
+			top = &f;
+			topLogPosterior = lp;
+		}
+	}
 	r.best = top->pose;
 	r.bestScore = top->score;
 	// Contenders: the best poses distinct from the best and from one another
@@ -298,7 +318,6 @@ CorrelativeScanSearch::Result CorrelativeScanSearch::search(
 		for (const auto& c : r.contenders) isNew = isNew && distinct(f.pose, c.pose);
 		if (isNew) r.contenders.push_back(f);
 	}
-	if (!r.contenders.empty()) r.secondScore = r.contenders.front().score;
 
 	if (r.bestScore < options.minScore)
 	{
@@ -348,9 +367,8 @@ std::vector<CorrelativeScanSearch::Result::Contender> CorrelativeScanSearch::bra
 		const size_t base = static_cast<size_t>(w) * n;
 		for (size_t i = 0; i < n; i++)
 		{
-			const int u = cu[base + i] + dx, v = cv[base + i] + dy;
-			if (u >= 0 && v >= 0 && u < m_width && v < m_height)
-				sum += t[static_cast<size_t>(v) * static_cast<size_t>(m_width) + static_cast<size_t>(u)];
+			const long c = cellIndex(cu[base + i] + dx, cv[base + i] + dy);
+			if (c >= 0) sum += t[static_cast<size_t>(c)];
 		}
 		return sum / static_cast<double>(n);
 	};
@@ -369,7 +387,6 @@ std::vector<CorrelativeScanSearch::Result::Contender> CorrelativeScanSearch::bra
 		for (int bx = -nx; bx <= nx; bx += side)
 			for (int by = -ny; by <= ny; by += side)
 				open.push({score(m_top, w, bx, by), m_top, w, bx, by});
-	r.posesScored = open.size();
 
 	std::vector<Result::Contender> found;  // every full-resolution pose taken from the queue
 	double best = 0;
@@ -391,10 +408,7 @@ std::vector<CorrelativeScanSearch::Result::Contender> CorrelativeScanSearch::bra
 		const int half = 1 << (nd.level - 1);
 		for (int cx = nd.dx; cx < nd.dx + 2 * half && cx <= nx; cx += half)
 			for (int cy = nd.dy; cy < nd.dy + 2 * half && cy <= ny; cy += half)
-			{
 				open.push({score(nd.level - 1, nd.yaw, cx, cy), nd.level - 1, nd.yaw, cx, cy});
-				r.posesScored++;
-			}
 	}
 	std::sort(found.begin(), found.end(),
 		[](const Result::Contender& a, const Result::Contender& c) { return a.score > c.score; });
@@ -412,37 +426,20 @@ void CorrelativeScanSearch::sharpScores(
 	{
 		const double x = c * m_allX[i] - s * m_allY[i] + pose.x(),
 					 y = s * m_allX[i] + c * m_allY[i] + pose.y();
-		const int u = static_cast<int>(std::floor((x - m_x0) / m_resolution));
-		const int v = static_cast<int>(std::floor((y - m_y0) / m_resolution));
-		if (u < 0 || v < 0 || u >= m_width || v >= m_height) continue;
-		const double d =
-			m_distance[static_cast<size_t>(v) * static_cast<size_t>(m_width) + static_cast<size_t>(u)];
+		const long cell = cellIndex(static_cast<int>(std::floor((x - m_x0) / m_resolution)),
+			static_cast<int>(std::floor((y - m_y0) / m_resolution)));
+		if (cell < 0) continue;
+		const double d = m_distance[static_cast<size_t>(cell)];
 		out[i] = std::exp(k * d * d);
 	}
 }
 
-double CorrelativeScanSearch::sharpScoreAt(const mrpt::poses::CPose2D& pose) const
+double CorrelativeScanSearch::evidence(const std::vector<double>& a, const std::vector<double>& b)
 {
-	std::vector<double> s;
-	sharpScores(pose, s);
-	double sum = 0;
-	for (double v : s) sum += v;
-	return s.empty() ? 0.0 : sum / static_cast<double>(s.size());
-}
-
-double CorrelativeScanSearch::evidence(
-	const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const
-{
-	// Paired, point by point: z = sum(d_i) / sqrt(sum(d_i^2)), d_i point i's
-	// sharp score at a minus at b. Points on a corridor's walls score alike
-	// under both and do not count; a door frame that only a explains does.
-	std::vector<double> sa, sb;
-	sharpScores(a, sa);
-	sharpScores(b, sb);
 	double sum = 0, sum2 = 0;
-	for (size_t i = 0; i < sa.size(); i++)
+	for (size_t i = 0; i < a.size(); i++)
 	{
-		const double d = sa[i] - sb[i];
+		const double d = a[i] - b[i];
 		sum += d;
 		sum2 += d * d;
 	}
@@ -450,21 +447,24 @@ double CorrelativeScanSearch::evidence(
 }
 
 mrpt::poses::CPose2D CorrelativeScanSearch::bestGridNeighbour(
-	const Result& r, const mrpt::poses::CPose2D& o) const
+	const Result& r, const mrpt::poses::CPose2D& o, std::vector<double>& scores) const
 {
 	double best = -1;
 	mrpt::poses::CPose2D at = o;
+	std::vector<double> s;
 	for (int dw = -1; dw <= 1; dw++)
 		for (int dx = -1; dx <= 1; dx++)
 			for (int dy = -1; dy <= 1; dy++)
 			{
 				const mrpt::poses::CPose2D p(
 					o.x() + dx * r.resolution, o.y() + dy * r.resolution, o.phi() + dw * r.yawStep);
-				const double sc = sharpScoreAt(p);
+				sharpScores(p, s);
+				const double sc = mean(s);
 				if (sc > best)
 				{
 					best = sc;
 					at = p;
+					scores.swap(s);
 				}
 			}
 	return at;
@@ -480,43 +480,46 @@ CorrelativeScanSearch::Ambiguity CorrelativeScanSearch::ambiguity(const Result& 
 	// over-confident odometry), and an accurate guess decides between two
 	// solutions that the scan cannot tell apart.
 	const Eigen::Matrix3d Pinv = guess.cov.asEigen().inverse();
-	auto plausible = [&](const mrpt::poses::CPose2D& p) {
-		const Eigen::Vector3d d(p.x() - guess.mean.x(), p.y() - guess.mean.y(),
-			mrpt::math::wrapToPi(p.phi() - guess.mean.phi()));
-		return !Pinv.allFinite() || d.dot(Pinv * d) <= kPlausibleChi2;
-	};
+	std::vector<double> atEstimate, atRival;
+	sharpScores(estimate, atEstimate);
 	std::vector<mrpt::poses::CPose2D> others;
 	for (const auto& c : r.contenders) others.push_back(c.pose);
 	others.push_back(r.best);  // the estimate may have left the search's best
 	for (const auto& o : others)
 	{
-		if (!distinct(o, estimate) || !plausible(o)) continue;
+		if (!distinct(o, estimate) || guessMahalanobis2(o, guess.mean, Pinv) > kPlausibleChi2)
+			continue;
 		// The contender sits on the search grid: it gets its best grid
 		// neighbour, so that quantisation does not favour the (continuous)
 		// estimate by much.
-		const mrpt::poses::CPose2D at = bestGridNeighbour(r, o);
-		const double z = evidence(estimate, at);
+		const mrpt::poses::CPose2D at = bestGridNeighbour(r, o, atRival);
+		const double z = evidence(atEstimate, atRival);
 		if (z >= options.ambiguityZ || !distinct(at, estimate)) continue;
 		out.rivals.push_back(at);
 		if (out.ambiguous) continue;  // the reason names the first
 		out.ambiguous = true;
-		out.z = z;
 		const auto d = at - estimate;
 		char buf[320];
 		std::snprintf(buf, sizeof(buf),
 			"ambiguous: a solution %.2f m, %.1f deg from the estimate puts %.0f%% of the points "
 			"on the reference against %.0f%% at the estimate (evidence for the estimate z = "
 			"%.1f < coarse_ambiguity_z %.1f)",
-			std::hypot(d.x(), d.y()), mrpt::RAD2DEG(d.phi()), 100 * sharpScoreAt(at),
-			100 * sharpScoreAt(estimate), z, options.ambiguityZ);
+			std::hypot(d.x(), d.y()), mrpt::RAD2DEG(d.phi()), 100 * mean(atRival),
+			100 * mean(atEstimate), z, options.ambiguityZ);
 		out.reason = buf;
 	}
 	return out;
 }
 
+long CorrelativeScanSearch::cellIndex(int u, int v) const
+{
+	if (u < 0 || v < 0 || u >= m_width || v >= m_height) return -1;
+	return static_cast<long>(v) * m_width + u;
+}
+
 bool CorrelativeScanSearch::distinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const
 {
-	return std::hypot(a.x() - b.x(), a.y() - b.y()) > options.distinctXY ||
-		std::abs(mrpt::math::wrapToPi(a.phi() - b.phi())) > options.distinctYaw;
+	const Eigen::Vector3d d = poseDifference(a, b);
+	return std::hypot(d[0], d[1]) > options.distinctXY || std::abs(d[2]) > options.distinctYaw;
 }
 }  // namespace featloc

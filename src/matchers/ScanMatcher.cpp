@@ -4,12 +4,12 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
-#include <mrpt/math/wrap2pi.h>
-
 #include <Eigen/Dense>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+
+#include "featloc/math/PoseDifference.h"
 
 namespace featloc
 {
@@ -101,9 +101,7 @@ void ScanMatcher::checkAgainstGuess(
 {
 	const double gate = guessGateChi2();
 	if (!r.success || gate <= 0) return;
-	const auto& e = r.estimate.mean;
-	const Eigen::Vector3d d(e.x() - guess.mean.x(), e.y() - guess.mean.y(),
-		mrpt::math::wrapToPi(e.phi() - guess.mean.phi()));
+	const Eigen::Vector3d d = poseDifference(r.estimate.mean, guess.mean);
 	const Eigen::Matrix3d P =
 		guess.cov.asEigen() + r.estimate.cov.asEigen() + r.gateAllowance.asEigen();
 	const double m2 = d.dot(P.ldlt().solve(d));
@@ -141,10 +139,9 @@ MatchResult ScanMatcher::matchInSensorFrames(
 	else if (m_coarse.options.enabled)
 		matchFromCoarseSearch(reference, current, window, r);
 	else
-	{
 		matchPoints(reference, current, initialGuess, r);
-		if (!r.success) r.failureKind = "matcher";
-	}
+	// Every failure has a kind; the matcher's own reasons are "matcher".
+	if (!r.success && r.failureKind.empty()) r.failureKind = "matcher";
 	return r;
 }
 
@@ -153,7 +150,6 @@ void ScanMatcher::matchFromCoarseSearch(const ScanPoints& reference, const ScanP
 {
 	const CorrelativeScanSearch::Result coarse = m_coarse.search(reference, current, window);
 	r.coarseScore = coarse.bestScore;
-	r.coarseSecondScore = coarse.secondScore;
 	if (!coarse.success)
 	{
 		r.success = false;
@@ -163,11 +159,7 @@ void ScanMatcher::matchFromCoarseSearch(const ScanPoints& reference, const ScanP
 	}
 	matchPoints(reference, current,
 		mrpt::poses::CPosePDFGaussian(coarse.best, coarse.gridCovariance()), r);
-	if (!r.success)
-	{
-		r.failureKind = "matcher";
-		return;
-	}
+	if (!r.success) return;
 	// The estimate against the search's other solutions (and its own best,
 	// if the iterations walked away from it into another minimum). Refining
 	// the rival too and keeping the better refinement was tried: it moved
@@ -189,8 +181,7 @@ void ScanMatcher::matchFromCoarseSearch(const ScanPoints& reference, const ScanP
 	Eigen::Matrix3d C = r.estimate.cov.asEigen();
 	for (const auto& rival : amb.rivals)
 	{
-		const Eigen::Vector3d d(rival.x() - r.estimate.mean.x(), rival.y() - r.estimate.mean.y(),
-			mrpt::math::wrapToPi(rival.phi() - r.estimate.mean.phi()));
+		const Eigen::Vector3d d = poseDifference(rival, r.estimate.mean);
 		C += d * d.transpose();
 	}
 	r.estimate.cov = mrpt::math::CMatrixDouble33(C);

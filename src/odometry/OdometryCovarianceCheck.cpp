@@ -1,12 +1,13 @@
 #include "featloc/odometry/OdometryCovarianceCheck.h"
 
 #include <mrpt/math/distributions.h>
-#include <mrpt/math/wrap2pi.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <vector>
+
+#include "featloc/math/PoseDifference.h"
 
 namespace featloc
 {
@@ -44,8 +45,7 @@ void OdometryCovarianceCheck::observe(
 	const mrpt::poses::CPosePDFGaussian& odometry, const mrpt::poses::CPosePDFGaussian& match)
 {
 	Sample x;
-	x.e << match.mean.x() - odometry.mean.x(), match.mean.y() - odometry.mean.y(),
-		mrpt::math::wrapToPi(match.mean.phi() - odometry.mean.phi());
+	x.e = poseDifference(match.mean, odometry.mean);
 	x.Q = odometry.cov.asEigen();
 	x.R = match.cov.asEigen();
 	if (!x.e.allFinite() || !x.Q.allFinite() || !x.R.allFinite()) return;

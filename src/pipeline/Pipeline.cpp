@@ -222,7 +222,7 @@ void Pipeline::processStep(
 			if (!match.success)
 			{
 				stats.matchFailures++;
-				stats.matchFailuresByKind[match.failureKind.empty() ? "matcher" : match.failureKind]++;
+				stats.matchFailuresByKind[match.failureKind]++;
 				if (stats.failureExamples.size() < kMaxFailureExamples)
 					stats.failureExamples.push_back(
 						"scan " + std::to_string(step.scanIndex) + " (entry #" +

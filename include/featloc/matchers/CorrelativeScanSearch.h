@@ -92,11 +92,9 @@ class CorrelativeScanSearch
 		/** The best poses distinct from `best` and from one another that
 		 * score at least contenderRatio x bestScore, best first. */
 		std::vector<Contender> contenders;
-		double secondScore = 0;	 //!< the first contender's (0: none)
 		double windowXY[2] = {0, 0}, windowYaw = 0;	 //!< half-widths searched
 		double resolution = 0;	//!< [m] translation step used (cell size)
 		double yawStep = 0;	 //!< [rad] rotation step
-		size_t posesScored = 0;	 //!< low- and full-resolution poses scored
 		/** Covariance to give the matcher that refines `best`: one step of
 		 * the search grid as one sigma. */
 		mrpt::math::CMatrixDouble33 gridCovariance() const;
@@ -110,29 +108,19 @@ class CorrelativeScanSearch
 	Result search(const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPosePDFGaussian& guess);
 
-	/** Mean of exp(-d^2 / 2 sigma^2) over every current point of the last
-	 * search(), d its distance to the reference surface at `pose`, sigma the
-	 * larger of sharp_sigma and twice the reference's point scatter. */
-	double sharpScoreAt(const mrpt::poses::CPose2D& pose) const;
-
-	/** The paired evidence for `a` over `b`: z = sum(d_i) / sqrt(sum(d_i^2)),
-	 * d_i point i's sharp score at a minus at b (0 when they score alike). */
-	double evidence(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const;
-
 	struct Ambiguity
 	{
 		bool ambiguous = false;
 		/** The solutions the points do not reject, at their best grid
 		 * neighbours. */
 		std::vector<mrpt::poses::CPose2D> rivals;
-		double z = 0;  //!< evidence for the estimate over the first rival
 		std::string reason;	 //!< about the first rival
 	};
 	/** Whether `estimate` (the matcher's refinement of r.best) is
 	 * ambiguous: a contender of `r` (or r.best itself), distinct from it,
 	 * inside the 99% region of `guess` (the search's window covariance),
-	 * and at its best grid neighbour, that the points do not reject
-	 * (evidence(estimate, contender) < ambiguityZ). */
+	 * and at its best grid neighbour, that the points do not reject: the
+	 * paired evidence for the estimate (evidence()) is below ambiguityZ. */
 	Ambiguity ambiguity(const Result& r, const mrpt::poses::CPose2D& estimate,
 		const mrpt::poses::CPosePDFGaussian& guess) const;
 
@@ -149,9 +137,19 @@ class CorrelativeScanSearch
 	std::vector<Result::Contender> branchAndBound(
 		const mrpt::poses::CPosePDFGaussian& guess, Result& r) const;
 	/** The grid neighbour of `o` (one step in x, y, yaw) with the best
-	 * sharp score. */
-	mrpt::poses::CPose2D bestGridNeighbour(const Result& r, const mrpt::poses::CPose2D& o) const;
-	/** Every current point's sharp score at `pose`. */
+	 * sharp score; its points' sharp scores in `scores`. */
+	mrpt::poses::CPose2D bestGridNeighbour(
+		const Result& r, const mrpt::poses::CPose2D& o, std::vector<double>& scores) const;
+	/** The paired evidence for a over b from their points' sharp scores:
+	 * z = sum(d_i) / sqrt(sum(d_i^2)), d_i = a_i - b_i (0 when they score
+	 * alike). Points on a corridor's walls score alike under both and do
+	 * not count; a door frame that only a explains does. */
+	static double evidence(const std::vector<double>& a, const std::vector<double>& b);
+	/** Index of table cell (u, v) in the row-major tables, -1 outside. */
+	long cellIndex(int u, int v) const;
+	/** Every current point's sharp score at `pose`: exp(-d^2 / 2 sigma^2),
+	 * d its distance to the reference surface, sigma the larger of
+	 * sharp_sigma and twice the reference's point scatter. */
 	void sharpScores(const mrpt::poses::CPose2D& pose, std::vector<double>& out) const;
 
 	// The lookup tables, row-major, m_width x m_height cells of

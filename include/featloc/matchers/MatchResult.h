@@ -23,7 +23,8 @@ struct MatchResult
 	 * guess for the guess's covariance (guess_gate_chi2): `estimate` is the
 	 * converged motion. */
 	bool rejectedByGuessGate = false;
-	/** What kind of failure (empty on success), for the counts of
+	/** What kind of failure (empty on success; set on every failure that
+	 * ScanMatcher::match returns), for the counts of
 	 * summary.json and featloc-bench: "too_few_points", "no_overlap" (the
 	 * coarse search), "ambiguous" (another solution explains the scan about
 	 * as well as the estimate), "guess_gate", or "matcher" (the matcher's
@@ -41,10 +42,9 @@ struct MatchResult
 	 * started from every segment). Counted by summary.json and
 	 * featloc-bench. */
 	std::string matcherFallback;
-	/** The coarse search (CorrelativeScanSearch) when it ran: the share of
-	 * points on the reference at its best pose and at its best contender
-	 * (0 when it did not run or found none). */
-	double coarseScore = 0, coarseSecondScore = 0;
+	/** The share of points on the reference at the coarse search's best
+	 * pose (CorrelativeScanSearch; 0 when it did not run). */
+	double coarseScore = 0;
 	/** What the gates add to the guess's covariance (ScanMatcher::match's
 	 * gateAllowance; zero when none). */
 	mrpt::math::CMatrixDouble33 gateAllowance;
