@@ -5,7 +5,7 @@
 # Run by ctest (test "Layers.IncludesPointDown").
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-LAYERS=(core config math io scan features matchers stereo odometry ekf estimators plot eval output pipeline live sim app gui)
+LAYERS=(core config math io scan features matchers stereo odometry ekf estimators localization plot eval output pipeline live sim app gui)
 rank() { local i; for i in "${!LAYERS[@]}"; do [ "${LAYERS[$i]}" = "$1" ] && { echo "$i"; return; }; done; echo -1; }
 bad=0
 while IFS= read -r f; do

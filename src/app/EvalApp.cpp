@@ -42,6 +42,9 @@ int EvalApp::main(int argc, char** argv)
 	TCLAP::ValueArg<double> argMaxDt(
 		"", "max-dt", "Max time difference when associating poses [s]", false,
 		0.02, "SECONDS", cmd);
+	TCLAP::SwitchArg argNoAlign("", "no-align",
+		"ATE in the reference's frame, without aligning the estimate (localization in a known map)",
+		cmd);
 	TCLAP::ValueArg<std::string> argRefFormat(
 		"", "reference-format",
 		"auto | tum | txyyaw | poses_cov | relations | mrpt_path | kitti (default auto)", false,
@@ -69,7 +72,7 @@ int EvalApp::main(int argc, char** argv)
 		return 0;
 	}
 	const Trajectory est = TrajectoryFile::read(argEst.getValue());
-	const TrajectoryEvaluator evaluator(argMaxDt.getValue());
+	const TrajectoryEvaluator evaluator(argMaxDt.getValue(), !argNoAlign.getValue());
 
 	EvaluationReport rep;
 	if (refFormat == TrajectoryFile::Format::Relations)

@@ -3,6 +3,8 @@
 #include "featloc/config/ConfigValues.h"
 #include "featloc/core/ConfigError.h"
 #include "featloc/estimators/PoseEstimatorFactory.h"
+#include "featloc/localization/LocalizationMapFile.h"
+#include "featloc/localization/MapScanTracker.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/stereo/StereoLandmarkExtractorFactory.h"
 
@@ -29,6 +31,28 @@ RunConfiguration RunConfiguration::load(const mrpt::config::CConfigFileBase& cfg
 		{
 			config::fail(cfg, StereoLandmarkExtractorFactory::kSection, "class", e.what());
 		}
+	}
+	rc.localization.loadFromConfigFile(cfg, LocalizationOptions::kSection);
+	if (rc.localization.enabled())
+	{
+		if (!rc.estimator->fusesAbsolutePoses())
+			config::fail(cfg, LocalizationOptions::kSection, "map",
+				"localization in a map needs [Pipeline] estimator = ekf (estimator '" +
+					rc.estimator->name() + "' cannot fuse absolute poses)");
+		ScanMatcher::Ptr mapMatcher;
+		try
+		{
+			mapMatcher = ScanMatcherFactory::create(rc.localization.matcher_class.empty()
+					? rc.matcher->className()
+					: rc.localization.matcher_class);
+		}
+		catch (const ConfigError& e)
+		{
+			config::fail(cfg, LocalizationOptions::kSection, "matcher_class", e.what());
+		}
+		mapMatcher->loadParams(cfg, ScanMatcherFactory::paramsSection(mapMatcher->className()));
+		auto map = std::make_shared<LocalizationMap>(LocalizationMapFile::load(rc.localization));
+		rc.mapTracker = std::make_shared<MapScanTracker>(map, mapMatcher, rc.localization);
 	}
 	return rc;
 }
@@ -77,6 +101,7 @@ void RunConfiguration::save(mrpt::config::CConfigFileBase& cfg) const
 		else
 			StereoLandmarkExtractorFactory::create(name)->saveParams(cfg, section);
 	}
+	localization.saveToConfigFile(cfg, LocalizationOptions::kSection);
 	output.saveToConfigFile(cfg, OutputOptions::kSection);
 	evaluation.saveToConfigFile(cfg, EvaluationOptions::kSection);
 }

@@ -88,6 +88,16 @@ void RunReport::printSummary(const RunStats& s)
 		for (const auto& ex : s.failureExamples) std::printf("    failed: %s\n", ex.c_str());
 		for (const auto& ex : s.rejectionExamples) std::printf("    not used: %s\n", ex.c_str());
 	}
+	if (!s.localizationMap.empty())
+	{
+		const ErrorStats t = ErrorStats::of(s.mapMatchTimes);
+		std::printf(
+			"  map %s:\n    %zu scans matched against it: %zu used, %zu failed, %zu rejected by "
+			"the gate; %.2f ms per map match (median)\n",
+			s.localizationMap.c_str(), s.mapMatchesAttempted, s.mapMatchesUsed, s.mapMatchFailures,
+			s.mapMatchesRejected, t.median * 1e3);
+		for (const auto& ex : s.mapRejectionExamples) std::printf("    not used: %s\n", ex.c_str());
+	}
 	if (!s.estimatorTimes.empty())
 	{
 		const ErrorStats e = ErrorStats::of(s.estimatorTimes);
@@ -114,7 +124,7 @@ void RunReport::evaluateAndPlot(
 		TrajectoryPlot::write(folder.stagedFile("trajectory.png"), Trajectory{}, est, {}, title);
 		return;
 	}
-	const TrajectoryEvaluator evaluator(rc.evaluation.max_time_difference);
+	const TrajectoryEvaluator evaluator(rc.evaluation.max_time_difference, rc.evaluation.align);
 	const EvaluationReport rep = evaluator.evaluate(reference->trajectory, est);
 	std::printf("against %s:\n%s", reference->description.c_str(), rep.toText().c_str());
 	summary.writeWithEvaluation(stats, rep.toJson());

@@ -185,6 +185,32 @@ EkfLocalizer::MotionUpdate EkfLocalizer::testRelativeMotion(
 	return out;
 }
 
+EkfLocalizer::MotionUpdate EkfLocalizer::updateAbsolutePose(
+	const mrpt::poses::CPosePDFGaussian& z, double gateChi2)
+{
+	const std::vector<Eigen::Index> cols = {kRobot, kRobot + 1, kRobot + 2};
+	const Eigen::MatrixXd H = Eigen::Matrix3d::Identity();
+	Eigen::VectorXd nu(3);
+	nu << z.mean.x() - m_x[kRobot], z.mean.y() - m_x[kRobot + 1],
+		mrpt::math::wrapToPi(z.mean.phi() - m_x[kRobot + 2]);
+	const Eigen::Matrix3d S = P()(cols, cols) + z.cov.asEigen();
+	MotionUpdate out;
+	out.mahalanobis2 = nu.dot(S.ldlt().solve(nu));
+	out.used = out.mahalanobis2 <= gateChi2;
+	if (!out.used)
+	{
+		char buf[200];
+		std::snprintf(buf, sizeof(buf),
+			"the map match disagrees with the prediction (Mahalanobis^2 %.1f > gate_chi2 %.1f: "
+			"%.3f m, %.2f deg apart)",
+			out.mahalanobis2, gateChi2, std::hypot(nu[0], nu[1]), mrpt::RAD2DEG(nu[2]));
+		out.reason = buf;
+		return out;
+	}
+	update(cols, H, nu, z.cov.asEigen());
+	return out;
+}
+
 EkfLocalizer::MotionUpdate EkfLocalizer::updateRelativeMotion(
 	const mrpt::poses::CPosePDFGaussian& z)
 {

@@ -54,6 +54,15 @@ bool EkfEstimator::process(const EstimationStep& step, const MatchResult* match)
 	return used;
 }
 
+bool EkfEstimator::fuseAbsolutePose(
+	const mrpt::poses::CPosePDFGaussian& z, double gateChi2, std::string& reason)
+{
+	const auto u = m_filter.updateAbsolutePose(z, gateChi2);
+	reason = u.reason;
+	m_pose = m_filter.robotPose();
+	return u.used;
+}
+
 std::vector<EstimatedLandmark> EkfEstimator::landmarks() const
 {
 	auto out = m_filter.landmarks();

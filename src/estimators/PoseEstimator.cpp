@@ -1,5 +1,7 @@
 #include "featloc/estimators/PoseEstimator.h"
 
+#include <stdexcept>
+
 #include "featloc/core/ConfigError.h"
 
 namespace featloc
@@ -18,5 +20,10 @@ void PoseEstimator::setStereoLandmarks(std::shared_ptr<StereoLandmarkExtractor>)
 	throw ConfigError(
 		"[StereoLandmarks] class is set but estimator '" + name() +
 		"' keeps no landmarks: use [Pipeline] estimator = ekf");
+}
+
+bool PoseEstimator::fuseAbsolutePose(const mrpt::poses::CPosePDFGaussian&, double, std::string&)
+{
+	throw std::logic_error("estimator '" + name() + "' does not fuse absolute poses");
 }
 }  // namespace featloc

@@ -10,6 +10,7 @@ void EvaluationOptions::loadFromConfigFile(
 	using namespace featloc::config;
 	read(c, s, "ground_truth", ground_truth);
 	read(c, s, "max_time_difference", max_time_difference);
+	read(c, s, "align", align);
 	require(max_time_difference > 0, c, s, "max_time_difference", "> 0");
 }
 
@@ -21,5 +22,8 @@ void EvaluationOptions::saveToConfigFile(
 		"ground-truth trajectory (TUM or t x y yaw); empty = none");
 	write(c, s, "max_time_difference", max_time_difference,
 		"[s] max time gap when associating estimate and ground truth");
+	write(c, s, "align", align,
+		"align the estimate to the ground truth before the ATE (false: in the ground truth's "
+		"frame, for localization in a known map)");
 }
 }  // namespace featloc

@@ -54,11 +54,13 @@ std::string EvaluationReport::toText() const
 			buf, sizeof(buf),
 			"reference %s (%zu poses), estimate %s (%zu poses): %zu "
 			"associated %s\n"
-			"alignment applied to the estimate: x %.4f m, y %.4f m, yaw %.3f "
+			"%s: x %.4f m, y %.4f m, yaw %.3f "
 			"deg\n",
 			reference.c_str(), referencePoses, estimate.c_str(), estimatePoses, associated,
 			pairedByIndex ? "row by row (no times on one side)"
 						  : ("within " + std::to_string(maxTimeDifference).substr(0, 5) + " s").c_str(),
+			aligned ? "alignment applied to the estimate"
+					: "no alignment (the estimate is in the reference's frame)",
 			alignment.x, alignment.y,
 			mrpt::RAD2DEG(alignment.phi));
 		out << buf << header;
@@ -119,6 +121,7 @@ std::string EvaluationReport::toJson() const
 			{"x", alignment.x},
 			{"y", alignment.y},
 			{"yaw_deg", mrpt::RAD2DEG(alignment.phi)}};
+		j["aligned"] = aligned;
 		j["ate_m"] = statsJson(ate);
 		j["ate_rotation"] = rotationJson(ateRotation);
 		j["rpe_translation_m"] = statsJson(rpeTranslation);

@@ -51,8 +51,8 @@ std::pair<double, double> relativeError(
 }
 }  // namespace
 
-TrajectoryEvaluator::TrajectoryEvaluator(double maxTimeDifference)
-	: m_maxDt(maxTimeDifference)
+TrajectoryEvaluator::TrajectoryEvaluator(double maxTimeDifference, bool align)
+	: m_maxDt(maxTimeDifference), m_align(align)
 {
 }
 
@@ -145,13 +145,17 @@ EvaluationReport TrajectoryEvaluator::evaluate(
 			static_cast<float>(rp.x - rx), static_cast<float>(rp.y - ry), 0.0f,
 			static_cast<float>(ep.x - ex), static_cast<float>(ep.y - ey), 0.0f);
 	}
-	mrpt::math::TPose2D centred;
-	mrpt::tfest::se2_l2(corrs, centred);
-	// ref - rc = R (est - ec) + t  =>  ref = R est + (t + rc - R ec)
-	const double c = std::cos(centred.phi), s = std::sin(centred.phi);
-	rep.alignment = {
-		centred.x + rx - (c * ex - s * ey), centred.y + ry - (s * ex + c * ey),
-		centred.phi};
+	rep.aligned = m_align;
+	if (m_align)
+	{
+		mrpt::math::TPose2D centred;
+		mrpt::tfest::se2_l2(corrs, centred);
+		// ref - rc = R (est - ec) + t  =>  ref = R est + (t + rc - R ec)
+		const double c = std::cos(centred.phi), s = std::sin(centred.phi);
+		rep.alignment = {
+			centred.x + rx - (c * ex - s * ey), centred.y + ry - (s * ex + c * ey),
+			centred.phi};
+	}
 	const CPose2D align(rep.alignment);
 
 	std::vector<double> pos, rot, rpeT, rpeR;

@@ -34,9 +34,8 @@ void addPieces(
 	}
 }
 
-std::vector<MapWall> loadWorldFile(const std::string& path)
+void openWorldFile(const std::string& path, mrpt::config::CConfigFile& cfg)
 {
-	mrpt::config::CConfigFile cfg;
 	try
 	{
 		cfg.setFileName(path);
@@ -46,6 +45,12 @@ std::vector<MapWall> loadWorldFile(const std::string& path)
 		// MRPT's preprocessor ($env{}, $eval{}) throws without the file's name.
 		throw InputError(path + ": " + exceptionText(e));
 	}
+}
+
+std::vector<MapWall> loadWorldFile(const std::string& path)
+{
+	mrpt::config::CConfigFile cfg;
+	openWorldFile(path, cfg);
 	std::vector<std::string> sections;
 	cfg.getAllSections(sections);
 	std::vector<MapWall> out;
@@ -103,24 +108,61 @@ std::vector<MapWall> loadSegmentList(const std::string& path, std::istream& in)
 	if (out.empty()) throw InputError(path + ": no walls (expected lines 'x1 y1 x2 y2')");
 	return out;
 }
+
+/** Whether `in` holds a world file (sections) rather than a segment list
+ * (only numbers); leaves `in` at its start. */
+bool isWorldFile(std::ifstream& in)
+{
+	std::string line;
+	bool world = false;
+	while (std::getline(in, line))
+	{
+		const auto first = line.find_first_not_of(" \t\r");
+		if (first == std::string::npos || line[first] == '#' || line[first] == '%' || line[first] == ';')
+			continue;
+		world = line[first] == '[';
+		break;
+	}
+	in.clear();
+	in.seekg(0);
+	return world;
+}
 }  // namespace
 
 std::vector<MapWall> WallMapFile::load(const std::string& path)
 {
 	std::ifstream in(path);
 	if (!in) throw InputError("cannot read the map '" + path + "'");
-	// A world file has sections; a segment list has only numbers.
-	std::string line;
-	while (std::getline(in, line))
+	return isWorldFile(in) ? loadWorldFile(path) : loadSegmentList(path, in);
+}
+
+std::vector<MapCircle> WallMapFile::loadCircles(const std::string& path)
+{
+	std::ifstream in(path);
+	if (!in) throw InputError("cannot read the map '" + path + "'");
+	if (!isWorldFile(in)) return {};
+	mrpt::config::CConfigFile cfg;
+	openWorldFile(path, cfg);
+	std::vector<std::string> sections;
+	cfg.getAllSections(sections);
+	std::vector<MapCircle> out;
+	try
 	{
-		const auto first = line.find_first_not_of(" \t\r");
-		if (first == std::string::npos || line[first] == '#' || line[first] == '%' || line[first] == ';')
-			continue;
-		if (line[first] == '[') return loadWorldFile(path);
-		break;
+		for (const auto& s : sections)
+		{
+			if (s.rfind("Obstacle.", 0) != 0) continue;
+			std::vector<std::vector<double>> rows;
+			config::readRows(cfg, s, "circle", rows, {3});
+			if (rows.empty()) continue;
+			config::require(rows.size() == 1 && rows[0][2] > 0, cfg, s, "circle",
+				"one row [cx cy r] with r > 0");
+			out.push_back({{rows[0][0], rows[0][1]}, rows[0][2], s});
+		}
 	}
-	in.clear();
-	in.seekg(0);
-	return loadSegmentList(path, in);
+	catch (const ConfigError& e)
+	{
+		throw InputError(e.what());
+	}
+	return out;
 }
 }  // namespace featloc

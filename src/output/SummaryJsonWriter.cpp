@@ -52,6 +52,19 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 			{"observations_used", s.stereoUpdates},
 			{"time_per_pair_s", {{"mean", st.mean}, {"median", st.median}, {"p95", st.p95}, {"max", st.max}}}};
 	}
+	if (!s.localizationMap.empty())
+	{
+		const ErrorStats mt = ErrorStats::of(s.mapMatchTimes);
+		j["localization"] = {
+			{"map", s.localizationMap},
+			{"map_matches", s.mapMatchesAttempted},
+			{"map_matches_used", s.mapMatchesUsed},
+			{"map_match_failures", s.mapMatchFailures},
+			{"map_match_failures_by_kind", s.mapMatchFailuresByKind},
+			{"map_matches_rejected_by_gate", s.mapMatchesRejected},
+			{"rejection_examples", s.mapRejectionExamples},
+			{"time_per_map_match_s", {{"mean", mt.mean}, {"median", mt.median}, {"p95", mt.p95}, {"max", mt.max}}}};
+	}
 	j["failure_examples"] = s.failureExamples;
 	j["rejection_examples"] = s.rejectionExamples;
 	const ErrorStats t = ErrorStats::of(s.matchTimes);

@@ -70,6 +70,14 @@ Pipeline::Pipeline(
 			"' needs a scan matcher");
 }
 
+void Pipeline::setMapTracker(std::shared_ptr<MapScanTracker> tracker)
+{
+	if (tracker && !m_estimator->fusesAbsolutePoses())
+		throw std::invalid_argument(
+			"Pipeline: estimator '" + m_estimator->name() + "' cannot fuse poses in a map");
+	m_mapTracker = std::move(tracker);
+}
+
 RunStats Pipeline::run(
 	EntrySource& source, const std::vector<RunOutput*>& outputs, ProgressBar* progress,
 	const std::atomic<bool>* stop)
@@ -80,6 +88,7 @@ RunStats Pipeline::run(
 	stats.rawlog = rawlogPath;
 	stats.estimator = m_estimator->name();
 	if (m_estimator->usesScanMatcher()) stats.matcherClass = m_matcher->className();
+	if (m_mapTracker) stats.localizationMap = m_mapTracker->map().describe();
 	m_keyframeScan.reset();
 	m_odometryCheck = OdometryCovarianceCheck(
 		m_odometry.covariance_check_window, m_odometry.covariance_check_quantile);
@@ -242,7 +251,12 @@ void Pipeline::processStep(
 					" (entry #" + std::to_string(step.entryIndex) + "): " + fallbackReason);
 		}
 	}
-	if (step.scan && (!m_keyframeScan || isNewKeyframe(matchPtr)))
+	MapScanTracker::Result mapResult;
+	bool usedMapMatch = false;
+	std::string mapReason;
+	if (m_mapTracker && step.scan) trackInMap(step, mapResult, usedMapMatch, mapReason, stats);
+	const bool keyframe = step.scan && (!m_keyframeScan || isNewKeyframe(matchPtr));
+	if (keyframe)
 	{
 		m_keyframeScan = step.scan;
 		m_keyframePose = m_estimator->pose().mean;
@@ -260,9 +274,35 @@ void Pipeline::processStep(
 	stats.landmarksInMap = landmarks.size();
 	const StereoStepResult* stereo = m_estimator->lastStereo();
 	if (stereo) countStereo(*stereo, stats);
-	const StepRecord record{
-		step, m_estimator->pose(), matchPtr, usedMatch, &landmarks, stereo, fallbackReason};
+	const bool mapped = m_mapTracker && step.scan;
+	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch, &landmarks, stereo,
+		fallbackReason, keyframe, mapped ? &mapResult.match : nullptr, usedMapMatch, mapReason};
 	for (auto* o : outputs) o->onStep(record);
+}
+
+void Pipeline::trackInMap(const EstimationStep& step, MapScanTracker::Result& r, bool& used,
+	std::string& reason, RunStats& stats)
+{
+	r = m_mapTracker->track(*step.scan, m_estimator->pose());
+	stats.mapMatchesAttempted++;
+	stats.mapMatchTimes.push_back(r.match.timeSeconds);
+	if (!r.match.success)
+	{
+		stats.mapMatchFailures++;
+		stats.mapMatchFailuresByKind[r.match.failureKind]++;
+		reason = "the map match failed: " + r.match.failureReason;
+		return;
+	}
+	used = m_estimator->fuseAbsolutePose(r.pose, m_mapTracker->options().gate_chi2, reason);
+	if (used)
+		stats.mapMatchesUsed++;
+	else
+	{
+		stats.mapMatchesRejected++;
+		if (stats.mapRejectionExamples.size() < kMaxFailureExamples)
+			stats.mapRejectionExamples.push_back("scan " + std::to_string(step.scanIndex) +
+				" (entry #" + std::to_string(step.entryIndex) + "): " + reason);
+	}
 }
 
 MatchResult Pipeline::matchToKeyframe(const EstimationStep& step)

@@ -26,10 +26,24 @@ void PipelineOptions::loadFromConfigFile(
 	read(c, s, "initial_pose", pose);
 	require(pose.size() == 3, c, s, "initial_pose", "three numbers [x y yaw_deg]");
 	initial_pose = {pose[0], pose[1], mrpt::DEG2RAD(pose[2])};
+	std::vector<double> sigma = {initial_pose_sigma[0], initial_pose_sigma[1],
+		mrpt::RAD2DEG(initial_pose_sigma[2])};
+	read(c, s, "initial_pose_sigma", sigma);
+	require(sigma.size() == 3 && sigma[0] >= 0 && sigma[1] >= 0 && sigma[2] >= 0, c, s,
+		"initial_pose_sigma", "three numbers >= 0 [sigma_x sigma_y sigma_yaw_deg]");
+	initial_pose_sigma = {sigma[0], sigma[1], mrpt::DEG2RAD(sigma[2])};
 	read(c, s, "keyframe_distance", keyframe_distance);
 	readDegrees(c, s, "keyframe_angle_DEG", keyframe_angle);
 	require(keyframe_distance >= 0, c, s, "keyframe_distance", ">= 0");
 	require(keyframe_angle >= 0, c, s, "keyframe_angle_DEG", ">= 0");
+}
+
+mrpt::poses::CPosePDFGaussian PipelineOptions::initialPose() const
+{
+	mrpt::math::CMatrixDouble33 cov;
+	for (int i = 0; i < 3; i++) cov(i, i) = initial_pose_sigma[i] * initial_pose_sigma[i];
+	return mrpt::poses::CPosePDFGaussian(
+		mrpt::poses::CPose2D(initial_pose[0], initial_pose[1], initial_pose[2]), cov);
 }
 
 void PipelineOptions::saveToConfigFile(
@@ -43,6 +57,11 @@ void PipelineOptions::saveToConfigFile(
 		std::vector<double>{
 			initial_pose[0], initial_pose[1], mrpt::RAD2DEG(initial_pose[2])},
 		"[m m deg] robot pose at the first scan");
+	write(c, s, "initial_pose_sigma",
+		std::vector<double>{initial_pose_sigma[0], initial_pose_sigma[1],
+			mrpt::RAD2DEG(initial_pose_sigma[2])},
+		"[m m deg] its standard deviations (0: the run's exact origin; in a known map: how well "
+		"the start is known)");
 	write(c, s, "keyframe_distance", keyframe_distance,
 		"[m] new reference scan after this motion (0 and angle 0: every scan)");
 	writeDegrees(c, s, "keyframe_angle_DEG", keyframe_angle,

@@ -4,6 +4,7 @@
 #include "featloc/estimators/PoseEstimator.h"
 #include "featloc/eval/EvaluationOptions.h"
 #include "featloc/io/InputOptions.h"
+#include "featloc/localization/LocalizationOptions.h"
 #include "featloc/matchers/ScanMatcher.h"
 #include "featloc/odometry/OdometryOptions.h"
 #include "featloc/output/OutputOptions.h"
@@ -12,6 +13,8 @@
 
 namespace featloc
 {
+class MapScanTracker;
+
 /** Everything one featloc-run reads from its ini file: one option struct
  * per section, plus the scan matcher named in [ScanMatcher] with its
  * parameters. */
@@ -28,6 +31,11 @@ struct RunConfiguration
 	/** [StereoLandmarks] class, its parameters loaded, handed to the
 	 * estimator; null when the class is empty (the default). */
 	std::shared_ptr<StereoLandmarkExtractor> stereo;
+	LocalizationOptions localization;
+	/** With [Localization] map: the map read and a matcher of
+	 * [Localization] matcher_class (its parameters from its
+	 * [ScanMatcher.<Class>] section) to match scans against it; else null. */
+	std::shared_ptr<MapScanTracker> mapTracker;
 
 	/** Loads every section. Throws ConfigError on a bad value. (Unknown keys
 	 * are checked by the caller: TrackedConfig::requireAllKeysRead.) */

@@ -108,6 +108,12 @@ class EkfLocalizer
 		const mrpt::math::CMatrixDouble33& gateAllowance = {}) const;
 	/** Gate and fuse at once. */
 	MotionUpdate updateRelativeMotion(const mrpt::poses::CPosePDFGaussian& motion);
+	/** Gate and fuse an absolute robot pose in the world (map) frame, with
+	 * its covariance: a scan matched against a known map (MapScanTracker).
+	 * H is the identity on the robot's block; the clones and landmarks are
+	 * corrected through their correlations with the robot. Gated against
+	 * the state without the held match, at Mahalanobis^2 `gateChi2`. */
+	MotionUpdate updateAbsolutePose(const mrpt::poses::CPosePDFGaussian& z, double gateChi2);
 	/** Keeps `motion` (which passed testRelativeMotion) as the keyframe
 	 * interval's match, replacing any held one. */
 	void holdRelativeMotion(const mrpt::poses::CPosePDFGaussian& motion);

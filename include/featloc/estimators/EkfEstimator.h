@@ -41,6 +41,9 @@ class EkfEstimator : public PoseEstimator
 	bool keepsLandmarks() const override { return true; }
 	std::vector<EstimatedLandmark> landmarks() const override;
 	std::string lastFallbackReason() const override { return m_reason; }
+	bool fusesAbsolutePoses() const override { return true; }
+	bool fuseAbsolutePose(
+		const mrpt::poses::CPosePDFGaussian& z, double gateChi2, std::string& reason) override;
 	void setStereoLandmarks(std::shared_ptr<StereoLandmarkExtractor> extractor) override
 	{
 		m_stereo = std::move(extractor);

@@ -93,6 +93,16 @@ class PoseEstimator : public mrpt::rtti::CObject
 	 * (no pair, or no extractor). */
 	virtual const StereoStepResult* lastStereo() const { return nullptr; }
 
+	/** Whether the estimator can fuse absolute poses (localization in a
+	 * known map, [Localization] map). */
+	virtual bool fusesAbsolutePoses() const { return false; }
+	/** After process(): fuses `z`, the robot's pose now in the map frame
+	 * with its covariance, unless its Mahalanobis^2 against the estimate
+	 * exceeds `gateChi2`. Returns whether it was used; `reason` says why
+	 * not. The default throws std::logic_error (fusesAbsolutePoses()). */
+	virtual bool fuseAbsolutePose(
+		const mrpt::poses::CPosePDFGaussian& z, double gateChi2, std::string& reason);
+
 	/** Why the last process() did not use the match ("" if it did, or
 	 * there was none). */
 	virtual std::string lastFallbackReason() const { return ""; }

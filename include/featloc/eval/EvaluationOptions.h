@@ -18,6 +18,10 @@ struct EvaluationOptions : public mrpt::config::CLoadableOptions
 	/** [s] estimate and ground-truth rows further apart in time are not
 	 * associated. */
 	double max_time_difference = 0.02;
+	/** Align the estimate to the ground truth before the ATE (a run
+	 * relative to its start); false: compare in the ground truth's frame
+	 * (localization in a known map, whose frame the ground truth shares). */
+	bool align = true;
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& c,

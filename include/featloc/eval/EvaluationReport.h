@@ -25,6 +25,9 @@ struct EvaluationReport
 	/** Rigid SE(2) transform applied to the estimate (least squares on the
 	 * associated positions, Horn's method via mrpt::tfest::se2_l2). */
 	mrpt::math::TPose2D alignment;
+	/** False: no alignment (identity), the estimate is taken in the
+	 * reference's frame (localization in a known map). */
+	bool aligned = true;
 	ErrorStats ate;	 //!< absolute position error after alignment [m]
 	ErrorStats ateRotation;	 //!< absolute yaw error after alignment [rad]
 	ErrorStats rpeTranslation;	//!< consecutive associated poses [m]

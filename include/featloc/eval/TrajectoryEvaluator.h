@@ -24,7 +24,9 @@ namespace featloc
 class TrajectoryEvaluator
 {
    public:
-	explicit TrajectoryEvaluator(double maxTimeDifference);
+	/** `align` false: the ATE without alignment, for estimates in the
+	 * reference's frame (localization in a known map). */
+	explicit TrajectoryEvaluator(double maxTimeDifference, bool align = true);
 
 	/** Index pairs (reference, estimate), in increasing time. */
 	std::vector<std::pair<size_t, size_t>> associate(
@@ -47,5 +49,6 @@ class TrajectoryEvaluator
 		const std::vector<std::pair<size_t, size_t>>& pairs, EvaluationReport& rep) const;
 
 	double m_maxDt;
+	bool m_align;
 };
 }  // namespace featloc

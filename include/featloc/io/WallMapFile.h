@@ -15,6 +15,15 @@ struct MapWall
 	double length() const { return (b - a).norm(); }
 };
 
+/** A round obstacle of a world file (a pillar, a bin): not a plane, but
+ * what a laser sees of it belongs in a map to localize in. */
+struct MapCircle
+{
+	Eigen::Vector2d centre = Eigen::Vector2d::Zero();  //!< [m]
+	double radius = 0;	//!< [m]
+	std::string name;  //!< "Obstacle.pillar"
+};
+
 /** Reads the walls of a known 2-D map, in one of two formats:
  *  - a featloc-sim world file (doc/simulator.md): every piece of every
  *    `[Wall.<name>] polyline` (closed when `closed = true`) and every side
@@ -28,5 +37,8 @@ class WallMapFile
 {
    public:
 	static std::vector<MapWall> load(const std::string& path);
+	/** The round obstacles (`[Obstacle.<name>] circle = [cx cy r]`) of a
+	 * world file; none for a segment list. Errors as load(). */
+	static std::vector<MapCircle> loadCircles(const std::string& path);
 };
 }  // namespace featloc

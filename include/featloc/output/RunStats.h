@@ -54,6 +54,15 @@ struct RunStats
 	 * (e.g. the EKF's gate): "scan 123: reason". */
 	std::vector<std::string> rejectionExamples;
 	std::vector<double> matchTimes;	 //!< [s] per match
+	/** Localization in a known map ([Localization] map): the map (its
+	 * description), scans matched against it, matches used by the
+	 * estimator, failed, and rejected by its gate (with examples). */
+	std::string localizationMap;
+	size_t mapMatchesAttempted = 0, mapMatchesUsed = 0, mapMatchFailures = 0,
+		   mapMatchesRejected = 0;
+	std::map<std::string, size_t> mapMatchFailuresByKind;
+	std::vector<std::string> mapRejectionExamples;
+	std::vector<double> mapMatchTimes;	//!< [s] per map match
 	std::vector<unsigned int> matchIterations;
 	/** [s] per step after the first: the estimator's own work (prediction,
 	 * fusion, landmarks), the matcher's time excluded. */

@@ -32,5 +32,13 @@ struct StepRecord
 	/** Why the estimator did not use a match it was given (its gate), or
 	 * empty. */
 	std::string fallbackReason;
+	/** The scan became the reference of the next matches (a keyframe). */
+	bool keyframe = false;
+	/** Localization in a known map: this scan matched against the map
+	 * (its estimate is the correction of the predicted pose, robot
+	 * frame), or nullptr; whether the estimator used it, and why not. */
+	const MatchResult* mapMatch = nullptr;
+	bool usedMapMatch = false;
+	std::string mapReason;
 };
 }  // namespace featloc

@@ -6,6 +6,7 @@
 #include "featloc/estimators/PoseEstimator.h"
 #include "featloc/io/EntrySource.h"
 #include "featloc/io/InputOptions.h"
+#include "featloc/localization/MapScanTracker.h"
 #include "featloc/matchers/ScanMatcher.h"
 #include "featloc/odometry/OdometryCovarianceCheck.h"
 #include "featloc/odometry/OdometryOptions.h"
@@ -36,6 +37,11 @@ class Pipeline
 		InputOptions input, OdometryOptions odometry, PipelineOptions options,
 		PoseEstimator::Ptr estimator, ScanMatcher::Ptr matcher);
 
+	/** Localization in a known map: every scan is also matched against the
+	 * map around the estimate and the estimator fuses it as an absolute
+	 * pose (it must fusesAbsolutePoses()). Before run(). */
+	void setMapTracker(std::shared_ptr<MapScanTracker> tracker);
+
 	/** Processes the whole source. Every output receives every entry and
 	 * step and then finish(), once, also when the run fails; the error is
 	 * then rethrown. Throws InputError when the log yields no scan.
@@ -57,6 +63,10 @@ class Pipeline
 	PipelineOptions m_options;
 	PoseEstimator::Ptr m_estimator;
 	ScanMatcher::Ptr m_matcher;
+	std::shared_ptr<MapScanTracker> m_mapTracker;
+	/** The step's scan against the map: fused by the estimator, counted. */
+	void trackInMap(const EstimationStep& step, MapScanTracker::Result& result, bool& used,
+		std::string& reason, RunStats& stats);
 	bool isNewKeyframe(const MatchResult* match) const;
 	/** The step's odometry when it came from format #1 actions, else zero. */
 	static mrpt::poses::CPose2D actionStep(const EstimationStep& step);

@@ -19,12 +19,14 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	/** Robot pose at the first scan: x [m], y [m], yaw [rad] in memory
 	 * (degrees in the file). */
 	std::vector<double> initial_pose = {0, 0, 0};
-	/** initial_pose as a pose with zero covariance (the origin of the run). */
-	mrpt::poses::CPosePDFGaussian initialPose() const
-	{
-		return mrpt::poses::CPosePDFGaussian(
-			mrpt::poses::CPose2D(initial_pose[0], initial_pose[1], initial_pose[2]));
-	}
+	/** Standard deviations of initial_pose: x [m], y [m], yaw [rad] in
+	 * memory (degrees in the file). Zero: the run's origin, exact (motion
+	 * relative to the start); in a known map ([Localization] map), how well
+	 * the start in the map is known, so the first map matches can correct
+	 * it. */
+	std::vector<double> initial_pose_sigma = {0, 0, 0};
+	/** initial_pose with the covariance of initial_pose_sigma. */
+	mrpt::poses::CPosePDFGaussian initialPose() const;
 	/** The scan matcher matches each scan against a reference (keyframe)
 	 * scan, replaced when the estimated motion since it reaches
 	 * keyframe_distance [m] or keyframe_angle [rad], or when a match fails.

@@ -1,0 +1,58 @@
+#pragma once
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <string>
+#include <vector>
+
+namespace featloc
+{
+/** `[Localization]`: localization in a known map (issue "Localization in a
+ * known map"). With `map` empty the run estimates motion relative to its
+ * start, as before; with a map every scan is also matched against the map
+ * around the predicted pose and the EKF fuses the result as an absolute
+ * pose (MapScanTracker), so the run does not drift. */
+struct LocalizationOptions : public mrpt::config::CLoadableOptions
+{
+	static constexpr const char* kSection = "Localization";
+
+	/** The map: an MRPT `.simplemap(.gz)` (a run's map.simplemap, icp-slam's
+	 * output), an MRPT `.gridmap(.gz)`, an occupancy image (`.png`, `.pgm`,
+	 * `.bmp`, `.jpg`: black occupied, white free, with image_resolution and
+	 * image_origin as pf-localization takes it), or a featloc-sim world file
+	 * / wall list (its walls and obstacles). Relative: to the ini's folder.
+	 * Empty: no map. */
+	std::string map;
+	/** The matcher class that matches scans against the map (empty: the
+	 * [ScanMatcher] class); its parameters are its [ScanMatcher.<Class>]
+	 * section's. */
+	std::string matcher_class;
+	/** [m] cell size of the grid a simplemap or a world file is drawn into
+	 * (gridmaps and images keep their own). */
+	double grid_resolution = 0.02;
+	/** [m] size of one pixel of an occupancy image. */
+	double image_resolution = 0.05;
+	/** [px px] the image pixel at the map's origin (x from the left, y from
+	 * the bottom, as MRPT's COccupancyGridMap2D::loadFromBitmapFile); empty:
+	 * the image's centre. */
+	std::vector<double> image_origin;
+	/** A map match whose Mahalanobis^2 against the predicted pose exceeds
+	 * this is not used (99.99%, 3 dof). */
+	double gate_chi2 = 21.1;
+	/** The map match's covariance times this before fusion (a map is not a
+	 * scan: its own errors, a grid's cells, are not in the matcher's
+	 * covariance). */
+	double covariance_scale = 1.0;
+	/** [m] the map's own error (its cells, a simplemap's pose errors), added
+	 * in quadrature to the map match's x and y sigma before fusion. */
+	double map_sigma_xy = 0.01;
+	/** [rad] (degrees in the file) the same for yaw. */
+	double map_sigma_yaw = 0.2 * 3.14159265358979323846 / 180.0;
+
+	bool enabled() const { return !map.empty(); }
+
+	void loadFromConfigFile(
+		const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+	void saveToConfigFile(
+		mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+}  // namespace featloc

@@ -1,0 +1,57 @@
+#include "featloc/localization/LocalizationOptions.h"
+
+#include "featloc/config/ConfigValues.h"
+#include "featloc/config/TrackedConfig.h"
+
+namespace featloc
+{
+void LocalizationOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	using namespace featloc::config;
+	read(c, s, "map", map);
+	read(c, s, "matcher_class", matcher_class);
+	read(c, s, "grid_resolution", grid_resolution);
+	read(c, s, "image_resolution", image_resolution);
+	read(c, s, "image_origin", image_origin);
+	read(c, s, "gate_chi2", gate_chi2);
+	read(c, s, "covariance_scale", covariance_scale);
+	read(c, s, "map_sigma_xy", map_sigma_xy);
+	readDegrees(c, s, "map_sigma_yaw_DEG", map_sigma_yaw);
+	require(grid_resolution > 0.001 && grid_resolution <= 1, c, s, "grid_resolution",
+		"in (0.001, 1] [m]");
+	require(image_resolution > 0.001 && image_resolution <= 10, c, s, "image_resolution",
+		"in (0.001, 10] [m/pixel]");
+	require(image_origin.empty() || image_origin.size() == 2, c, s, "image_origin",
+		"empty (the image's centre) or [px py]");
+	require(gate_chi2 > 0, c, s, "gate_chi2", "> 0");
+	require(covariance_scale > 0, c, s, "covariance_scale", "> 0");
+	require(map_sigma_xy >= 0, c, s, "map_sigma_xy", ">= 0 [m]");
+	require(map_sigma_yaw >= 0, c, s, "map_sigma_yaw_DEG", ">= 0 [deg]");
+	if (!map.empty())
+		if (const auto* tc = dynamic_cast<const TrackedConfig*>(&c)) map = tc->resolvePath(s, "map", map);
+}
+
+void LocalizationOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	using namespace featloc::config;
+	write(c, s, "map", map,
+		"known map to localize in (empty: none): .simplemap(.gz), .gridmap(.gz), an occupancy "
+		"image (.png/.pgm/.bmp/.jpg) or a featloc-sim world file; needs estimator = ekf");
+	write(c, s, "matcher_class", matcher_class,
+		"matcher of scans against the map (empty: the [ScanMatcher] class); parameters in "
+		"[ScanMatcher.<Class>]");
+	write(c, s, "grid_resolution", grid_resolution,
+		"[m] cell of the grid a simplemap or world file is drawn into");
+	write(c, s, "image_resolution", image_resolution, "[m/pixel] occupancy image");
+	write(c, s, "image_origin", image_origin,
+		"[px px] image pixel at the map origin (x from the left, y from the bottom); empty: centre");
+	write(c, s, "gate_chi2", gate_chi2,
+		"a map match whose Mahalanobis^2 against the prediction exceeds this is not used");
+	write(c, s, "covariance_scale", covariance_scale, "the map match's covariance times this");
+	write(c, s, "map_sigma_xy", map_sigma_xy, "[m] the map's own error, added in quadrature to the map match's x and y sigma");
+	writeDegrees(c, s, "map_sigma_yaw_DEG", map_sigma_yaw,
+		"[deg] the same for yaw");
+}
+}  // namespace featloc
