@@ -7,6 +7,7 @@
 #include "featloc/output/PoseCovarianceWriter.h"
 #include "featloc/output/ResultsFolder.h"
 #include "featloc/output/ScanMapSceneWriter.h"
+#include "featloc/output/SimpleMapWriter.h"
 #include "featloc/output/StereoDebugPictureWriter.h"
 #include "featloc/output/StereoFeatureTableWriter.h"
 #include "featloc/output/SummaryJsonWriter.h"
@@ -42,6 +43,8 @@ RunOutputs RunOutputs::make(const RunConfiguration& rc, const ResultsFolder& fol
 		add(std::make_unique<ScanMapSceneWriter>(folder.stagedFile("map.3Dscene"),
 				rc.output.scene_scan_decimation, rc.output.scene_ellipse_every),
 			"map.3Dscene");
+	if (rc.output.write_simplemap)
+		add(std::make_unique<SimpleMapWriter>(folder.stagedFile("map.simplemap")), "map.simplemap");
 	if (withLandmarks)
 		add(std::make_unique<LandmarkTableWriter>(folder.stagedFile("landmarks.txt")),
 			"landmarks.txt");

@@ -11,6 +11,7 @@ void OutputOptions::loadFromConfigFile(
 	read(c, s, "dir", dir);
 	read(c, s, "write_rawlog", write_rawlog);
 	read(c, s, "write_scene", write_scene);
+	read(c, s, "write_simplemap", write_simplemap);
 	read(c, s, "pose_label", pose_label);
 	read(c, s, "scene_scan_decimation", scene_scan_decimation);
 	read(c, s, "scene_ellipse_every", scene_ellipse_every);
@@ -29,6 +30,8 @@ void OutputOptions::saveToConfigFile(
 		"write estimated.rawlog (input + estimated poses)");
 	write(c, s, "write_scene", write_scene,
 		"write map.3Dscene (scans at estimated poses)");
+	write(c, s, "write_simplemap", write_simplemap,
+		"write map.simplemap (keyframe scans at estimated poses: a [Localization] map)");
 	write(c, s, "pose_label", pose_label,
 		"sensor label of the pose observations in estimated.rawlog");
 	write(c, s, "scene_scan_decimation", scene_scan_decimation,

@@ -16,6 +16,9 @@ struct OutputOptions : public mrpt::config::CLoadableOptions
 	std::string dir = "results";
 	bool write_rawlog = true;  //!< estimated.rawlog
 	bool write_scene = true;  //!< map.3Dscene
+	/** map.simplemap: the keyframe scans at their estimated poses (MRPT's
+	 * CSimpleMap), the next run's [Localization] map. */
+	bool write_simplemap = true;
 	/** Sensor label of the CObservationRobotPose added to the rawlog. */
 	std::string pose_label = "featloc_estimate";
 	/** map.3Dscene holds the points of every N-th scan. */

@@ -1,0 +1,219 @@
+// Localization in a known map as a user runs it: featloc-sim writes logs
+// with exact ground truth; featloc-run localizes in the world file, writes
+// map.simplemap, and a second run on another path with people walking
+// localizes in that map. ATE in the map frame (no alignment).
+#include <gtest/gtest.h>
+#include <mrpt/img/CImage.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/maps/CSimpleMap.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "featloc/core/InputError.h"
+#include "featloc/localization/LocalizationMapFile.h"
+#include "featloc/registerClasses.h"
+#include "support/CommandRunner.h"
+#include "support/ErrorMessage.h"
+#include "support/TempDir.h"
+
+using namespace featloc;
+using featloc::test::CommandResult;
+using featloc::test::runCommand;
+using featloc::test::shellQuote;
+using featloc::test::TempDir;
+
+namespace
+{
+const std::string kRun = FEATLOC_RUN_EXE;
+const std::string kSim = FEATLOC_SIM_EXE;
+const std::string kConfig = std::string(FEATLOC_SOURCE_DIR) + "/config.ini";
+const std::string kOffice = std::string(FEATLOC_SOURCE_DIR) + "/worlds/office.ini";
+
+nlohmann::json readJson(const std::string& file)
+{
+	std::ifstream in(file);
+	return nlohmann::json::parse(in);
+}
+
+std::string simulate(const TempDir& dir, const std::string& name, const std::string& sets)
+{
+	const std::string prefix = dir.file(name);
+	const CommandResult r = runCommand(shellQuote(kSim) + " " + shellQuote(kOffice) + " --out " +
+		shellQuote(prefix) + " -q " + sets);
+	EXPECT_EQ(r.exitCode, 0) << r.output;
+	return prefix;
+}
+
+/** featloc-run with the EKF on PREFIX.rawlog starting at `start` (known
+ * to 0.1 m / 3 deg), in `map` (empty: none), evaluated without alignment. */
+CommandResult localize(const std::string& prefix, const std::string& start, const std::string& map,
+	const std::string& out)
+{
+	return runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
+		shellQuote(prefix + ".rawlog") + " --out " + shellQuote(out) +
+		" -q --set Pipeline:estimator=ekf --set 'Pipeline:initial_pose=" + start +
+		"' --set 'Pipeline:initial_pose_sigma=[0.1 0.1 3]' --set Localization:map=" +
+		shellQuote(map) + " --set Evaluation:ground_truth=" + shellQuote(prefix + ".gt.txt") +
+		" --set Evaluation:align=false");
+}
+
+double ateOf(const std::string& out) { return readJson(out + "/summary.json")["evaluation"]["ate_m"]["rmse"]; }
+
+// The second path: the other end of the corridor, another office, two
+// people walking the corridor both ways.
+const std::string kOtherPathWithPeople =
+	"--seed 7 --set 'Robot:waypoints=[35 8; 20 8; 20 8.3; 7.5 8; 7.5 11; 8.5 13; 6.5 13.5; 7.5 11; "
+	"7.5 8; 37 8]' --set Agent.a:shape=legs --set 'Agent.a:waypoints=[1 8.3; 39 8.3]' "
+	"--set Agent.a:speed=1.1 --set Agent.a:mode=pingpong --set Agent.b:shape=legs "
+	"--set 'Agent.b:waypoints=[39 7.6; 1 7.6]' --set Agent.b:speed=0.9 --set Agent.b:mode=pingpong";
+}  // namespace
+
+TEST(LocalizationApp, TracksInTheWorldMapAndItsOwnMapOnAnotherPathWithPeople)
+{
+	TempDir dir;
+	// Run 1: the office's own path, in the world file's walls.
+	const std::string a = simulate(dir, "a", "--seed 3");
+	const std::string inWorld = dir.file("a-world");
+	CommandResult r = localize(a, "[2 8 0]", kOffice, inWorld);
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("scans matched against it"), std::string::npos) << r.output;
+	const auto s = readJson(inWorld + "/summary.json");
+	const size_t scans = s["counts"]["scans"];
+	EXPECT_GT(s["localization"]["map_matches_used"].get<size_t>(), 0.95 * scans);
+	EXPECT_FALSE(s["evaluation"]["aligned"].get<bool>());
+	// Measured: 0.011 m in the map; 0.23 m without it.
+	EXPECT_LT(ateOf(inWorld), 0.03);
+	const std::string noMap = dir.file("a-nomap");
+	r = localize(a, "[2 8 0]", "", noMap);
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_GT(ateOf(noMap), 3 * ateOf(inWorld));
+
+	// Its map.simplemap: one keyframe scan per keyframe, at the poses estimated.
+	mrpt::maps::CSimpleMap sm;
+	ASSERT_TRUE(sm.loadFromFile(inWorld + "/map.simplemap"));
+	EXPECT_EQ(sm.size(), s["counts"]["keyframes"].get<size_t>());
+	const auto [pose, sf] = sm.get(0);
+	ASSERT_TRUE(sf);
+	EXPECT_TRUE(sf->getObservationByClass<mrpt::obs::CObservation2DRangeScan>());
+	EXPECT_NEAR(pose->getMeanVal().x(), 2.0, 0.05);
+
+	// Run 2: another path with people, in run 1's map.simplemap.
+	const std::string b = simulate(dir, "b", kOtherPathWithPeople);
+	const std::string inRunMap = dir.file("b-map");
+	r = localize(b, "[35 8 180]", inWorld + "/map.simplemap", inRunMap);
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("(simplemap,"), std::string::npos) << r.output;
+	// Measured: 0.017 m.
+	EXPECT_LT(ateOf(inRunMap), 0.03);
+}
+
+// A gridmap and an occupancy image are the same map as the world file they
+// were made from: the virtual scans agree.
+TEST(LocalizationApp, GridmapAndImageMapsGiveTheSameVirtualScans)
+{
+	registerClasses();
+	TempDir dir;
+	LocalizationOptions o;
+	o.map = kOffice;
+	o.grid_resolution = 0.05;
+	const LocalizationMap world = LocalizationMapFile::load(o);
+
+	// .gridmap.gz: MRPT's serialized grid.
+	o.map = dir.file("office.gridmap.gz");
+	{
+		mrpt::io::CFileGZOutputStream f(o.map);
+		mrpt::serialization::archiveFrom(f) << world.grid();
+	}
+	const LocalizationMap grid = LocalizationMapFile::load(o);
+	EXPECT_EQ(grid.kind(), "gridmap");
+
+	// An image: black occupied, pixel (0, 0) at the bottom left.
+	mrpt::img::CImage img;
+	world.grid().getAsImage(img, false, true);
+	o.map = dir.file("office.png");
+	ASSERT_TRUE(img.saveToFile(o.map));
+	o.image_resolution = 0.05;
+	// The pixel of the grid's origin (the world map's grid is its map
+	// shifted by gridOffset, which a gridmap or an image does not carry:
+	// they are queried at the shifted pose).
+	o.image_origin = {-world.grid().getXMin() / 0.05, -world.grid().getYMin() / 0.05};
+	const LocalizationMap image = LocalizationMapFile::load(o);
+	EXPECT_EQ(image.kind(), "image");
+
+	mrpt::obs::CObservation2DRangeScan like;
+	like.aperture = M_PI;
+	like.maxRange = 30;
+	like.resizeScan(181);
+	const mrpt::poses::CPose2D at(12.3, 8.1, 0.3);
+	const mrpt::poses::CPose2D inGrid(at.x() + world.gridOffset().x, at.y() + world.gridOffset().y, at.phi());
+	const auto a = world.virtualScan(like, at), b = grid.virtualScan(like, inGrid),
+			   c = image.virtualScan(like, inGrid);
+	size_t compared = 0, gridAgree = 0, imageAgree = 0;
+	for (size_t i = 0; i < 181; i++)
+	{
+		if (!a.getScanRangeValidity(i)) continue;
+		compared++;
+		const bool g = b.getScanRangeValidity(i) && std::abs(b.getScanRange(i) - a.getScanRange(i)) < 0.001;
+		const bool m = c.getScanRangeValidity(i) && std::abs(c.getScanRange(i) - a.getScanRange(i)) < 0.05;
+		gridAgree += g ? 1 : 0;
+		imageAgree += m ? 1 : 0;
+	}
+	std::printf("of %zu beams, the gridmap agrees on %zu, the image on %zu\n", compared, gridAgree, imageAgree);
+	ASSERT_GT(compared, 150u);
+	EXPECT_EQ(gridAgree, compared);
+	EXPECT_GT(imageAgree, 0.95 * compared);
+}
+
+TEST(LocalizationApp, BadMapsAreClearErrorsBeforeAnythingIsWritten)
+{
+	registerClasses();
+	TempDir dir;
+	LocalizationOptions o;
+	o.map = dir.file("missing.simplemap");
+	std::string msg = test::errorMessageOf<InputError>([&] { LocalizationMapFile::load(o); });
+	EXPECT_NE(msg.find("missing.simplemap"), std::string::npos) << msg;
+	EXPECT_NE(msg.find("[Localization] map"), std::string::npos) << msg;
+
+	o.map = dir.file("garbage.simplemap");
+	std::ofstream(o.map) << "not a map";
+	msg = test::errorMessageOf<InputError>([&] { LocalizationMapFile::load(o); });
+	EXPECT_NE(msg.find("not a readable MRPT simplemap"), std::string::npos) << msg;
+
+	o.map = dir.file("pose.gridmap");
+	{
+		mrpt::io::CFileGZOutputStream f(o.map);
+		mrpt::serialization::archiveFrom(f) << mrpt::poses::CPose2D(1, 2, 3);
+	}
+	msg = test::errorMessageOf<InputError>([&] { LocalizationMapFile::load(o); });
+	EXPECT_NE(msg.find("holds a mrpt::poses::CPose2D, not an MRPT COccupancyGridMap2D"), std::string::npos) << msg;
+
+	o.map = dir.file("empty.simplemap");
+	ASSERT_TRUE(mrpt::maps::CSimpleMap().saveToFile(o.map));
+	msg = test::errorMessageOf<InputError>([&] { LocalizationMapFile::load(o); });
+	EXPECT_NE(msg.find("hold no 2-D laser scan"), std::string::npos) << msg;
+
+	// featloc-run: the error comes before the run, and old results stay.
+	const std::string out = dir.file("keep");
+	CommandResult r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " -q --out " +
+		shellQuote(out) + " --set Input:max_scans=20");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	std::ifstream before(out + "/trajectory.tum");
+	const std::string old((std::istreambuf_iterator<char>(before)), std::istreambuf_iterator<char>());
+	r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " -q --out " + shellQuote(out) +
+		" --set Pipeline:estimator=ekf --set Localization:map=" + shellQuote(dir.file("nope.gridmap")));
+	EXPECT_NE(r.exitCode, 0);
+	EXPECT_NE(r.output.find("nope.gridmap"), std::string::npos) << r.output;
+	// The matcher estimator cannot fuse a pose in a map: named in the error.
+	r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " -q --out " + shellQuote(out) +
+		" --set Localization:map=" + shellQuote(kOffice));
+	EXPECT_NE(r.exitCode, 0);
+	EXPECT_NE(r.output.find("[Localization] map"), std::string::npos) << r.output;
+	EXPECT_NE(r.output.find("estimator = ekf"), std::string::npos) << r.output;
+	std::ifstream after(out + "/trajectory.tum");
+	const std::string now((std::istreambuf_iterator<char>(after)), std::istreambuf_iterator<char>());
+	EXPECT_EQ(now, old);
+}
