@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <queue>
 #include <opencv2/imgproc.hpp>
 
 #include "featloc/config/ConfigValues.h"
@@ -29,8 +28,6 @@ constexpr double kJoinSigmaR = 0.01;  //!< [m]
  * scan's own point scatter (PointNoiseEstimator). */
 constexpr double kSharpNoiseFactor = 2.0;
 
-/** Levels of the branch and bound: blocks of up to 2^6 = 64 cells a side. */
-constexpr int kMaxLevel = 6;
 /** Contenders outside the guess's 99% region (chi2, 3 dof) are ignored. */
 constexpr double kPlausibleChi2 = 11.34;
 /** At most this many contenders are refined and compared with the estimate. */
@@ -178,26 +175,14 @@ void CorrelativeScanSearch::buildTables(const ScanPoints& reference, double half
 	const double spanX = xmax - xmin + 2 * margin, spanY = ymax - ymin + 2 * margin;
 	if (spanX * spanY / (res * res) > kMaxTableCells)
 		res = std::sqrt(spanX * spanY / kMaxTableCells);
-	m_resolution = res;
-	// The top level of the branch and bound covers the window with up to
-	// 4 x 4 blocks per rotation (a wider top costs more table than it saves).
-	const int cellsAcross = 2 * static_cast<int>(std::ceil(halfWindowXY / res)) + 1;
-	m_top = 0;
-	while (m_top < kMaxLevel && 4 * (1 << m_top) < cellsAcross) m_top++;
+	const int top = CorrelationTables::topLevelFor(halfWindowXY, res);
 	// The low side also holds one top-level block: a block's bound reads up
 	// to its side - 1 cells beyond the point's own cell.
-	const double lowMargin = margin + static_cast<double>(1 << m_top) * res;
-	m_x0 = xmin - lowMargin;
-	m_y0 = ymin - lowMargin;
-	m_width = static_cast<int>(std::ceil((xmax + margin - m_x0) / res)) + 1;
-	m_height = static_cast<int>(std::ceil((ymax + margin - m_y0) / res)) + 1;
+	const double lowMargin = margin + static_cast<double>(1 << top) * res;
+	const double x0 = xmin - lowMargin, y0 = ymin - lowMargin;
+	const int width = static_cast<int>(std::ceil((xmax + margin - x0) / res)) + 1;
+	const int height = static_cast<int>(std::ceil((ymax + margin - y0) / res)) + 1;
 
-	// The surface: zero pixels in a 255 image, then the distance of every
-	// pixel to the nearest zero one.
-	cv::Mat surface(m_height, m_width, CV_8U, cv::Scalar(255));
-	auto pixel = [&](const ScanPoint& p) {
-		return cv::Point(static_cast<int>((p.x - m_x0) / res), static_cast<int>((p.y - m_y0) / res));
-	};
 	// Consecutive points of one surface are joined, as Borges & Aldon's
 	// adaptive breakpoint detector keeps them in one segment, down to a
 	// grazing incidence of kJoinLambda. Isolated points (more grazing, or
@@ -208,45 +193,20 @@ void CorrelativeScanSearch::buildTables(const ScanPoints& reference, double half
 	join.lambda = kJoinLambda;
 	join.sigma_r = kJoinSigmaR;
 	AdaptiveBreakpointSegmenter(join).segment(reference, m_segments);
-	for (const auto& seg : m_segments)
-		for (uint32_t i = seg.first + 1; i <= seg.last; i++)
-			cv::line(surface, pixel(reference.points[i - 1]), pixel(reference.points[i]),
-				cv::Scalar(0), 1, cv::LINE_8);
 	// The sharp score's width follows the scan's own scatter about its
 	// surfaces: a current point and the (noisy) reference surface are
 	// sqrt(2) s apart on average, and a score narrower than that would
 	// judge solutions by their noise.
 	m_sharpSigma = std::max(options.sharpSigma, kSharpNoiseFactor * m_noise.estimate(reference.points, m_segments));
-	cv::Mat distance;
-	cv::distanceTransform(surface, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
-	m_distance.resize(static_cast<size_t>(m_width) * static_cast<size_t>(m_height));
-	cv::Mat metres(m_height, m_width, CV_32F, m_distance.data());
-	distance.convertTo(metres, CV_32F, res);
-	const size_t cells = static_cast<size_t>(m_width) * static_cast<size_t>(m_height);
-	m_levels.resize(static_cast<size_t>(m_top) + 1);
-	for (auto& t : m_levels) t.resize(cells);  // every cell is written below
-	cv::Mat table(m_height, m_width, CV_32F, m_levels[0].data());
-	// exp(-d^2 / 2 sigma^2), d in metres.
-	const double k = -0.5 * (res / options.hitSigma) * (res / options.hitSigma);
-	cv::multiply(distance, distance, distance, k);
-	cv::exp(distance, table);
-
-	// Olson's low-resolution tables, one per level of the branch and bound:
-	// level L holds the maximum over the 2^L x 2^L cells at and above-right
-	// of each cell, so that one lookup bounds every translation of a block
-	// of that side. Level L + 1 is the maximum of four shifted level-L views.
-	for (int L = 0; L < m_top; L++)
-	{
-		const int sft = 1 << L;
-		cv::Mat src(m_height, m_width, CV_32F, m_levels[static_cast<size_t>(L)].data());
-		cv::Mat dst(m_height, m_width, CV_32F, m_levels[static_cast<size_t>(L) + 1].data());
-		src.copyTo(dst);
-		const int w = m_width - sft, h = m_height - sft;
-		cv::Mat d = dst(cv::Rect(0, 0, w, h));
-		cv::max(d, src(cv::Rect(sft, 0, w, h)), d);
-		cv::max(d, src(cv::Rect(0, sft, w, h)), d);
-		cv::max(d, src(cv::Rect(sft, sft, w, h)), d);
-	}
+	m_tables.build(width, height, x0, y0, res, options.hitSigma, top, [&](cv::Mat& surface) {
+		auto pixel = [&](const ScanPoint& p) {
+			return cv::Point(static_cast<int>((p.x - x0) / res), static_cast<int>((p.y - y0) / res));
+		};
+		for (const auto& seg : m_segments)
+			for (uint32_t i = seg.first + 1; i <= seg.last; i++)
+				cv::line(surface, pixel(reference.points[i - 1]), pixel(reference.points[i]),
+					cv::Scalar(0), 1, cv::LINE_8);
+	});
 }
 
 CorrelativeScanSearch::Result CorrelativeScanSearch::search(
@@ -272,7 +232,7 @@ CorrelativeScanSearch::Result CorrelativeScanSearch::search(
 	r.windowYaw = half(P(2, 2), options.minWindowYaw, options.maxWindowYaw);
 	buildTables(reference, std::max(r.windowXY[0], r.windowXY[1]));
 	pickPoints(current);
-	r.resolution = m_resolution;
+	r.resolution = m_tables.resolution();
 
 	// Rotation step: one cell's motion at the far points (Olson's choice),
 	// the 95th percentile of range so that one stray return does not set it.
@@ -281,7 +241,7 @@ CorrelativeScanSearch::Result CorrelativeScanSearch::search(
 	for (size_t i = 0; i < n; i++) ranges[i] = std::hypot(m_px[i], m_py[i]);
 	auto p95 = ranges.begin() + static_cast<long>((n - 1) * 95 / 100);
 	std::nth_element(ranges.begin(), p95, ranges.end());
-	r.yawStep = m_resolution / std::max(*p95, m_resolution);
+	r.yawStep = r.resolution / std::max(*p95, r.resolution);
 
 	const auto found = branchAndBound(guess, r);
 	if (found.empty())
@@ -337,81 +297,16 @@ CorrelativeScanSearch::Result CorrelativeScanSearch::search(
 std::vector<CorrelativeScanSearch::Result::Contender> CorrelativeScanSearch::branchAndBound(
 	const mrpt::poses::CPosePDFGaussian& guess, Result& r) const
 {
-	const double res = m_resolution;
-	const size_t n = m_px.size();
-	const int nYaw = static_cast<int>(std::ceil(r.windowYaw / r.yawStep));
-	const int nx = static_cast<int>(std::ceil(r.windowXY[0] / res));
-	const int ny = static_cast<int>(std::ceil(r.windowXY[1] / res));
-	const double gx = guess.mean.x(), gy = guess.mean.y(), gw = guess.mean.phi();
-
-	// Each rotation's points as table cells at the guess's translation; a
-	// candidate translation adds whole cells to them.
-	const int yaws = 2 * nYaw + 1;
-	std::vector<int> cu(static_cast<size_t>(yaws) * n), cv(static_cast<size_t>(yaws) * n);
-	for (int w = 0; w < yaws; w++)
-	{
-		const double th = gw + (w - nYaw) * r.yawStep;
-		const double c = std::cos(th), s = std::sin(th);
-		for (size_t i = 0; i < n; i++)
-		{
-			const double x = c * m_px[i] - s * m_py[i] + gx, y = s * m_px[i] + c * m_py[i] + gy;
-			cu[static_cast<size_t>(w) * n + i] = static_cast<int>(std::floor((x - m_x0) / res));
-			cv[static_cast<size_t>(w) * n + i] = static_cast<int>(std::floor((y - m_y0) / res));
-		}
-	}
-	// Mean table value under rotation w's points moved by (dx, dy) cells:
-	// at level L, a bound for the block of 2^L x 2^L translations from there.
-	auto score = [&](int level, int w, int dx, int dy) {
-		const auto& t = m_levels[static_cast<size_t>(level)];
-		double sum = 0;
-		const size_t base = static_cast<size_t>(w) * n;
-		for (size_t i = 0; i < n; i++)
-		{
-			const long c = cellIndex(cu[base + i] + dx, cv[base + i] + dy);
-			if (c >= 0) sum += t[static_cast<size_t>(c)];
-		}
-		return sum / static_cast<double>(n);
-	};
-
-	// Best bound first (Olson section IV; each block split in four as in
-	// Cartographer's fast correlative matcher).
-	struct Node
-	{
-		double bound;
-		int level, yaw, dx, dy;	 // dx, dy: the block's lowest cell offset
-		bool operator<(const Node& o) const { return bound < o.bound; }
-	};
-	std::priority_queue<Node> open;
-	const int side = 1 << m_top;
-	for (int w = 0; w < yaws; w++)
-		for (int bx = -nx; bx <= nx; bx += side)
-			for (int by = -ny; by <= ny; by += side)
-				open.push({score(m_top, w, bx, by), m_top, w, bx, by});
-
-	std::vector<Result::Contender> found;  // every full-resolution pose taken from the queue
-	double best = 0;
+	CorrelationTables::Window w;
+	w.centre = guess.mean;
+	w.yawStep = r.yawStep;
+	w.nYaw = static_cast<int>(std::ceil(r.windowYaw / r.yawStep));
+	w.nx = static_cast<int>(std::ceil(r.windowXY[0] / r.resolution));
+	w.ny = static_cast<int>(std::ceil(r.windowXY[1] / r.resolution));
 	// Go on below the best to find the contenders too.
 	const double keepGoing = options.ambiguityZ > 0 ? options.contenderRatio : 1.0;
-	while (!open.empty())
-	{
-		const Node nd = open.top();
-		if (nd.bound <= 0 || nd.bound < keepGoing * best) break;
-		open.pop();
-		if (nd.level == 0)
-		{
-			best = std::max(best, nd.bound);
-			found.push_back({mrpt::poses::CPose2D(gx + nd.dx * res, gy + nd.dy * res,
-								 gw + (nd.yaw - nYaw) * r.yawStep),
-				nd.bound});
-			continue;
-		}
-		const int half = 1 << (nd.level - 1);
-		for (int cx = nd.dx; cx < nd.dx + 2 * half && cx <= nx; cx += half)
-			for (int cy = nd.dy; cy < nd.dy + 2 * half && cy <= ny; cy += half)
-				open.push({score(nd.level - 1, nd.yaw, cx, cy), nd.level - 1, nd.yaw, cx, cy});
-	}
-	std::sort(found.begin(), found.end(),
-		[](const Result::Contender& a, const Result::Contender& c) { return a.score > c.score; });
+	std::vector<Result::Contender> found;
+	for (const auto& c : m_tables.search(m_px, m_py, w, keepGoing)) found.push_back({c.pose, c.score});
 	return found;
 }
 
@@ -419,18 +314,14 @@ void CorrelativeScanSearch::sharpScores(
 	const mrpt::poses::CPose2D& pose, std::vector<double>& out) const
 {
 	out.assign(m_allX.size(), 0.0);
-	if (m_distance.empty()) return;
+	if (m_tables.empty()) return;
 	const double c = std::cos(pose.phi()), s = std::sin(pose.phi());
 	const double k = -0.5 / (m_sharpSigma * m_sharpSigma);
 	for (size_t i = 0; i < m_allX.size(); i++)
 	{
-		const double x = c * m_allX[i] - s * m_allY[i] + pose.x(),
-					 y = s * m_allX[i] + c * m_allY[i] + pose.y();
-		const long cell = cellIndex(static_cast<int>(std::floor((x - m_x0) / m_resolution)),
-			static_cast<int>(std::floor((y - m_y0) / m_resolution)));
-		if (cell < 0) continue;
-		const double d = m_distance[static_cast<size_t>(cell)];
-		out[i] = std::exp(k * d * d);
+		const double d = m_tables.distanceAt(c * m_allX[i] - s * m_allY[i] + pose.x(),
+			s * m_allX[i] + c * m_allY[i] + pose.y());
+		if (d >= 0) out[i] = std::exp(k * d * d);
 	}
 }
 
@@ -509,12 +400,6 @@ CorrelativeScanSearch::Ambiguity CorrelativeScanSearch::ambiguity(const Result& 
 		out.reason = buf;
 	}
 	return out;
-}
-
-long CorrelativeScanSearch::cellIndex(int u, int v) const
-{
-	if (u < 0 || v < 0 || u >= m_width || v >= m_height) return -1;
-	return static_cast<long>(v) * m_width + u;
 }
 
 bool CorrelativeScanSearch::distinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "featloc/matchers/CorrelationTables.h"
 #include "featloc/scan/PointNoiseEstimator.h"
 #include "featloc/scan/ScanPoints.h"
 #include "featloc/scan/ScanSegment.h"
@@ -145,21 +146,12 @@ class CorrelativeScanSearch
 	 * alike). Points on a corridor's walls score alike under both and do
 	 * not count; a door frame that only a explains does. */
 	static double evidence(const std::vector<double>& a, const std::vector<double>& b);
-	/** Index of table cell (u, v) in the row-major tables, -1 outside. */
-	long cellIndex(int u, int v) const;
 	/** Every current point's sharp score at `pose`: exp(-d^2 / 2 sigma^2),
 	 * d its distance to the reference surface, sigma the larger of
 	 * sharp_sigma and twice the reference's point scatter. */
 	void sharpScores(const mrpt::poses::CPose2D& pose, std::vector<double>& out) const;
 
-	// The lookup tables, row-major, m_width x m_height cells of
-	// m_resolution from (m_x0, m_y0): [0] the full-resolution one, [L] the
-	// maxima over blocks of 2^L x 2^L cells.
-	std::vector<std::vector<float>> m_levels;
-	int m_width = 0, m_height = 0;
-	double m_x0 = 0, m_y0 = 0, m_resolution = 0;
-	int m_top = 0;	// the top level
-	std::vector<float> m_distance;	// [m] to the reference surface, full resolution
+	CorrelationTables m_tables;	 // of the reference's surfaces
 	std::vector<ScanSegment> m_segments;  // the reference's surfaces
 	PointNoiseEstimator m_noise;
 	double m_sharpSigma = 0;  // [m] the sharp score's width for this reference
