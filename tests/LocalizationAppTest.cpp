@@ -10,7 +10,12 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <array>
+#include <cmath>
 #include <fstream>
+#include <sstream>
+#include <mrpt/core/bits_math.h>
+#include <mrpt/math/wrap2pi.h>
 #include <nlohmann/json.hpp>
 
 #include "featloc/core/InputError.h"
@@ -216,4 +221,103 @@ TEST(LocalizationApp, BadMapsAreClearErrorsBeforeAnythingIsWritten)
 	std::ifstream after(out + "/trajectory.tum");
 	const std::string now((std::istreambuf_iterator<char>(after)), std::istreambuf_iterator<char>());
 	EXPECT_EQ(now, old);
+}
+
+namespace
+{
+struct Event
+{
+	std::string kind;
+	size_t scan = 0;
+	double x = 0, y = 0, yawDeg = 0;
+};
+/** summary.json's localization events, parsed. */
+std::vector<Event> eventsOf(const std::string& out)
+{
+	std::vector<Event> events;
+	const auto summary = readJson(out + "/summary.json");
+	for (const auto& e : summary["localization"]["events"])
+	{
+		const std::string s = e.get<std::string>();
+		Event ev;
+		char kind[16] = {0};
+		if (std::sscanf(s.c_str(), "%15s at scan %zu", kind, &ev.scan) != 2) continue;
+		ev.kind = kind;
+		if (ev.kind == "found")
+			std::sscanf(s.c_str() + s.find(": at ("), ": at (%lf m, %lf m, %lf deg)", &ev.x, &ev.y, &ev.yawDeg);
+		events.push_back(ev);
+	}
+	return events;
+}
+
+/** The ground truth's row k: x, y, yaw [deg]. */
+std::array<double, 3> truthAt(const std::string& gt, size_t k)
+{
+	std::ifstream in(gt);
+	std::string line;
+	size_t row = 0;
+	while (std::getline(in, line))
+	{
+		if (line.empty() || line[0] == '#') continue;
+		if (row++ < k) continue;
+		double t, x, y, z, qx, qy, qz, qw;
+		std::istringstream(line) >> t >> x >> y >> z >> qx >> qy >> qz >> qw;
+		return {x, y, mrpt::RAD2DEG(2 * std::atan2(qz, qw))};
+	}
+	return {0, 0, 0};
+}
+
+bool near(const Event& e, const std::array<double, 3>& t)
+{
+	return std::hypot(e.x - t[0], e.y - t[1]) < 0.2 &&
+		std::abs(mrpt::RAD2DEG(mrpt::math::wrapToPi(mrpt::DEG2RAD(e.yawDeg - t[2])))) < 5;
+}
+}  // namespace
+
+// The pose unknown at the start (initial_pose = global): found in the
+// office from the corridor within a few scans; then the robot is carried to
+// the other end of the building without its odometry noticing: the map
+// matches stop fitting, it is lost, and found again where it is. Every
+// "found" is right.
+TEST(LocalizationApp, GlobalStartAndAKidnappedRobotAreFoundInTheMap)
+{
+	TempDir dir;
+	const std::string p = simulate(dir, "kidnap",
+		"--seed 9 --set 'Robot:waypoints=[3 8; 15 8; 17.6 8; 17.6 11; 18.5 13.5]' "
+		"--set 'Robot:kidnap_waypoints=[30 8; 22 8; 21 8; 21 8.5; 27.5 8; 27.5 5.5; 29.5 3]'");
+	const std::string out = dir.file("global");
+	const CommandResult r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
+		shellQuote(p + ".rawlog") + " --out " + shellQuote(out) +
+		" -q --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global --set Localization:map=" +
+		shellQuote(kOffice) + " --set Evaluation:ground_truth=" + shellQuote(p + ".gt.txt") +
+		" --set Evaluation:align=false");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("global localization: evaluated from"), std::string::npos) << r.output;
+	const auto events = eventsOf(out);
+	ASSERT_EQ(events.size(), 3u) << r.output;
+	// Measured: found at scan 9; carried away after scan 139; lost at 144,
+	// found again at 147.
+	EXPECT_EQ(events[0].kind, "found");
+	EXPECT_LE(events[0].scan, 12u);
+	EXPECT_EQ(events[1].kind, "lost");
+	EXPECT_EQ(events[2].kind, "found");
+	EXPECT_LE(events[2].scan, events[1].scan + 10);
+	for (const auto& e : events)
+		if (e.kind == "found")
+		{
+			const auto t = truthAt(p + ".gt.txt", e.scan);
+			EXPECT_TRUE(near(e, t)) << "found at scan " << e.scan << " at " << e.x << " " << e.y << " "
+									<< e.yawDeg << ", truth " << t[0] << " " << t[1] << " " << t[2];
+		}
+	// While tracking, centimetres (median over the whole run, kidnapping included).
+	EXPECT_LT(readJson(out + "/summary.json")["evaluation"]["ate_m"]["median"].get<double>(), 0.03);
+}
+
+TEST(LocalizationApp, GlobalStartNeedsAMap)
+{
+	const CommandResult r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) +
+		" -q --out /tmp/featloc-never-written --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global");
+	EXPECT_NE(r.exitCode, 0);
+	EXPECT_NE(r.output.find("initial_pose"), std::string::npos) << r.output;
+	EXPECT_NE(r.output.find("[Localization] map is empty"), std::string::npos) << r.output;
 }

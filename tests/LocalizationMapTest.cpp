@@ -44,7 +44,7 @@ TEST(LocalizationMap, VirtualScanOfAWorldFileGivesTheExactRangesWithoutBias)
 	const SimWorld world = SimWorld::fromConfig(cfg);
 	const auto like = sickLike();
 	std::vector<double> diff;
-	for (const mrpt::poses::CPose2D pose :
+	for (const mrpt::poses::CPose2D& pose :
 		 {mrpt::poses::CPose2D(2.0, 8.0, 0.0), mrpt::poses::CPose2D(12.3, 7.9, 0.4),
 			 mrpt::poses::CPose2D(17.6, 11.2, 1.6), mrpt::poses::CPose2D(27.5, 4.1, -2.0),
 			 mrpt::poses::CPose2D(33.1, 8.05, 3.1)})

@@ -203,7 +203,7 @@ int LiveApp::main(int argc, char** argv)
 	try
 	{
 		Pipeline pipeline(rc.input, rc.odometry, rc.pipeline, rc.estimator, rc.matcher);
-		if (rc.mapTracker) pipeline.setMapTracker(rc.mapTracker);
+		if (rc.mapLocalizer) pipeline.setMapLocalizer(rc.mapLocalizer);
 		stats = pipeline.run(source, all);
 		printLiveReport(source, status.latencies());
 		RunReport::printSummary(stats);

@@ -199,7 +199,7 @@ RunStats execute(PreparedRun& run, bool quiet, InterruptSignals& signals)
 	{
 		Pipeline pipeline(
 			run.rc.input, run.rc.odometry, run.rc.pipeline, run.rc.estimator, run.rc.matcher);
-		if (run.rc.mapTracker) pipeline.setMapTracker(run.rc.mapTracker);
+		if (run.rc.mapLocalizer) pipeline.setMapLocalizer(run.rc.mapLocalizer);
 		ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
 		stats = pipeline.run(
 			*run.source, run.outputs.pointers(), quiet ? nullptr : &progress, &signals.flag());

@@ -4,7 +4,7 @@
 #include "featloc/core/ConfigError.h"
 #include "featloc/estimators/PoseEstimatorFactory.h"
 #include "featloc/localization/LocalizationMapFile.h"
-#include "featloc/localization/MapScanTracker.h"
+#include "featloc/localization/MapLocalizer.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/stereo/StereoLandmarkExtractorFactory.h"
 
@@ -52,8 +52,12 @@ RunConfiguration RunConfiguration::load(const mrpt::config::CConfigFileBase& cfg
 		}
 		mapMatcher->loadParams(cfg, ScanMatcherFactory::paramsSection(mapMatcher->className()));
 		auto map = std::make_shared<LocalizationMap>(LocalizationMapFile::load(rc.localization));
-		rc.mapTracker = std::make_shared<MapScanTracker>(map, mapMatcher, rc.localization);
+		rc.mapLocalizer = std::make_shared<MapLocalizer>(
+			map, mapMatcher, rc.localization, rc.pipeline.global_start);
 	}
+	else if (rc.pipeline.global_start)
+		config::fail(cfg, PipelineOptions::kSection, "initial_pose",
+			"global: the pose is found in a known map, and [Localization] map is empty");
 	return rc;
 }
 

@@ -1,5 +1,6 @@
 #include "featloc/app/RunReport.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -97,6 +98,10 @@ void RunReport::printSummary(const RunStats& s)
 			s.localizationMap.c_str(), s.mapMatchesAttempted, s.mapMatchesUsed, s.mapMatchFailures,
 			s.mapMatchesRejected, t.median * 1e3);
 		for (const auto& ex : s.mapRejectionExamples) std::printf("    not used: %s\n", ex.c_str());
+		if (s.globalSearches)
+			std::printf("    %zu global searches, %.2f s each (mean)\n", s.globalSearches,
+				ErrorStats::of(s.globalSearchTimes).mean);
+		for (const auto& ev : s.localizationEvents) std::printf("    %s\n", ev.c_str());
 	}
 	if (!s.estimatorTimes.empty())
 	{
@@ -123,6 +128,19 @@ void RunReport::evaluateAndPlot(
 			stats.estimator.c_str(), est.poses.size());
 		TrajectoryPlot::write(folder.stagedFile("trajectory.png"), Trajectory{}, est, {}, title);
 		return;
+	}
+	if (stats.globalStart)
+	{
+		// Before the robot is found its estimate is not in the map's frame.
+		const size_t all = est.poses.size();
+		est.poses.erase(std::remove_if(est.poses.begin(), est.poses.end(),
+							[&](const TimedPose& p) { return stats.firstFoundTime < 0 || p.t < stats.firstFoundTime; }),
+			est.poses.end());
+		std::printf("global localization: evaluated from the step where the robot was first found "
+					"(%zu of %zu poses)\n",
+			est.poses.size(), all);
+		if (est.poses.size() < 2)
+			throw InputError("the robot was never found in the map: nothing to evaluate");
 	}
 	const TrajectoryEvaluator evaluator(rc.evaluation.max_time_difference, rc.evaluation.align);
 	const EvaluationReport rep = evaluator.evaluate(reference->trajectory, est);

@@ -57,7 +57,7 @@ void CorrelationTables::build(int width, int height, double x0, double y0, doubl
 
 std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 	const std::vector<double>& px, const std::vector<double>& py, const Window& win,
-	double keepRatio) const
+	double keepRatio, const std::function<bool(const mrpt::poses::CPose2D&)>& excluded) const
 {
 	const double res = m_resolution;
 	const size_t n = px.size();
@@ -115,10 +115,11 @@ std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 		open.pop();
 		if (nd.level == 0)
 		{
+			const mrpt::poses::CPose2D pose(
+				gx + nd.dx * res, gy + nd.dy * res, gw + (nd.yaw - nYaw) * win.yawStep);
+			if (excluded && excluded(pose)) continue;
 			best = std::max(best, nd.bound);
-			found.push_back({mrpt::poses::CPose2D(gx + nd.dx * res, gy + nd.dy * res,
-								 gw + (nd.yaw - nYaw) * win.yawStep),
-				nd.bound});
+			found.push_back({pose, nd.bound});
 			continue;
 		}
 		const int half = 1 << (nd.level - 1);

@@ -63,6 +63,9 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 			{"map_match_failures_by_kind", s.mapMatchFailuresByKind},
 			{"map_matches_rejected_by_gate", s.mapMatchesRejected},
 			{"rejection_examples", s.mapRejectionExamples},
+			{"events", s.localizationEvents},
+			{"global_searches", s.globalSearches},
+			{"time_per_global_search_s", ErrorStats::of(s.globalSearchTimes).mean},
 			{"time_per_map_match_s", {{"mean", mt.mean}, {"median", mt.median}, {"p95", mt.p95}, {"max", mt.max}}}};
 	}
 	j["failure_examples"] = s.failureExamples;

@@ -70,12 +70,12 @@ Pipeline::Pipeline(
 			"' needs a scan matcher");
 }
 
-void Pipeline::setMapTracker(std::shared_ptr<MapScanTracker> tracker)
+void Pipeline::setMapLocalizer(std::shared_ptr<MapLocalizer> localizer)
 {
-	if (tracker && !m_estimator->fusesAbsolutePoses())
+	if (localizer && !m_estimator->fusesAbsolutePoses())
 		throw std::invalid_argument(
 			"Pipeline: estimator '" + m_estimator->name() + "' cannot fuse poses in a map");
-	m_mapTracker = std::move(tracker);
+	m_mapLocalizer = std::move(localizer);
 }
 
 RunStats Pipeline::run(
@@ -88,7 +88,8 @@ RunStats Pipeline::run(
 	stats.rawlog = rawlogPath;
 	stats.estimator = m_estimator->name();
 	if (m_estimator->usesScanMatcher()) stats.matcherClass = m_matcher->className();
-	if (m_mapTracker) stats.localizationMap = m_mapTracker->map().describe();
+	if (m_mapLocalizer) stats.localizationMap = m_mapLocalizer->map().describe();
+	stats.globalStart = m_options.global_start;
 	m_keyframeScan.reset();
 	m_odometryCheck = OdometryCovarianceCheck(
 		m_odometry.covariance_check_window, m_odometry.covariance_check_quantile);
@@ -251,10 +252,12 @@ void Pipeline::processStep(
 					" (entry #" + std::to_string(step.entryIndex) + "): " + fallbackReason);
 		}
 	}
-	MapScanTracker::Result mapResult;
-	bool usedMapMatch = false;
-	std::string mapReason;
-	if (m_mapTracker && step.scan) trackInMap(step, mapResult, usedMapMatch, mapReason, stats);
+	MapLocalizer::Outcome inMap;
+	if (m_mapLocalizer)
+	{
+		inMap = localizeInMap(step, stats);
+		if (inMap.event == "found") m_keyframeScan.reset();	 // the estimator restarted
+	}
 	const bool keyframe = step.scan && (!m_keyframeScan || isNewKeyframe(matchPtr));
 	if (keyframe)
 	{
@@ -274,35 +277,44 @@ void Pipeline::processStep(
 	stats.landmarksInMap = landmarks.size();
 	const StereoStepResult* stereo = m_estimator->lastStereo();
 	if (stereo) countStereo(*stereo, stats);
-	const bool mapped = m_mapTracker && step.scan;
 	const StepRecord record{step, m_estimator->pose(), matchPtr, usedMatch, &landmarks, stereo,
-		fallbackReason, keyframe, mapped ? &mapResult.match : nullptr, usedMapMatch, mapReason};
+		fallbackReason, keyframe, inMap.mapMatch ? &inMap.mapMatch->match : nullptr, inMap.used,
+		inMap.reason};
 	for (auto* o : outputs) o->onStep(record);
 }
 
-void Pipeline::trackInMap(const EstimationStep& step, MapScanTracker::Result& r, bool& used,
-	std::string& reason, RunStats& stats)
+MapLocalizer::Outcome Pipeline::localizeInMap(const EstimationStep& step, RunStats& stats)
 {
-	r = m_mapTracker->track(*step.scan, m_estimator->pose());
+	MapLocalizer::Outcome out = m_mapLocalizer->process(step, *m_estimator);
+	if (out.global)
+	{
+		stats.globalSearches++;
+		stats.globalSearchTimes.push_back(out.global->seconds);
+	}
+	if (out.event == "found" && stats.firstFoundTime < 0)
+		stats.firstFoundTime = mrpt::Clock::toDouble(step.time);
+	if (!out.event.empty())
+		stats.localizationEvents.push_back(out.event + " at scan " + std::to_string(step.scanIndex) +
+			" (entry #" + std::to_string(step.entryIndex) + "): " + out.message);
+	if (!out.mapMatch) return out;
+	const auto& r = *out.mapMatch;
 	stats.mapMatchesAttempted++;
 	stats.mapMatchTimes.push_back(r.match.timeSeconds);
 	if (!r.match.success)
 	{
 		stats.mapMatchFailures++;
 		stats.mapMatchFailuresByKind[r.match.failureKind]++;
-		reason = "the map match failed: " + r.match.failureReason;
-		return;
 	}
-	used = m_estimator->fuseAbsolutePose(r.pose, m_mapTracker->options().gate_chi2, reason);
-	if (used)
+	else if (out.used)
 		stats.mapMatchesUsed++;
 	else
 	{
 		stats.mapMatchesRejected++;
 		if (stats.mapRejectionExamples.size() < kMaxFailureExamples)
 			stats.mapRejectionExamples.push_back("scan " + std::to_string(step.scanIndex) +
-				" (entry #" + std::to_string(step.entryIndex) + "): " + reason);
+				" (entry #" + std::to_string(step.entryIndex) + "): " + out.reason);
 	}
+	return out;
 }
 
 MatchResult Pipeline::matchToKeyframe(const EstimationStep& step)

@@ -23,9 +23,15 @@ void PipelineOptions::loadFromConfigFile(
 	}
 	std::vector<double> pose = {
 		initial_pose[0], initial_pose[1], mrpt::RAD2DEG(initial_pose[2])};
-	read(c, s, "initial_pose", pose);
-	require(pose.size() == 3, c, s, "initial_pose", "three numbers [x y yaw_deg]");
-	initial_pose = {pose[0], pose[1], mrpt::DEG2RAD(pose[2])};
+	std::string text;
+	global_start = readRaw(c, s, "initial_pose", text) && text == "global";
+	if (!global_start)
+	{
+		read(c, s, "initial_pose", pose);
+		require(pose.size() == 3, c, s, "initial_pose",
+			"three numbers [x y yaw_deg], or global (find it in the [Localization] map)");
+		initial_pose = {pose[0], pose[1], mrpt::DEG2RAD(pose[2])};
+	}
 	std::vector<double> sigma = {initial_pose_sigma[0], initial_pose_sigma[1],
 		mrpt::RAD2DEG(initial_pose_sigma[2])};
 	read(c, s, "initial_pose_sigma", sigma);
@@ -41,6 +47,12 @@ void PipelineOptions::loadFromConfigFile(
 mrpt::poses::CPosePDFGaussian PipelineOptions::initialPose() const
 {
 	mrpt::math::CMatrixDouble33 cov;
+	if (global_start)
+	{
+		cov(0, 0) = cov(1, 1) = kUnknownSigmaXY * kUnknownSigmaXY;
+		cov(2, 2) = M_PI * M_PI;
+		return mrpt::poses::CPosePDFGaussian(mrpt::poses::CPose2D(), cov);
+	}
 	for (int i = 0; i < 3; i++) cov(i, i) = initial_pose_sigma[i] * initial_pose_sigma[i];
 	return mrpt::poses::CPosePDFGaussian(
 		mrpt::poses::CPose2D(initial_pose[0], initial_pose[1], initial_pose[2]), cov);
@@ -53,10 +65,13 @@ void PipelineOptions::saveToConfigFile(
 	write(c, s, "estimator", estimator,
 		"odometry | matcher | ekf, or a class (featloc::EkfEstimator): how poses are "
 		"estimated (ekf parameters: [Ekf])");
-	write(c, s, "initial_pose",
-		std::vector<double>{
-			initial_pose[0], initial_pose[1], mrpt::RAD2DEG(initial_pose[2])},
-		"[m m deg] robot pose at the first scan");
+	if (global_start)
+		write(c, s, "initial_pose", std::string("global"),
+			"unknown: found in the [Localization] map");
+	else
+		write(c, s, "initial_pose",
+			std::vector<double>{initial_pose[0], initial_pose[1], mrpt::RAD2DEG(initial_pose[2])},
+			"[m m deg] robot pose at the first scan, or global (found in the [Localization] map)");
 	write(c, s, "initial_pose_sigma",
 		std::vector<double>{initial_pose_sigma[0], initial_pose_sigma[1],
 			mrpt::RAD2DEG(initial_pose_sigma[2])},

@@ -12,6 +12,11 @@ void RobotPathOptions::loadFromConfigFile(
 	using namespace featloc::config;
 	readChoice(c, s, "path", path, {"waypoints", "explore"});
 	readRows(c, s, "waypoints", waypoints, {2, 3});
+	readRows(c, s, "kidnap_waypoints", kidnap_waypoints, {2, 3});
+	require(kidnap_waypoints.empty() || kidnap_waypoints.size() >= 2, c, s, "kidnap_waypoints",
+		"empty, or at least two points [x y; x y]");
+	for (const auto& w : kidnap_waypoints)
+		require(w.size() == 2 || w[2] > 0, c, s, "kidnap_waypoints", "speeds (third column) > 0");
 	read(c, s, "initial_yaw_DEG", initial_yaw);
 	if (initial_yaw != "auto")
 	{
@@ -53,6 +58,9 @@ void RobotPathOptions::saveToConfigFile(
 	write(c, s, "path", path, "waypoints | explore (random goals in free space)");
 	writeRows(c, s, "waypoints", waypoints,
 		"[x y; ...] or [x y speed; ...] in m, m/s; the first is the start");
+	writeRows(c, s, "kidnap_waypoints", kidnap_waypoints,
+		"the kidnapped robot: after the path, carried (odometry blind) to the first of these "
+		"and driven through the others; empty: none");
 	write(c, s, "initial_yaw_DEG", initial_yaw,
 		"auto (face the second waypoint) or degrees");
 	write(c, s, "speed", speed, "[m/s] cruise speed");

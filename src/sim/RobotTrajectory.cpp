@@ -128,10 +128,34 @@ RobotTrajectory RobotTrajectory::fromOptions(
 		yaw = std::atan2(wps[1].y - wps[0].y, wps[1].x - wps[0].x);
 	else
 		yaw = mrpt::DEG2RAD(std::stod(o.initial_yaw));
-	return follow(wps, yaw, o);
+	RobotTrajectory traj = follow(wps, yaw, o);
+	if (o.kidnap_waypoints.empty()) return traj;
+	std::vector<Waypoint> kw;
+	for (const auto& r : o.kidnap_waypoints) kw.push_back({r[0], r[1], r.size() > 2 ? r[2] : o.speed});
+	auto second = std::make_shared<RobotTrajectory>(
+		follow(kw, std::atan2(kw[1].y - kw[0].y, kw[1].x - kw[0].x), o));
+	traj.m_duration += second->m_duration;
+	traj.m_length += second->m_length;
+	traj.m_kidnapped = std::move(second);
+	return traj;
 }
 
 mrpt::poses::CPose2D RobotTrajectory::poseAt(double t) const
+{
+	const double tk = kidnapTime();
+	if (m_kidnapped && t >= tk) return m_kidnapped->poseAt(t - tk);
+	return ownPoseAt(t);
+}
+
+mrpt::poses::CPose2D RobotTrajectory::wheelMotion(double t0, double t1) const
+{
+	const double tk = kidnapTime();
+	if (!m_kidnapped || t1 < tk || t0 >= tk) return poseAt(t1) - poseAt(t0);
+	// Up to the end of the first path, then from the start of the second.
+	return (ownPoseAt(tk) - ownPoseAt(t0)) + (m_kidnapped->poseAt(t1 - tk) - m_kidnapped->poseAt(0));
+}
+
+mrpt::poses::CPose2D RobotTrajectory::ownPoseAt(double t) const
 {
 	if (t <= 0) return m_samples.front().pose;
 	const size_t i = static_cast<size_t>(t / m_period);

@@ -287,7 +287,8 @@ Simulator::Result Simulator::run(
 	// one period past the last scan so that every scan is bracketed.
 	const double odoPeriod = 1.0 / m_odometry.rate;
 	double nextOdo = 0;
-	mrpt::poses::CPose2D odoPose = m_trajectory->poseAt(0), odoTruePrev = odoPose;
+	mrpt::poses::CPose2D odoPose = m_trajectory->poseAt(0);
+	double odoTruePrev = 0;  // [s] time of the previous reading
 	bool odoStarted = false;
 	auto writeOdometry = [&](double t, const mrpt::poses::CPose2D& pose) {
 		mrpt::obs::CObservationOdometry o;
@@ -300,10 +301,9 @@ Simulator::Result Simulator::run(
 	auto odometryUntil = [&](double tEnd) {
 		for (; nextOdo <= tEnd + 1e-12; nextOdo += odoPeriod)
 		{
-			const auto truth = m_trajectory->poseAt(nextOdo);
-			if (odoStarted) odoPose = odoPose + noisyIncrement(truth - odoTruePrev);
+			if (odoStarted) odoPose = odoPose + noisyIncrement(m_trajectory->wheelMotion(odoTruePrev, nextOdo));
 			odoStarted = true;
-			odoTruePrev = truth;
+			odoTruePrev = nextOdo;
 			writeOdometry(nextOdo, odoPose);
 		}
 	};
@@ -329,7 +329,7 @@ Simulator::Result Simulator::run(
 		nFrames = static_cast<size_t>(std::floor(lastScan / framePeriod + 1e-9)) + 1;
 	}
 
-	mrpt::poses::CPose2D prevTruth;
+	double prevT = 0;  // [s] the previous scan or frame
 	size_t k = 0, j = 0;  // next scan, next stereo frame
 	size_t events = 0;
 	while (k < nScans || j < nFrames)
@@ -343,20 +343,20 @@ Simulator::Result Simulator::run(
 		{
 			if (events > 0)
 			{
-				arch << *makeAction(noisyIncrement(truth - prevTruth), m_sim.t0 + t);
+				arch << *makeAction(noisyIncrement(m_trajectory->wheelMotion(prevT, t)), m_sim.t0 + t);
 				res.actions++;
 			}
 		}
 		else if (pairs)
 		{
-			if (events > 0) odoPose = odoPose + noisyIncrement(truth - prevTruth);
+			if (events > 0) odoPose = odoPose + noisyIncrement(m_trajectory->wheelMotion(prevT, t));
 			writeOdometry(t, odoPose);
 		}
 		else
 		{
 			odometryUntil(t);
 		}
-		prevTruth = truth;
+		prevT = t;
 		events++;
 
 		SimulatedScan scan;

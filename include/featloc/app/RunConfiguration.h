@@ -13,7 +13,7 @@
 
 namespace featloc
 {
-class MapScanTracker;
+class MapLocalizer;
 
 /** Everything one featloc-run reads from its ini file: one option struct
  * per section, plus the scan matcher named in [ScanMatcher] with its
@@ -34,8 +34,9 @@ struct RunConfiguration
 	LocalizationOptions localization;
 	/** With [Localization] map: the map read and a matcher of
 	 * [Localization] matcher_class (its parameters from its
-	 * [ScanMatcher.<Class>] section) to match scans against it; else null. */
-	std::shared_ptr<MapScanTracker> mapTracker;
+	 * [ScanMatcher.<Class>] section) to match scans against it, searching
+	 * first with `[Pipeline] initial_pose = global`; else null. */
+	std::shared_ptr<MapLocalizer> mapLocalizer;
 
 	/** Loads every section. Throws ConfigError on a bad value. (Unknown keys
 	 * are checked by the caller: TrackedConfig::requireAllKeysRead.) */

@@ -48,6 +48,22 @@ struct LocalizationOptions : public mrpt::config::CLoadableOptions
 	/** [rad] (degrees in the file) the same for yaw. */
 	double map_sigma_yaw = 0.2 * 3.14159265358979323846 / 180.0;
 
+	/** Global localization (`[Pipeline] initial_pose = global`, or once
+	 * lost; MapLocalizer): the search's table cell [m]. */
+	double global_resolution = 0.05;
+	/** Scans in a row whose best poses agree with the odometry before the
+	 * robot is found. */
+	unsigned int global_confirm_scans = 3;
+	/** The last scan's best must score at least this share of its points
+	 * on the map... */
+	double global_min_score = 0.5;
+	/** ...and its best rival (another place or heading) less than this
+	 * times the best. */
+	double global_rival_ratio = 0.9;
+	/** Tracking is lost after this many scans in a row without a usable
+	 * map match (failed or rejected by the gate); 0: never. */
+	unsigned int lost_after_scans = 5;
+
 	bool enabled() const { return !map.empty(); }
 
 	void loadFromConfigFile(

@@ -57,9 +57,12 @@ class CorrelationTables
 	 * split in four, as Cartographer's fast correlative matcher): every
 	 * full-resolution pose of `w` whose score reaches keepRatio x the best,
 	 * best first (keepRatio 1: the best only, and its equals). The points
-	 * (px, py) are in the frame of the pose searched for. */
+	 * (px, py) are in the frame of the pose searched for. Poses for which
+	 * `excluded` is true are skipped (a second search for the best rival
+	 * of a solution). */
 	std::vector<Candidate> search(const std::vector<double>& px, const std::vector<double>& py,
-		const Window& w, double keepRatio) const;
+		const Window& w, double keepRatio,
+		const std::function<bool(const mrpt::poses::CPose2D&)>& excluded = {}) const;
 
 	/** Mean level-0 table value under the points placed by `pose`. */
 	double score(const std::vector<double>& px, const std::vector<double>& py,

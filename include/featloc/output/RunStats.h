@@ -63,6 +63,16 @@ struct RunStats
 	std::map<std::string, size_t> mapMatchFailuresByKind;
 	std::vector<std::string> mapRejectionExamples;
 	std::vector<double> mapMatchTimes;	//!< [s] per map match
+	/** "found at scan 3 (entry #7): at (...)", "lost at scan 90 ...": when
+	 * the robot was found in the map, lost, and found again. */
+	std::vector<std::string> localizationEvents;
+	size_t globalSearches = 0;
+	/** With `initial_pose = global`: the log time [s since the epoch] of
+	 * the step where the robot was first found (before it the estimate is
+	 * not in the map's frame); negative while not found. */
+	double firstFoundTime = -1;
+	bool globalStart = false;
+	std::vector<double> globalSearchTimes;	//!< [s] per global search
 	std::vector<unsigned int> matchIterations;
 	/** [s] per step after the first: the estimator's own work (prediction,
 	 * fusion, landmarks), the matcher's time excluded. */

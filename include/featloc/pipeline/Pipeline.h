@@ -6,7 +6,7 @@
 #include "featloc/estimators/PoseEstimator.h"
 #include "featloc/io/EntrySource.h"
 #include "featloc/io/InputOptions.h"
-#include "featloc/localization/MapScanTracker.h"
+#include "featloc/localization/MapLocalizer.h"
 #include "featloc/matchers/ScanMatcher.h"
 #include "featloc/odometry/OdometryCovarianceCheck.h"
 #include "featloc/odometry/OdometryOptions.h"
@@ -37,10 +37,11 @@ class Pipeline
 		InputOptions input, OdometryOptions odometry, PipelineOptions options,
 		PoseEstimator::Ptr estimator, ScanMatcher::Ptr matcher);
 
-	/** Localization in a known map: every scan is also matched against the
-	 * map around the estimate and the estimator fuses it as an absolute
-	 * pose (it must fusesAbsolutePoses()). Before run(). */
-	void setMapTracker(std::shared_ptr<MapScanTracker> tracker);
+	/** Localization in a known map (MapLocalizer): every scan is matched
+	 * against the map around the estimate and the estimator fuses it as an
+	 * absolute pose (it must fusesAbsolutePoses()), or, while the pose is
+	 * unknown, searched for in the whole map. Before run(). */
+	void setMapLocalizer(std::shared_ptr<MapLocalizer> localizer);
 
 	/** Processes the whole source. Every output receives every entry and
 	 * step and then finish(), once, also when the run fails; the error is
@@ -63,10 +64,9 @@ class Pipeline
 	PipelineOptions m_options;
 	PoseEstimator::Ptr m_estimator;
 	ScanMatcher::Ptr m_matcher;
-	std::shared_ptr<MapScanTracker> m_mapTracker;
-	/** The step's scan against the map: fused by the estimator, counted. */
-	void trackInMap(const EstimationStep& step, MapScanTracker::Result& result, bool& used,
-		std::string& reason, RunStats& stats);
+	std::shared_ptr<MapLocalizer> m_mapLocalizer;
+	/** The step in the map (MapLocalizer::process), counted. */
+	MapLocalizer::Outcome localizeInMap(const EstimationStep& step, RunStats& stats);
 	bool isNewKeyframe(const MatchResult* match) const;
 	/** The step's odometry when it came from format #1 actions, else zero. */
 	static mrpt::poses::CPose2D actionStep(const EstimationStep& step);

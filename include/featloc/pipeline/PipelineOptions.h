@@ -19,13 +19,18 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	/** Robot pose at the first scan: x [m], y [m], yaw [rad] in memory
 	 * (degrees in the file). */
 	std::vector<double> initial_pose = {0, 0, 0};
+	/** `initial_pose = global`: the pose is unknown and is found in the
+	 * [Localization] map (MapLocalizer's global search); until then the
+	 * estimate starts at the origin with a covariance that says so. */
+	bool global_start = false;
 	/** Standard deviations of initial_pose: x [m], y [m], yaw [rad] in
 	 * memory (degrees in the file). Zero: the run's origin, exact (motion
 	 * relative to the start); in a known map ([Localization] map), how well
 	 * the start in the map is known, so the first map matches can correct
 	 * it. */
 	std::vector<double> initial_pose_sigma = {0, 0, 0};
-	/** initial_pose with the covariance of initial_pose_sigma. */
+	/** initial_pose with the covariance of initial_pose_sigma (global
+	 * start: the origin, sigma kUnknownSigmaXY and pi). */
 	mrpt::poses::CPosePDFGaussian initialPose() const;
 	/** The scan matcher matches each scan against a reference (keyframe)
 	 * scan, replaced when the estimated motion since it reaches
@@ -37,6 +42,7 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	 * 7.2 m with every scan a keyframe on MRPT's simul.rawlog,
 	 * doc/benchmarks.md), so it is the default. */
 	double keyframe_distance = 1.0;
+	static constexpr double kUnknownSigmaXY = 1000.0;  //!< [m]
 	double keyframe_angle = 20.0 * M_PI / 180.0;
 
 	void loadFromConfigFile(

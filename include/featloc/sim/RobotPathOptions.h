@@ -33,6 +33,11 @@ struct RobotPathOptions : public mrpt::config::CLoadableOptions
 	double explore_clearance = 0.5;	 //!< [m]
 	std::vector<double> explore_start = {0, 0};	//!< [m m]
 	double control_period = 0.01;  //!< [s] integration step
+	/** The kidnapped robot: rows [x y] or [x y speed] (empty: none). When
+	 * the path above ends, the robot is carried to the first of these and
+	 * drives through the others; its odometry does not see the carrying
+	 * (wheels still: no motion), the ground truth does. */
+	std::vector<std::vector<double>> kidnap_waypoints;
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& c,

@@ -2,6 +2,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
 
+#include <memory>
 #include <vector>
 
 #include "featloc/sim/RobotPathOptions.h"
@@ -34,6 +35,11 @@ class RobotTrajectory
 		mrpt::random::CRandomGenerator& rng);
 
 	mrpt::poses::CPose2D poseAt(double t) const;
+	/** The motion the wheels make from t0 to t1 (t0 <= t1): the true
+	 * motion, except across a kidnapping, which the wheels do not see. */
+	mrpt::poses::CPose2D wheelMotion(double t0, double t1) const;
+	/** [s] when the robot is carried away, or a negative number (none). */
+	double kidnapTime() const { return m_kidnapped ? m_duration - m_kidnapped->m_duration : -1; }
 	double duration() const { return m_duration; }
 	double length() const { return m_length; }
 	const std::vector<Waypoint>& waypoints() const { return m_waypoints; }
@@ -44,6 +50,9 @@ class RobotTrajectory
 		mrpt::poses::CPose2D pose;	//!< at the start of the period
 		double v, w;  //!< controls during the period
 	};
+	/** The path driven after the kidnapping (from time kidnapTime()). */
+	std::shared_ptr<const RobotTrajectory> m_kidnapped;
+	mrpt::poses::CPose2D ownPoseAt(double t) const;
 	std::vector<Sample> m_samples;
 	std::vector<Waypoint> m_waypoints;
 	double m_period = 0.01;

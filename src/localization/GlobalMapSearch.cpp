@@ -1,0 +1,111 @@
+#include "featloc/localization/GlobalMapSearch.h"
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <opencv2/core.hpp>
+
+#include "featloc/math/PoseDifference.h"
+#include "featloc/scan/ScanPoints.h"
+
+namespace featloc
+{
+GlobalMapSearch::GlobalMapSearch(const LocalizationMap& map, const Options& options)
+	: m_options(options)
+{
+	const auto cells = map.occupiedCells();
+	double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+	for (const auto& p : cells)
+	{
+		xmin = std::min(xmin, p.x);
+		xmax = std::max(xmax, p.x);
+		ymin = std::min(ymin, p.y);
+		ymax = std::max(ymax, p.y);
+	}
+	const double res = m_options.resolution;
+	m_cx = 0.5 * (xmin + xmax);
+	m_cy = 0.5 * (ymin + ymax);
+	m_nx = static_cast<int>(std::ceil(0.5 * (xmax - xmin) / res));
+	m_ny = static_cast<int>(std::ceil(0.5 * (ymax - ymin) / res));
+	const int top = CorrelationTables::kMaxLevel;
+	// Every pose searched is inside the map's box; a block's bound reads up
+	// to one top-level block beyond a point's cell, and scans reach out of
+	// the box by up to their range: the table covers the box, a margin of
+	// the table's width and one top-level block.
+	const double margin = 3 * m_options.hitSigma + static_cast<double>(1 << top) * res;
+	const double x0 = xmin - margin, y0 = ymin - margin;
+	const int width = static_cast<int>(std::ceil((xmax + margin - x0) / res)) + 1;
+	const int height = static_cast<int>(std::ceil((ymax + margin - y0) / res)) + 1;
+	m_tables.build(width, height, x0, y0, res, m_options.hitSigma, top, [&](cv::Mat& surface) {
+		for (const auto& p : cells)
+			surface.at<uint8_t>(static_cast<int>((p.y - y0) / res), static_cast<int>((p.x - x0) / res)) = 0;
+	});
+}
+
+void GlobalMapSearch::robotFramePoints(
+	const mrpt::obs::CObservation2DRangeScan& scan, std::vector<double>& x, std::vector<double>& y) const
+{
+	x.clear();
+	y.clear();
+	const ScanPoints pts = ScanPoints::fromScan(scan);
+	const mrpt::poses::CPose2D sensor(scan.sensorPose);
+	const size_t n = pts.size(), m = std::min<size_t>(n, m_options.maxPoints);
+	for (size_t k = 0; k < m; k++)
+	{
+		const auto& p = pts.points[k * n / m];
+		double gx = 0, gy = 0;
+		sensor.composePoint(p.x, p.y, gx, gy);
+		x.push_back(gx);
+		y.push_back(gy);
+	}
+}
+
+double GlobalMapSearch::score(
+	const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& pose) const
+{
+	std::vector<double> x, y;
+	robotFramePoints(scan, x, y);
+	return m_tables.score(x, y, pose);
+}
+
+GlobalMapSearch::Result GlobalMapSearch::search(const mrpt::obs::CObservation2DRangeScan& scan) const
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	Result r;
+	std::vector<double> x, y;
+	robotFramePoints(scan, x, y);
+	if (x.size() < 10) return r;
+	// Rotation step: one cell's motion at the 95th-percentile range (Olson).
+	std::vector<double> ranges;
+	for (size_t i = 0; i < x.size(); i++) ranges.push_back(std::hypot(x[i], y[i]));
+	auto p95 = ranges.begin() + static_cast<long>((ranges.size() - 1) * 95 / 100);
+	std::nth_element(ranges.begin(), p95, ranges.end());
+	const double res = m_tables.resolution();
+	CorrelationTables::Window w;
+	w.centre = mrpt::poses::CPose2D(m_cx, m_cy, 0);
+	w.nx = m_nx;
+	w.ny = m_ny;
+	w.yawStep = res / std::max(*p95, res);
+	w.nYaw = static_cast<int>(std::ceil(M_PI / w.yawStep));
+	const auto best = m_tables.search(x, y, w, 1.0);
+	if (best.empty()) return r;
+	r.valid = true;
+	r.best = best.front().pose;
+	r.best.normalizePhi();
+	r.bestScore = best.front().score;
+	const auto rival = m_tables.search(x, y, w, 1.0, [&](const mrpt::poses::CPose2D& p) {
+		const Eigen::Vector3d d = poseDifference(p, r.best);
+		return std::hypot(d[0], d[1]) <= m_options.distinctXY && std::abs(d[2]) <= m_options.distinctYaw;
+	});
+	if (!rival.empty())
+	{
+		r.rival = rival.front().pose;
+		r.rival.normalizePhi();
+		r.rivalScore = rival.front().score;
+	}
+	r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	return r;
+}
+}  // namespace featloc

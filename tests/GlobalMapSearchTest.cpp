@@ -1,0 +1,70 @@
+#include <gtest/gtest.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CSensoryFrame.h>
+
+#include <cmath>
+
+#include "featloc/eval/TrajectoryFile.h"
+#include "featloc/io/RawlogReader.h"
+#include "featloc/localization/GlobalMapSearch.h"
+#include "featloc/localization/LocalizationMapFile.h"
+#include "featloc/math/PoseDifference.h"
+#include "featloc/registerClasses.h"
+
+using namespace featloc;
+
+namespace
+{
+const std::string kRoot = FEATLOC_SOURCE_DIR;
+
+/** The scans of a featloc-sim rawlog (format #1) with their true poses. */
+std::vector<std::pair<mrpt::obs::CObservation2DRangeScan::Ptr, mrpt::poses::CPose2D>> scansWithTruth(
+	const std::string& prefix)
+{
+	registerClasses();
+	const Trajectory gt = TrajectoryFile::read(prefix + ".gt.txt");
+	std::vector<std::pair<mrpt::obs::CObservation2DRangeScan::Ptr, mrpt::poses::CPose2D>> out;
+	RawlogReader reader(prefix + ".rawlog");
+	RawlogEntry e;
+	while (reader.next(e))
+		if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(e.object))
+			if (auto scan = sf->getObservationByClass<mrpt::obs::CObservation2DRangeScan>())
+			{
+				const auto& p = gt.poses[out.size()].pose;
+				out.emplace_back(scan, mrpt::poses::CPose2D(p.x, p.y, p.phi));
+			}
+	return out;
+}
+}  // namespace
+
+TEST(GlobalMapSearch, FindsTheRobotAnywhereInTheOfficeFromOneScanOrSaysItIsAmbiguous)
+{
+	LocalizationOptions o;
+	o.map = kRoot + "/worlds/office.ini";
+	const LocalizationMap map = LocalizationMapFile::load(o);
+	const GlobalMapSearch search(map, GlobalMapSearch::Options{});
+	const auto scans = scansWithTruth(kRoot + "/rawlogs/sim/office");
+	size_t right = 0, wrong = 0, wrongUnambiguous = 0, n = 0;
+	double seconds = 0;
+	for (size_t k = 0; k < scans.size(); k += 37)
+	{
+		const auto r = search.search(*scans[k].first);
+		ASSERT_TRUE(r.valid);
+		n++;
+		seconds += r.seconds;
+		const Eigen::Vector3d d = poseDifference(r.best, scans[k].second);
+		const bool ok = std::hypot(d[0], d[1]) < 0.2 && std::abs(d[2]) < 0.0873;
+		right += ok ? 1 : 0;
+		if (!ok)
+		{
+			wrong++;
+			wrongUnambiguous += r.rivalScore < 0.9 * r.bestScore ? 1 : 0;
+			std::printf("scan %zu: best %s (%.2f), rival %s (%.2f), truth %s\n", k,
+				r.best.asString().c_str(), r.bestScore, r.rival.asString().c_str(), r.rivalScore,
+				scans[k].second.asString().c_str());
+		}
+	}
+	std::printf("%zu of %zu scans right, %zu wrong (%zu of them without a close rival); %.2f s per search\n",
+		right, n, wrong, wrongUnambiguous, seconds / n);
+	EXPECT_GT(right, n / 2);
+}
