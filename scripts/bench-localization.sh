@@ -9,16 +9,30 @@
 #     MRPT's pf-localization (CMonteCarloLocalization2D, its demo settings,
 #     the same simplemap, started from the same pose) on the same log;
 #  2. the office path driven 1 and 10 laps, localized in the world file:
-#     the error must not grow with the run's length.
+#     the error must not grow with the run's length;
+#  3. global localization ([Pipeline] initial_pose = global) from N random
+#     starts in the office and the lab (a random free pose, then random
+#     goals; 30 scans), featloc and pf-localization (particles uniform over
+#     the free cells, the demo's 40000) in the same gridmap of the world
+#     (featloc-sim --gridmap 0.05): found within 10 scans and right
+#     (0.2 m / 5 deg), found later, never found, and false confirmations (a
+#     "found" that is wrong; pf-localization: its first step with
+#     sqrt(trace(cov)) < 0.2 counts as its "found"). The starts are seeds
+#     101.. by default: seeds 1-100 of the office are where
+#     global_min_evidence was chosen. Then the kidnapped robot (carried
+#     across the office, odometry blind): lost and found again.
 # Every featloc run starts from the ground truth's first pose known to
 # 0.1 m / 3 deg ([Pipeline] initial_pose_sigma); pf-localization's particles
 # start uniform over the same +-0.1 m / +-3 deg.
-# Usage: scripts/bench-localization.sh [OUTDIR] [PF_PARTICLES (default 2000)]
-# Takes about 3 minutes on 2 cores.
+# Usage: scripts/bench-localization.sh [OUTDIR] [PF_PARTICLES (default 2000)] [STARTS (default 100)]
+#   [FIRST_START_SEED (default 101)]
+# Takes about 10 minutes on 2 cores.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-localization "$@"
 PARTICLES="${2:-2000}"
+STARTS="${3:-100}"
+FIRST="${4:-101}"
 command -v pf-localization >/dev/null || { echo "pf-localization (mrpt-apps) is missing: run scripts/setup.sh"; exit 1; }
 
 # People walking the office corridor both ways, and the lab's aisles.
@@ -51,25 +65,52 @@ perscan() { jq -r '.wall_time_s / .counts.scans * 1000 | . * 100 | floor / 100' 
 # pf-localization does not run the filter on the first action/frame pair and
 # reports the initial PDF there, so its particles start at the first pair's
 # scan (ground-truth row 1) and estimate k belongs to row k + 1.
-pf() { # prefix map out
-  local p="$1" map="$2" out="$3"
+pf() { # prefix map out [global]
+  local p="$1" map="$2" out="$3" mode="${4:-tracking}"
   mkdir -p "$out"
   awk '!/^#/ && k++ >= 1 {printf "%s %s %s %.9f\n", $1, $2, $3, 2*atan2($7,$8)}' "$p.gt.txt" > "$out/gt4.txt"
-  read -r x y yaw <<<"$(gt_pose "$p.gt.txt" 1)"
+  local init
+  if [ "$mode" = global ]; then
+    # Uniform over the free cells of the whole map, the demo's 40000 particles.
+    init=(-e "s#^particles_count=.*#particles_count=40000#" -e "s#^init_PDF_mode=.*#init_PDF_mode=0#"
+      -e "s#^init_PDF_min_x=.*#init_PDF_min_x=-5#" -e "s#^init_PDF_max_x=.*#init_PDF_max_x=45#"
+      -e "s#^init_PDF_min_y=.*#init_PDF_min_y=-5#" -e "s#^init_PDF_max_y=.*#init_PDF_max_y=25#")
+  else
+    read -r x y yaw <<<"$(gt_pose "$p.gt.txt" 1)"
+    init=(-e "s#^particles_count=.*#particles_count=$PARTICLES#" -e "s#^init_PDF_mode=.*#init_PDF_mode=1#"
+      -e "s#^init_PDF_min_x=.*#init_PDF_min_x=$(echo "$x - 0.1" | bc -l)#" -e "s#^init_PDF_max_x=.*#init_PDF_max_x=$(echo "$x + 0.1" | bc -l)#"
+      -e "s#^init_PDF_min_y=.*#init_PDF_min_y=$(echo "$y - 0.1" | bc -l)\ninit_PDF_min_yaw_deg=$(echo "$yaw - 3" | bc -l)\ninit_PDF_max_yaw_deg=$(echo "$yaw + 3" | bc -l)#"
+      -e "s#^init_PDF_max_y=.*#init_PDF_max_y=$(echo "$y + 0.1" | bc -l)#")
+  fi
   sed -e "s#^map_file=.*#map_file=$map#" -e "s#^rawlog_file=.*#rawlog_file=$p.rawlog#" \
     -e "s#^logOutput_dir=.*#logOutput_dir=$out/LOG\nground_truth_path_file=$out/gt4.txt#" \
-    -e "s#^particles_count=.*#particles_count=$PARTICLES#" -e "s#^init_PDF_mode=.*#init_PDF_mode=1#" \
     -e "s#^3DSceneFrequency=.*#3DSceneFrequency=-1#" \
-    -e "s#^SHOW_PROGRESS_3D_REAL_TIME *=.*#SHOW_PROGRESS_3D_REAL_TIME=false#" \
-    -e "s#^init_PDF_min_x=.*#init_PDF_min_x=$(echo "$x - 0.1" | bc -l)#" -e "s#^init_PDF_max_x=.*#init_PDF_max_x=$(echo "$x + 0.1" | bc -l)#" \
-    -e "s#^init_PDF_min_y=.*#init_PDF_min_y=$(echo "$y - 0.1" | bc -l)\ninit_PDF_min_yaw_deg=$(echo "$yaw - 3" | bc -l)\ninit_PDF_max_yaw_deg=$(echo "$yaw + 3" | bc -l)#" \
-    -e "s#^init_PDF_max_y=.*#init_PDF_max_y=$(echo "$y + 0.1" | bc -l)#" \
+    -e "s#^SHOW_PROGRESS_3D_REAL_TIME *=.*#SHOW_PROGRESS_3D_REAL_TIME=false#" "${init[@]}" \
     /usr/share/mrpt/config_files/pf-localization/localization_demo.ini > "$out/pf.ini"
   (cd "$out" && pf-localization pf.ini > pf.log 2>&1)
-  grep "PDF estimation" "$out/pf.log" | sed -E 's/.*PDF estimation: \(([^,]+),([^,]+),([^d]+)deg\).*/\1 \2 \3/' |
-    awk 'NR==FNR{t[NR]=$1; next} {printf "%s %s %s 0 0 0 %.12f %.12f\n", t[FNR], $1, $2, sin($3*3.14159265358979/360), cos($3*3.14159265358979/360)}' \
-      "$out/gt4.txt" - > "$out/trajectory.tum"
-  "$BIN/featloc-eval" "$p.gt.txt" "$out/trajectory.tum" --no-align --json > "$out/eval.json"
+  grep "PDF estimation" "$out/pf.log" | sed -E 's/.*PDF estimation: \(([^,]+),([^,]+),([^d]+)deg\).*tr\(cov\): ([-0-9.e]+).*/\1 \2 \3 \4/' > "$out/means.txt"
+  awk 'NR==FNR{t[NR]=$1; next} {printf "%s %s %s 0 0 0 %.12f %.12f\n", t[FNR], $1, $2, sin($3*3.14159265358979/360), cos($3*3.14159265358979/360)}' \
+    "$out/gt4.txt" "$out/means.txt" > "$out/trajectory.tum"
+  [ "$mode" = global ] || "$BIN/featloc-eval" "$p.gt.txt" "$out/trajectory.tum" --no-align --json > "$out/eval.json"
+}
+# pf-localization's first step whose particles have converged (sqrt of the
+# covariance's trace under 0.2) and whether its mean is right there (0.2 m,
+# 5 deg): "STEP RIGHT" (STEP -1: never). Step k is ground-truth row k + 1.
+pf_converged() { # out gt
+  python3 - "$1/means.txt" "$2" <<'PY'
+import math, sys
+gt = [l.split() for l in open(sys.argv[2]) if not l.startswith("#") and l.strip()]
+for k, l in enumerate(open(sys.argv[1])):
+    x, y, w, tr = map(float, l.split())
+    if k == 0 or tr >= 0.2 or k + 1 >= len(gt):
+        continue
+    g = gt[k + 1]
+    a = (w - math.degrees(2 * math.atan2(float(g[6]), float(g[7]))) + 180) % 360 - 180
+    print(k + 1, int(math.hypot(x - float(g[1]), y - float(g[2])) < 0.2 and abs(a) < 5))
+    break
+else:
+    print(-1, 0)
+PY
 }
 pf_ate() { jq -r '"\(.ate_m.rmse*1000|floor) / \(.ate_m.max*1000|floor)"' "$1/eval.json"; }
 pf_time() { awk '{s+=$1; n++} END{printf "%.2f", 1000*s/n}' "$1"/LOG_000_*/exec_times.txt; }
@@ -107,5 +148,81 @@ for laps in 1 10; do
   loc "$OUT/office-laps$laps" "$OUT/office-laps$laps-world" "$ROOT/worlds/office.ini"
   echo "| $laps lap(s) | $(jq -r .counts.scans "$OUT/office-laps$laps-world/summary.json") | $(ate "$OUT/office-laps$laps-world") |"
 done
+
+# Global localization: the first "found" event's scan and whether it is
+# within 0.2 m / 5 deg of the ground truth there; every found event judged.
+# Prints "FIRST_SCAN FIRST_RIGHT WRONG_FOUNDS" (FIRST_SCAN -1: never found).
+judge_found() { # out gt
+  python3 - "$1/summary.json" "$2" <<'PY'
+import json, math, re, sys
+events = json.load(open(sys.argv[1])).get("localization", {}).get("events", [])
+gt = [l.split() for l in open(sys.argv[2]) if not l.startswith("#") and l.strip()]
+first, first_right, wrong = -1, 0, 0
+for e in events:
+    m = re.match(r"found at scan (\d+) .*?: at \(([-0-9.]+) m, ([-0-9.]+) m, ([-0-9.]+) deg\)", e)
+    if not m:
+        continue
+    k, x, y, w = int(m.group(1)), float(m.group(2)), float(m.group(3)), float(m.group(4))
+    g = gt[k]
+    gw = math.degrees(2 * math.atan2(float(g[6]), float(g[7])))
+    a = (w - gw + 180) % 360 - 180
+    right = math.hypot(x - float(g[1]), y - float(g[2])) < 0.2 and abs(a) < 5
+    if first < 0:
+        first, first_right = k, int(right)
+    wrong += 0 if right else 1
+print(first, first_right, wrong)
+PY
+}
+echo
+echo "| world | random starts (seeds) | localizer | found within 10 scans, right | found later, right | never found (30 scans) | false confirmations | time per scan [s] (mean) |"
+echo "|---|---|---|---|---|---|---|---|"
+for world in office lab; do
+  "$BIN/featloc-sim" "$ROOT/worlds/$world.ini" --out "$OUT/$world-map" -q --gridmap 0.05 --set Simulation:max_scans=1 >/dev/null
+  GRID="$OUT/$world-map.gridmap.gz"
+  within=0; later=0; never=0; wrong=0; searchTime=0
+  pwithin=0; plater=0; pnever=0; pwrong=0; pfTime=0
+  for i in $(seq "$FIRST" $((FIRST + STARTS - 1))); do
+    # A random start in free space: candidates drawn until the simulator
+    # accepts one (explore_start needs its clearance).
+    for attempt in $(seq 0 50); do
+      read -r sx sy <<<"$(awk -v s=$((i * 100 + attempt)) -v w="$world" 'BEGIN{srand(s);
+        if (w=="office") printf "%.2f %.2f", 0.5+rand()*39, 0.5+rand()*15; else printf "%.2f %.2f", 0.5+rand()*13, 0.5+rand()*9}')"
+      if "$BIN/featloc-sim" "$ROOT/worlds/$world.ini" --out "$OUT/global-$world-$i" -q --seed "$i" \
+          --set Robot:path=explore --set "Robot:explore_start=[$sx $sy]" --set Robot:explore_goals=3 \
+          --set Robot:explore_clearance=0.4 --set Simulation:max_scans=30 >/dev/null 2>&1; then break; fi
+    done
+    "$BIN/featloc-run" "$ROOT/config.ini" "$OUT/global-$world-$i.rawlog" --out "$OUT/global-$world-$i-run" -q \
+      --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global --set Localization:map="$GRID" \
+      --set Output:write_rawlog=false --set Output:write_scene=false >/dev/null
+    read -r first right bad <<<"$(judge_found "$OUT/global-$world-$i-run" "$OUT/global-$world-$i.gt.txt")"
+    wrong=$((wrong + bad))
+    if [ "$first" -ge 0 ] && [ "$right" = 1 ] && [ "$first" -lt 10 ]; then within=$((within + 1));
+    elif [ "$first" -ge 0 ] && [ "$right" = 1 ]; then later=$((later + 1));
+    elif [ "$first" -lt 0 ]; then never=$((never + 1)); fi
+    searchTime=$(echo "$searchTime + $(jq -r '.wall_time_s / .counts.scans' "$OUT/global-$world-$i-run/summary.json")" | bc -l)
+    pf "$OUT/global-$world-$i" "$GRID" "$OUT/global-$world-$i-pf" global
+    read -r step ok <<<"$(pf_converged "$OUT/global-$world-$i-pf" "$OUT/global-$world-$i.gt.txt")"
+    if [ "$step" -lt 0 ]; then pnever=$((pnever + 1));
+    elif [ "$ok" = 0 ]; then pwrong=$((pwrong + 1));
+    elif [ "$step" -lt 10 ]; then pwithin=$((pwithin + 1)); else plater=$((plater + 1)); fi
+    pfTime=$(echo "$pfTime + $(awk '{s+=$1; n++} END{print (n ? s/n : 0)}' "$OUT"/global-$world-$i-pf/LOG_000_*/exec_times.txt)" | bc -l)
+  done
+  seeds="$FIRST-$((FIRST + STARTS - 1))"
+  echo "| $world | $STARTS ($seeds) | featloc | $within | $later | $never | $wrong | $(fmt "$(echo "$searchTime / $STARTS" | bc -l)" 3) (whole run) |"
+  echo "| $world | $STARTS ($seeds) | pf-localization | $pwithin | $plater | $pnever | $pwrong | $(fmt "$(echo "$pfTime / $STARTS" | bc -l)" 3) (filter step) |"
+done
+
+echo
+echo "| kidnapped robot (office) | events |"
+echo "|---|---|"
+"$BIN/featloc-sim" "$ROOT/worlds/office.ini" --out "$OUT/kidnap" -q --seed 9 \
+  --set 'Robot:waypoints=[3 8; 15 8; 17.6 8; 17.6 11; 18.5 13.5]' \
+  --set 'Robot:kidnap_waypoints=[30 8; 22 8; 21 8; 21 8.5; 27.5 8; 27.5 5.5; 29.5 3]' >/dev/null
+"$BIN/featloc-run" "$ROOT/config.ini" "$OUT/kidnap.rawlog" --out "$OUT/kidnap-run" -q \
+  --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global --set Localization:map="$ROOT/worlds/office.ini" \
+  --set Evaluation:ground_truth="$OUT/kidnap.gt.txt" --set Evaluation:align=false >/dev/null
+jq -r '.localization.events[]' "$OUT/kidnap-run/summary.json" | sed 's/^/| | /; s/$/ |/'
+read -r first right bad <<<"$(judge_found "$OUT/kidnap-run" "$OUT/kidnap.gt.txt")"
+echo "| | wrong founds: $bad; ATE median after the first found $(jq -r '.evaluation.ate_m.median * 1000 | floor' "$OUT/kidnap-run/summary.json") mm |"
 echo
 echo "results in $OUT"

@@ -321,3 +321,30 @@ TEST(LocalizationApp, GlobalStartNeedsAMap)
 	EXPECT_NE(r.output.find("initial_pose"), std::string::npos) << r.output;
 	EXPECT_NE(r.output.find("[Localization] map is empty"), std::string::npos) << r.output;
 }
+
+// Two identical rooms: while the robot, in the east one, faces the north
+// wall, the scans fit both rooms equally, and the search must not pick
+// one; once it looks out of the door at the corridor (whose box is to the
+// east), it is found, in the right room.
+TEST(LocalizationApp, IdenticalRoomsAreNotConfirmedUntilTheScansTellThemApart)
+{
+	TempDir dir;
+	const std::string world = std::string(FEATLOC_SOURCE_DIR) + "/tests/data/worlds/twin-rooms.ini";
+	const std::string p = dir.file("twin");
+	CommandResult r = runCommand(shellQuote(kSim) + " " + shellQuote(world) + " --out " + shellQuote(p) + " -q");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const std::string out = dir.file("run");
+	r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " + shellQuote(p + ".rawlog") +
+		" --out " + shellQuote(out) +
+		" -q --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global --set Localization:map=" +
+		shellQuote(world) + " --set Evaluation:ground_truth=" + shellQuote(p + ".gt.txt") +
+		" --set Evaluation:align=false");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto events = eventsOf(out);
+	ASSERT_EQ(events.size(), 1u) << r.output;
+	ASSERT_EQ(events[0].kind, "found");
+	const auto t = truthAt(p + ".gt.txt", events[0].scan);
+	EXPECT_TRUE(near(events[0], t)) << r.output;
+	// Measured: found at scan 48, at the door facing the corridor.
+	EXPECT_LT(t[1], 1.0) << "found inside the room, where the two rooms look alike: " << r.output;
+}

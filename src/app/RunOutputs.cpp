@@ -1,6 +1,7 @@
 #include "featloc/app/RunOutputs.h"
 
 #include "featloc/app/RunConfiguration.h"
+#include "featloc/localization/MapLocalizer.h"
 #include "featloc/output/EstimatedRawlogWriter.h"
 #include "featloc/output/LandmarkTableWriter.h"
 #include "featloc/output/MatchTableWriter.h"
@@ -41,7 +42,9 @@ RunOutputs RunOutputs::make(const RunConfiguration& rc, const ResultsFolder& fol
 			"estimated.rawlog");
 	if (rc.output.write_scene)
 		add(std::make_unique<ScanMapSceneWriter>(folder.stagedFile("map.3Dscene"),
-				rc.output.scene_scan_decimation, rc.output.scene_ellipse_every),
+				rc.output.scene_scan_decimation, rc.output.scene_ellipse_every,
+				rc.mapLocalizer ? rc.mapLocalizer->map().occupiedCells()
+								: std::vector<mrpt::math::TPoint2D>{}),
 			"map.3Dscene");
 	if (rc.output.write_simplemap)
 		add(std::make_unique<SimpleMapWriter>(folder.stagedFile("map.simplemap")), "map.simplemap");

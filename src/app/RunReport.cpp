@@ -11,6 +11,7 @@
 #include "featloc/eval/ErrorStats.h"
 #include "featloc/eval/TrajectoryEvaluator.h"
 #include "featloc/eval/TrajectoryPlot.h"
+#include "featloc/localization/MapLocalizer.h"
 #include "featloc/output/ResultsFolder.h"
 #include "featloc/output/SummaryJsonWriter.h"
 
@@ -119,6 +120,8 @@ void RunReport::evaluateAndPlot(
 	const ResultsFolder& folder, const RunStats& stats, SummaryJsonWriter& summary)
 {
 	if (stats.steps == 0) return;
+	const std::vector<mrpt::math::TPoint2D> map =
+		rc.mapLocalizer ? rc.mapLocalizer->map().occupiedCells() : std::vector<mrpt::math::TPoint2D>{};
 	Trajectory est = TrajectoryFile::read(folder.stagedFile("poses_cov.txt"));
 	est.source = folder.finalFile("poses_cov.txt");	// where the user will find it
 	char title[160];
@@ -126,7 +129,7 @@ void RunReport::evaluateAndPlot(
 	{
 		std::snprintf(title, sizeof(title), "%s: %zu poses (no ground truth)",
 			stats.estimator.c_str(), est.poses.size());
-		TrajectoryPlot::write(folder.stagedFile("trajectory.png"), Trajectory{}, est, {}, title);
+		TrajectoryPlot::write(folder.stagedFile("trajectory.png"), Trajectory{}, est, {}, title, map);
 		return;
 	}
 	if (stats.globalStart)
@@ -150,7 +153,7 @@ void RunReport::evaluateAndPlot(
 	std::snprintf(title, sizeof(title), "%s: ATE rmse %.3f m over %zu poses",
 		stats.estimator.c_str(), rep.ate.rmse, rep.associated);
 	TrajectoryPlot::write(
-		folder.stagedFile("trajectory.png"), reference->trajectory, est, rep.alignment, title);
+		folder.stagedFile("trajectory.png"), reference->trajectory, est, rep.alignment, title, map);
 }
 
 }  // namespace featloc

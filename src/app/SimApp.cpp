@@ -1,5 +1,9 @@
+#include "featloc/localization/LocalizationMapFile.h"
 #include "featloc/app/SimApp.h"
 
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/serialization/CArchive.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <unistd.h>
 
@@ -117,6 +121,11 @@ int SimApp::main(int argc, char** argv)
 	TCLAP::ValueArg<unsigned> argOdometryPort("", "odometry-port",
 		"--serve: the odometry's TCP port (0: a robot without odometry)", false, 10950,
 		"PORT", cmd);
+	TCLAP::ValueArg<double> argGridmap("", "gridmap",
+		"Also write the world's walls and obstacles as an MRPT occupancy grid, PREFIX.gridmap.gz, "
+		"with cells of this size [m] (a known map for pf-localization and featloc-run's "
+		"[Localization] map)",
+		false, 0, "METRES", cmd);
 	TCLAP::MultiArg<std::string> argLaserFault("", "laser-fault",
 		"--serve: inject a laser fault at a time of the log [s]: outage@T:D (the link "
 		"drops and connections are refused for D s), stall@T:D (link up, the device "
@@ -152,6 +161,8 @@ int SimApp::main(int argc, char** argv)
 	}
 	if (!serveOptions.laserFaults.empty() && !argServe.getValue())
 		throw UsageError("--laser-fault needs --serve");
+	if (argGridmap.isSet() && !(argGridmap.getValue() >= 0.005 && argGridmap.getValue() <= 1))
+		throw UsageError("--gridmap needs a cell size in [0.005, 1] m");
 
 	TrackedConfig cfg;
 	config.load(cfg, argWorld.getValue());
@@ -188,6 +199,22 @@ int SimApp::main(int argc, char** argv)
 		std::filesystem::path(argWorld.getValue()).filename().string() +
 			": robot path " + std::to_string(static_cast<int>(res.pathLength)) +
 			" m, " + std::to_string(res.scans) + " scans");
+	if (argGridmap.isSet())
+	{
+		// The walls as featloc-run draws a world file for [Localization]
+		// map (MRPT's grid frame: no half-cell shift).
+		LocalizationOptions lo;
+		lo.map = argWorld.getValue();
+		lo.grid_resolution = argGridmap.getValue();
+		const LocalizationMap map = LocalizationMapFile::load(lo);
+		mrpt::maps::COccupancyGridMap2D grid(map.grid());
+		grid.setSize(grid.getXMin(), grid.getXMax(), grid.getYMin(), grid.getYMax(),
+			grid.getResolution(), 1.0f);
+		for (const auto& c : map.occupiedCells())
+			grid.setCell(grid.x2idx(static_cast<float>(c.x)), grid.y2idx(static_cast<float>(c.y)), 0.0f);
+		mrpt::io::CFileGZOutputStream f(prefix + ".gridmap.gz");
+		mrpt::serialization::archiveFrom(f) << grid;
+	}
 	const double secs =
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 

@@ -164,6 +164,15 @@ void MapCanvas::setResults(const RunResults& results)
 		scene->insert(m_levels.back().second);
 	}
 
+	// A known map (localization in a map), under the scans.
+	if (!results.mapCells.empty())
+	{
+		std::vector<mrpt::math::TPoint3Df> cells;
+		for (const auto& c : results.mapCells)
+			cells.emplace_back(static_cast<float>(c.x), static_cast<float>(c.y), -0.005f);
+		scene->insert(cloud(cells, kKnownMap, kPixelsPerCell));
+	}
+
 	std::vector<mrpt::math::TPose2D> est, gt;
 	for (const auto& s : results.steps) est.push_back(s.pose);
 	if (results.groundTruth)

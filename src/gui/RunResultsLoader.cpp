@@ -1,3 +1,4 @@
+#include "featloc/localization/LocalizationMapFile.h"
 #include "featloc/gui/RunResultsLoader.h"
 
 #include <mrpt/config/CConfigFile.h>
@@ -157,7 +158,8 @@ RunResults RunResultsLoader::load(
 		r.steps.push_back({p.t, p.pose, p.cov, nullptr, -1, -1});
 	if (r.steps.empty()) throw InputError(poses + ": no poses (the run processed no step)");
 
-	std::string poseLabel = "featloc_estimate", groundTruth, evaluatedReference;
+	std::string poseLabel = "featloc_estimate", groundTruth, evaluatedReference, mapFile;
+	LocalizationOptions localization;
 	optional("config_used.ini", [&](const std::string& path) {
 		mrpt::config::CConfigFile cfg(path);
 		r.configPath = path;
@@ -165,11 +167,14 @@ RunResults RunResultsLoader::load(
 		poseLabel = cfg.read_string("Output", "pose_label", poseLabel);
 		groundTruth = cfg.read_string("Evaluation", "ground_truth", "");
 		r.stereoExtractorClass = cfg.read_string("StereoLandmarks", "class", "");
+		if (cfg.sectionExists(LocalizationOptions::kSection))
+			localization.loadFromConfigFile(cfg, LocalizationOptions::kSection);
 	});
 	optional("summary.json", [&](const std::string& path) {
 		std::ifstream in(path);
 		const auto j = nlohmann::json::parse(in);
 		r.estimator = j.value("estimator", "");
+		if (j.contains("localization")) mapFile = j["localization"].value("map_file", "");
 		if (j.contains("evaluation"))
 			evaluatedReference = j["evaluation"].value("reference", "");
 		if (j.contains("evaluation"))
@@ -194,6 +199,16 @@ RunResults RunResultsLoader::load(
 			for (const auto& v : readNumberRows(path, 6))
 				r.landmarks.push_back({v[1], v[2], v[3], v[4], v[5]});  // id -1: unnamed by the sensor
 		});
+	if (!mapFile.empty())
+		try
+		{
+			localization.map = mapFile;	 // as the run resolved it
+			r.mapCells = LocalizationMapFile::load(localization).occupiedCells();
+		}
+		catch (const std::exception& e)
+		{
+			r.problems.push_back("the localization map: " + exceptionText(e));
+		}
 	if (!groundTruth.empty())
 	{
 		// The file the run evaluated against (absolute in summary.json),

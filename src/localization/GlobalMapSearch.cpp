@@ -24,24 +24,26 @@ GlobalMapSearch::GlobalMapSearch(const LocalizationMap& map, const Options& opti
 		ymin = std::min(ymin, p.y);
 		ymax = std::max(ymax, p.y);
 	}
-	const double res = m_options.resolution;
 	m_cx = 0.5 * (xmin + xmax);
 	m_cy = 0.5 * (ymin + ymax);
-	m_nx = static_cast<int>(std::ceil(0.5 * (xmax - xmin) / res));
-	m_ny = static_cast<int>(std::ceil(0.5 * (ymax - ymin) / res));
-	const int top = CorrelationTables::kMaxLevel;
+	m_nx = static_cast<int>(std::ceil(0.5 * (xmax - xmin) / m_options.resolution));
+	m_ny = static_cast<int>(std::ceil(0.5 * (ymax - ymin) / m_options.resolution));
 	// Every pose searched is inside the map's box; a block's bound reads up
-	// to one top-level block beyond a point's cell, and scans reach out of
-	// the box by up to their range: the table covers the box, a margin of
-	// the table's width and one top-level block.
-	const double margin = 3 * m_options.hitSigma + static_cast<double>(1 << top) * res;
-	const double x0 = xmin - margin, y0 = ymin - margin;
-	const int width = static_cast<int>(std::ceil((xmax + margin - x0) / res)) + 1;
-	const int height = static_cast<int>(std::ceil((ymax + margin - y0) / res)) + 1;
-	m_tables.build(width, height, x0, y0, res, m_options.hitSigma, top, [&](cv::Mat& surface) {
-		for (const auto& p : cells)
-			surface.at<uint8_t>(static_cast<int>((p.y - y0) / res), static_cast<int>((p.x - x0) / res)) = 0;
-	});
+	// to one top-level block beyond a point's cell: the table covers the
+	// box, a margin of the table's width and one top-level block.
+	auto build = [&](CorrelationTables& t, double res, double hitSigma, int top) {
+		const double margin = 3 * hitSigma + static_cast<double>(1 << top) * res;
+		const double x0 = xmin - margin, y0 = ymin - margin;
+		const int width = static_cast<int>(std::ceil((xmax + margin - x0) / res)) + 1;
+		const int height = static_cast<int>(std::ceil((ymax + margin - y0) / res)) + 1;
+		t.build(width, height, x0, y0, res, hitSigma, top, [&](cv::Mat& surface) {
+			for (const auto& p : cells)
+				surface.at<uint8_t>(static_cast<int>((p.y - y0) / res), static_cast<int>((p.x - x0) / res)) = 0;
+		});
+	};
+	build(m_tables, m_options.resolution, m_options.hitSigma, CorrelationTables::kMaxLevel);
+	// refine() searches a few cells around a hypothesis: three levels.
+	build(m_sharp, m_options.refineResolution, m_options.refineHitSigma, 3);
 }
 
 void GlobalMapSearch::robotFramePoints(
@@ -62,6 +64,37 @@ void GlobalMapSearch::robotFramePoints(
 	}
 }
 
+double GlobalMapSearch::yawStep(
+	const std::vector<double>& x, const std::vector<double>& y, double res)
+{
+	std::vector<double> ranges;
+	for (size_t i = 0; i < x.size(); i++) ranges.push_back(std::hypot(x[i], y[i]));
+	if (ranges.empty()) return 0.01;
+	auto p95 = ranges.begin() + static_cast<long>((ranges.size() - 1) * 95 / 100);
+	std::nth_element(ranges.begin(), p95, ranges.end());
+	return res / std::max(*p95, res);
+}
+
+GlobalMapSearch::Local GlobalMapSearch::refine(const mrpt::obs::CObservation2DRangeScan& scan,
+	const mrpt::poses::CPose2D& around, double halfXY, double halfYaw) const
+{
+	Local out{around, 0};
+	std::vector<double> x, y;
+	robotFramePoints(scan, x, y);
+	if (x.size() < 10) return out;
+	CorrelationTables::Window w;
+	w.centre = around;
+	w.yawStep = yawStep(x, y, m_sharp.resolution());
+	w.nx = w.ny = static_cast<int>(std::ceil(halfXY / m_sharp.resolution()));
+	w.nYaw = static_cast<int>(std::ceil(halfYaw / w.yawStep));
+	const auto best = m_sharp.search(x, y, w, 1.0);
+	if (best.empty()) return out;
+	out.pose = best.front().pose;
+	out.pose.normalizePhi();
+	out.score = best.front().score;
+	return out;
+}
+
 double GlobalMapSearch::score(
 	const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& pose) const
 {
@@ -77,17 +110,11 @@ GlobalMapSearch::Result GlobalMapSearch::search(const mrpt::obs::CObservation2DR
 	std::vector<double> x, y;
 	robotFramePoints(scan, x, y);
 	if (x.size() < 10) return r;
-	// Rotation step: one cell's motion at the 95th-percentile range (Olson).
-	std::vector<double> ranges;
-	for (size_t i = 0; i < x.size(); i++) ranges.push_back(std::hypot(x[i], y[i]));
-	auto p95 = ranges.begin() + static_cast<long>((ranges.size() - 1) * 95 / 100);
-	std::nth_element(ranges.begin(), p95, ranges.end());
-	const double res = m_tables.resolution();
 	CorrelationTables::Window w;
 	w.centre = mrpt::poses::CPose2D(m_cx, m_cy, 0);
 	w.nx = m_nx;
 	w.ny = m_ny;
-	w.yawStep = res / std::max(*p95, res);
+	w.yawStep = yawStep(x, y, m_tables.resolution());
 	w.nYaw = static_cast<int>(std::ceil(M_PI / w.yawStep));
 	const auto best = m_tables.search(x, y, w, 1.0);
 	if (best.empty()) return r;

@@ -21,13 +21,13 @@ void LocalizationOptions::loadFromConfigFile(
 	read(c, s, "global_resolution", global_resolution);
 	read(c, s, "global_confirm_scans", global_confirm_scans);
 	read(c, s, "global_min_score", global_min_score);
-	read(c, s, "global_rival_ratio", global_rival_ratio);
+	read(c, s, "global_min_evidence", global_min_evidence);
 	read(c, s, "lost_after_scans", lost_after_scans);
 	require(global_resolution >= 0.01 && global_resolution <= 0.5, c, s, "global_resolution",
 		"in [0.01, 0.5] [m]");
 	require(global_confirm_scans >= 1, c, s, "global_confirm_scans", ">= 1");
 	require(global_min_score > 0 && global_min_score <= 1, c, s, "global_min_score", "in (0, 1]");
-	require(global_rival_ratio > 0 && global_rival_ratio <= 1, c, s, "global_rival_ratio", "in (0, 1]");
+	require(global_min_evidence > 0, c, s, "global_min_evidence", "> 0");
 	require(grid_resolution > 0.001 && grid_resolution <= 1, c, s, "grid_resolution",
 		"in (0.001, 1] [m]");
 	require(image_resolution > 0.001 && image_resolution <= 10, c, s, "image_resolution",
@@ -66,11 +66,11 @@ void LocalizationOptions::saveToConfigFile(
 	write(c, s, "global_resolution", global_resolution,
 		"[m] global localization (initial_pose = global, or lost): the search's cell");
 	write(c, s, "global_confirm_scans", global_confirm_scans,
-		"global: scans in a row whose best poses agree with the odometry before the robot is found");
+		"global: found at a hypothesis whose last N scans (moved by odometry) each score...");
 	write(c, s, "global_min_score", global_min_score,
-		"global: the best pose puts at least this share of the scan on the map");
-	write(c, s, "global_rival_ratio", global_rival_ratio,
-		"global: the best rival elsewhere scores less than this times the best");
+		"global: ...at least this share of the scan on the map...");
+	write(c, s, "global_min_evidence", global_min_evidence,
+		"global: ...and whose scores over the search's scans exceed every other hypothesis's by this in total");
 	write(c, s, "lost_after_scans", lost_after_scans,
 		"tracking is lost after this many scans in a row without a usable map match (0: never)");
 }

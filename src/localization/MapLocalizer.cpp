@@ -3,6 +3,7 @@
 #include <mrpt/core/bits_math.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -42,12 +43,49 @@ void MapLocalizer::track(const EstimationStep& step, PoseEstimator& estimator, O
 	m_misses = out.used ? 0 : m_misses + 1;
 	if (m_options.lost_after_scans == 0 || m_misses < m_options.lost_after_scans) return;
 	m_tracking = false;
-	m_hypothesis.reset();
-	m_streak = 0;
+	m_hypotheses.clear();
+	m_window.clear();
+	m_odometrySince = mrpt::poses::CPose2D();
 	out.event = "lost";
 	out.message = std::to_string(m_misses) + " scans in a row without a usable map match (last: " +
 		out.reason + ")";
 	m_misses = 0;
+}
+
+double MapLocalizer::Hypothesis::total() const
+{
+	double sum = 0;
+	for (double v : scores) sum += v;
+	return sum;
+}
+
+MapLocalizer::Hypothesis MapLocalizer::backdated(const mrpt::poses::CPose2D& pose, double score) const
+{
+	Hypothesis h{pose, {score}};
+	mrpt::poses::CPose2D at = pose;
+	for (size_t j = m_window.size() - 1; j-- > 0;)
+	{
+		// Scan j+1 = scan j (+) odometry: back to scan j.
+		at = at + (mrpt::poses::CPose2D() - m_window[j + 1].odometryFromPrevious);
+		const auto local = m_global->refine(*m_window[j].scan, at, kTrackXY, kTrackYaw);
+		at = local.pose;
+		h.scores.push_front(local.score);
+	}
+	return h;
+}
+
+const MapLocalizer::Hypothesis* MapLocalizer::confirmed() const
+{
+	const size_t k = m_options.global_confirm_scans;
+	const Hypothesis* best = nullptr;
+	for (const auto& h : m_hypotheses)
+		if (!best || h.total() > best->total()) best = &h;
+	if (!best || best->scores.size() < k) return nullptr;
+	for (size_t i = best->scores.size() - k; i < best->scores.size(); i++)
+		if (best->scores[i] < m_options.global_min_score) return nullptr;
+	for (const auto& h : m_hypotheses)
+		if (&h != best && best->total() - h.total() < m_options.global_min_evidence) return nullptr;
+	return best;
 }
 
 void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, Outcome& out)
@@ -59,50 +97,82 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 		o.hitSigma = 2 * m_options.global_resolution;
 		m_global = std::make_unique<GlobalMapSearch>(*m_map, o);
 	}
-	out.global = m_global->search(*step.scan);
-	const auto& g = *out.global;
-	bool agrees = false;
-	if (m_hypothesis)
+	m_window.push_back({step.scan, m_odometrySince});
+	// Every hypothesis moved by the odometry and put back on the map.
+	for (auto& h : m_hypotheses)
 	{
-		const Eigen::Vector3d d = poseDifference(g.best, *m_hypothesis + m_odometrySince);
-		agrees = std::hypot(d[0], d[1]) <= kConfirmDistance && std::abs(d[2]) <= kConfirmAngle;
+		const auto local = m_global->refine(*step.scan, h.pose + m_odometrySince, kTrackXY, kTrackYaw);
+		h.pose = local.pose;
+		h.scores.push_back(local.score);
 	}
 	m_odometrySince = mrpt::poses::CPose2D();
-	if (!g.valid || g.bestScore < m_options.global_min_score)
+	if (m_window.size() > kMaxWindow)
 	{
-		m_hypothesis.reset();
-		m_streak = 0;
-		return;
+		m_window.pop_front();
+		for (auto& h : m_hypotheses) h.scores.pop_front();
 	}
-	m_streak = agrees ? m_streak + 1 : 1;
-	m_hypothesis = g.best;
-	if (m_streak < m_options.global_confirm_scans ||
-		g.rivalScore >= m_options.global_rival_ratio * g.bestScore)
-		return;
+	auto same = [](const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) {
+		const Eigen::Vector3d d = poseDifference(a, b);
+		return std::hypot(d[0], d[1]) <= kSameXY && std::abs(d[2]) <= kSameYaw;
+	};
+	// Hypotheses that the map pulled to one place are one (the best record
+	// stays); weak ones go.
+	std::sort(m_hypotheses.begin(), m_hypotheses.end(),
+		[](const Hypothesis& a, const Hypothesis& b) { return a.total() > b.total(); });
+	std::vector<Hypothesis> kept;
+	for (auto& h : m_hypotheses)
+	{
+		if (h.scores.back() < m_options.global_min_score) continue;
+		bool duplicate = false;
+		for (const auto& k : kept) duplicate = duplicate || same(h.pose, k.pose);
+		if (!duplicate && kept.size() < kMaxHypotheses) kept.push_back(std::move(h));
+	}
+	m_hypotheses.swap(kept);
+	// The whole map: its best pose and best rival, where no hypothesis is,
+	// judged on the earlier scans too.
+	out.global = m_global->search(*step.scan);
+	const auto& g = *out.global;
+	auto add = [&](const mrpt::poses::CPose2D& p, double score) {
+		if (score < m_options.global_min_score) return;
+		for (const auto& h : m_hypotheses)
+			if (same(p, h.pose)) return;
+		m_hypotheses.push_back(backdated(p, score));
+	};
+	if (g.valid)
+	{
+		add(g.best, g.bestScore);
+		add(g.rival, g.rivalScore);
+	}
+	const Hypothesis* h = confirmed();
+	if (!h) return;
 
-	// Found: refine by a map match from the search's grid pose, restart
-	// the estimator there.
+	// Found: refine by a map match from the hypothesis, restart the
+	// estimator there.
 	const double res = m_options.global_resolution;
 	mrpt::math::CMatrixDouble33 gridCov;
 	gridCov(0, 0) = gridCov(1, 1) = res * res;
 	gridCov(2, 2) = mrpt::square(mrpt::DEG2RAD(2.0));
-	mrpt::poses::CPosePDFGaussian start(g.best, gridCov);
+	mrpt::poses::CPosePDFGaussian start(h->pose, gridCov);
+	double runnerUp = -1;
+	for (const auto& o : m_hypotheses)
+		if (&o != h) runnerUp = std::max(runnerUp, o.total());
+	const double n = static_cast<double>(h->scores.size());
+	char buf[240];
+	std::snprintf(buf, sizeof(buf),
+		"%.0f%% of %zu scans' points on the map there; the next of %zu hypotheses %.0f%%",
+		100 * h->total() / n, h->scores.size(), m_hypotheses.size(),
+		runnerUp < 0 ? 0.0 : 100 * runnerUp / n);
+	const std::string evidence = buf;
 	const auto refined = m_tracker.track(*step.scan, start);
 	if (refined.match.success) start = refined.pose;
 	estimator.initialize(start);
 	m_tracking = true;
 	m_misses = 0;
-	m_streak = 0;
-	m_hypothesis.reset();
+	m_hypotheses.clear();
+	m_window.clear();
 	out.event = "found";
-	char buf[240];
-	std::snprintf(buf, sizeof(buf),
-		"at (%.3f m, %.3f m, %.1f deg), %.0f%% of the scan on the map, best rival %.0f%% "
-		"(%.2f m, %.1f deg away); %u scans agreed",
-		start.mean.x(), start.mean.y(), mrpt::RAD2DEG(start.mean.phi()), 100 * g.bestScore,
-		100 * g.rivalScore, std::hypot(g.rival.x() - g.best.x(), g.rival.y() - g.best.y()),
-		mrpt::RAD2DEG(mrpt::math::wrapToPi(g.rival.phi() - g.best.phi())),
-		m_options.global_confirm_scans);
-	out.message = buf;
+	std::snprintf(buf, sizeof(buf), "at (%.3f m, %.3f m, %.1f deg), ", start.mean.x(),
+		start.mean.y(), mrpt::RAD2DEG(start.mean.phi()));
+	out.message = buf + evidence;
 }
 }  // namespace featloc

@@ -29,11 +29,12 @@ std::shared_ptr<mrpt::opengl::CEllipsoid2D> ellipse(
 }
 }  // namespace
 
-ScanMapSceneWriter::ScanMapSceneWriter(
-	std::string path, unsigned int scanDecimation, unsigned int ellipseEvery)
+ScanMapSceneWriter::ScanMapSceneWriter(std::string path, unsigned int scanDecimation,
+	unsigned int ellipseEvery, std::vector<mrpt::math::TPoint2D> map)
 	: m_path(std::move(path)),
 	  m_decimation(std::max(1u, scanDecimation)),
-	  m_ellipseEvery(ellipseEvery)
+	  m_ellipseEvery(ellipseEvery),
+	  m_map(std::move(map))
 {
 }
 
@@ -86,6 +87,22 @@ void ScanMapSceneWriter::finish(const RunStats&)
 	cloud->setColor(0.1f, 0.1f, 0.1f);
 	cloud->setPointSize(2.0f);
 	scene.insert(cloud);
+	if (!m_map.empty())
+	{
+		std::vector<float> mx, my, mz;
+		for (const auto& p : m_map)
+		{
+			mx.push_back(static_cast<float>(p.x));
+			my.push_back(static_cast<float>(p.y));
+			mz.push_back(-0.005f);	// under the scans
+		}
+		auto map = mrpt::opengl::CPointCloud::Create();
+		map->setAllPoints(mx, my, mz);
+		map->setColor(0.65f, 0.65f, 0.65f);
+		map->setPointSize(2.0f);
+		map->setName("map");
+		scene.insert(map);
+	}
 
 	auto path = mrpt::opengl::CSetOfLines::Create();
 	path->setColor(0.0f, 0.3f, 1.0f);

@@ -57,6 +57,7 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		const ErrorStats mt = ErrorStats::of(s.mapMatchTimes);
 		j["localization"] = {
 			{"map", s.localizationMap},
+			{"map_file", s.localizationMapFile},
 			{"map_matches", s.mapMatchesAttempted},
 			{"map_matches_used", s.mapMatchesUsed},
 			{"map_match_failures", s.mapMatchFailures},

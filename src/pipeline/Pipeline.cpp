@@ -88,7 +88,11 @@ RunStats Pipeline::run(
 	stats.rawlog = rawlogPath;
 	stats.estimator = m_estimator->name();
 	if (m_estimator->usesScanMatcher()) stats.matcherClass = m_matcher->className();
-	if (m_mapLocalizer) stats.localizationMap = m_mapLocalizer->map().describe();
+	if (m_mapLocalizer)
+	{
+		stats.localizationMap = m_mapLocalizer->map().describe();
+		stats.localizationMapFile = m_mapLocalizer->map().path();
+	}
 	stats.globalStart = m_options.global_start;
 	m_keyframeScan.reset();
 	m_odometryCheck = OdometryCovarianceCheck(

@@ -1,7 +1,9 @@
 #pragma once
+#include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/TPose2D.h>
 
 #include <string>
+#include <vector>
 
 #include "featloc/eval/Trajectory.h"
 
@@ -9,7 +11,8 @@ namespace featloc
 {
 /** A PNG picture of a reference trajectory and an estimate (after the
  * evaluation's alignment) on a metric grid, with a legend and a title. An
- * empty reference draws the estimate alone (a run without ground truth). */
+ * empty reference draws the estimate alone (a run without ground truth).
+ * A known map's occupied cells, if given, are drawn under both (grey). */
 class TrajectoryPlot
 {
    public:
@@ -17,6 +20,6 @@ class TrajectoryPlot
 	static void write(
 		const std::string& pngPath, const Trajectory& reference,
 		const Trajectory& estimate, const mrpt::math::TPose2D& alignment,
-		const std::string& title);
+		const std::string& title, const std::vector<mrpt::math::TPoint2D>& map = {});
 };
 }  // namespace featloc

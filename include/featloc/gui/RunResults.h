@@ -1,5 +1,6 @@
 #pragma once
 #include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/obs_frwds.h>
 
@@ -70,6 +71,9 @@ struct RunResults
 	std::string stereoExtractorClass;
 	/** What could not be read, one sentence each naming the file: the
 	 * viewer opens what it can and shows these. */
+	/** Localization in a known map: the map's occupied cells (map frame,
+	 * which is the estimate's), read again from the file the run used. */
+	std::vector<mrpt::math::TPoint2D> mapCells;
 	std::vector<std::string> problems;
 
 	/** The step whose time is nearest to t (steps must not be empty). */

@@ -29,6 +29,10 @@ class GlobalMapSearch
 		unsigned int maxPoints = 120;  //!< scan points scored (evenly picked)
 		double distinctXY = 0.5;  //!< [m] a rival is at least this far from the best
 		double distinctYaw = 0.2617993877991494;  //!< [rad] (15 deg) or turned this much
+		/** refine()'s table: finer and sharper, so that its scores tell
+		 * similar places apart (the search's wide table makes its basin). */
+		double refineResolution = 0.025;  //!< [m]
+		double refineHitSigma = 0.04;  //!< [m]
 	};
 
 	GlobalMapSearch(const LocalizationMap& map, const Options& options);
@@ -44,18 +48,33 @@ class GlobalMapSearch
 	};
 	Result search(const mrpt::obs::CObservation2DRangeScan& scan) const;
 
+	/** The best pose within +-halfXY, +-halfYaw of `around` and its score
+	 * on the sharp table (refineResolution, refineHitSigma): a hypothesis
+	 * moved by odometry, put back on the map and judged. */
+	struct Local
+	{
+		mrpt::poses::CPose2D pose;
+		double score = 0;
+	};
+	Local refine(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& around,
+		double halfXY, double halfYaw) const;
+
 	/** The scan's score at a robot pose (the same table). */
 	double score(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& pose) const;
 
 	const Options& options() const { return m_options; }
 
    private:
+	/** Olson's rotation step for these points: one cell of `res` at the
+	 * 95th-percentile range. */
+	static double yawStep(const std::vector<double>& x, const std::vector<double>& y, double res);
 	/** The scan's valid points in the robot frame, evenly picked. */
 	void robotFramePoints(const mrpt::obs::CObservation2DRangeScan& scan, std::vector<double>& x,
 		std::vector<double>& y) const;
 
 	Options m_options;
 	CorrelationTables m_tables;
+	CorrelationTables m_sharp;	// refine()'s
 	double m_cx = 0, m_cy = 0;	// the map's centre
 	int m_nx = 0, m_ny = 0;	 // half-widths of the map in cells
 };

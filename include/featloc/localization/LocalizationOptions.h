@@ -51,15 +51,14 @@ struct LocalizationOptions : public mrpt::config::CLoadableOptions
 	/** Global localization (`[Pipeline] initial_pose = global`, or once
 	 * lost; MapLocalizer): the search's table cell [m]. */
 	double global_resolution = 0.05;
-	/** Scans in a row whose best poses agree with the odometry before the
-	 * robot is found. */
+	/** The robot is found at a hypothesis that scored at least
+	 * global_min_score (share of the scan's points on the map) on each of
+	 * its last global_confirm_scans scans... */
 	unsigned int global_confirm_scans = 3;
-	/** The last scan's best must score at least this share of its points
-	 * on the map... */
 	double global_min_score = 0.5;
-	/** ...and its best rival (another place or heading) less than this
-	 * times the best. */
-	double global_rival_ratio = 0.9;
+	/** ...and whose scores over the search's scans exceed every other
+	 * hypothesis's by this in total (a sum of shares of points). */
+	double global_min_evidence = 0.2;
 	/** Tracking is lost after this many scans in a row without a usable
 	 * map match (failed or rejected by the gate); 0: never. */
 	unsigned int lost_after_scans = 5;

@@ -1,7 +1,9 @@
 #pragma once
+#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
 
 #include <memory>
+#include <deque>
 #include <optional>
 #include <string>
 
@@ -22,16 +24,26 @@ namespace featloc
  *   rejected by the gate: a kidnapped robot, a map that no longer fits),
  *   the robot is lost and the global search starts.
  * - Searching (from the start with `[Pipeline] initial_pose = global`, or
- *   once lost): GlobalMapSearch over the whole map for every scan. A
- *   hypothesis is the best pose of a scan; the next scan's best confirms it
- *   when it lies where the odometry since then moves the hypothesis
- *   (within confirm_distance / confirm_angle). The robot is found when
- *   global_confirm_scans scans in a row agree, each scoring at least
- *   global_min_score, and the last one's best rival (a pose further than
- *   the search's distinct distance) scores below global_rival_ratio x the
- *   best: a corridor's two ends, or two identical rooms, never confirm
- *   until the robot sees what tells them apart. The estimator then restarts
- *   at the found pose, refined by a map match. */
+ *   once lost): the scans since the search began (up to kMaxWindow, with
+ *   the odometry between them) and hypotheses of the robot's pose, each
+ *   scored on every one of those scans. Each new scan moves every
+ *   hypothesis by the odometry and puts it back on the map by a small
+ *   sharp correlative search (+-kTrackXY, +-kTrackYaw: GlobalMapSearch::
+ *   refine), which scores it. The global search over the whole map then
+ *   adds its best pose and its best rival elsewhere where no hypothesis
+ *   is, and a new hypothesis is carried back through the odometry and
+ *   scored on the earlier scans too, so that every hypothesis is judged on
+ *   the same scans. Hypotheses the map pulls to one place merge; one that
+ *   scores below global_min_score on the current scan is dropped. The
+ *   robot is found at the hypothesis H with the highest total when H
+ *   scored at least global_min_score on each of the last
+ *   global_confirm_scans scans and its scores exceed every other
+ *   hypothesis's by global_min_evidence in total over the window (each
+ *   scan's score difference is a share of its points that H explains and
+ *   the other does not): the scans must prefer H, not merely allow it. A
+ *   corridor's two ends or two identical rooms score alike and do not
+ *   confirm until the robot sees what tells them apart.
+ *   The estimator then restarts at H, refined by a map match. */
 class MapLocalizer
 {
    public:
@@ -59,9 +71,16 @@ class MapLocalizer
 	const LocalizationMap& map() const { return *m_map; }
 	const LocalizationOptions& options() const { return m_options; }
 
-	/** Poses further apart than this are different hypotheses. */
-	static constexpr double kConfirmDistance = 0.2;	 //!< [m]
-	static constexpr double kConfirmAngle = 0.08726646259971647;  //!< [rad] (5 deg)
+	/** A hypothesis moved by odometry is searched for within this of where
+	 * the odometry puts it. */
+	static constexpr double kTrackXY = 0.25;  //!< [m]
+	static constexpr double kTrackYaw = 0.13962634015954636;  //!< [rad] (8 deg)
+	/** Poses closer than this are one hypothesis. */
+	static constexpr double kSameXY = 0.3;	//!< [m]
+	static constexpr double kSameYaw = 0.17453292519943295;	 //!< [rad] (10 deg)
+	static constexpr size_t kMaxHypotheses = 30;
+	/** Scans of a search kept to judge hypotheses on. */
+	static constexpr size_t kMaxWindow = 40;
 
    private:
 	void search(const EstimationStep& step, PoseEstimator& estimator, Outcome& out);
@@ -73,10 +92,27 @@ class MapLocalizer
 	std::unique_ptr<GlobalMapSearch> m_global;	// built on the first search
 	bool m_tracking;
 	unsigned int m_misses = 0;	// scans in a row without a usable map match
-	// Searching: the last scan's hypothesis, the odometry since that scan,
-	// and how many scans in a row agree with it.
-	std::optional<mrpt::poses::CPose2D> m_hypothesis;
+	// Searching: the scans since the search began, each with the odometry
+	// from the previous one; the hypotheses, scored on each of them; the
+	// odometry since the last scan.
+	struct WindowScan
+	{
+		mrpt::obs::CObservation2DRangeScan::Ptr scan;
+		mrpt::poses::CPose2D odometryFromPrevious;
+	};
+	std::deque<WindowScan> m_window;
+	struct Hypothesis
+	{
+		mrpt::poses::CPose2D pose;	// at the last scan
+		std::deque<double> scores;	// one per window scan, oldest first
+		double total() const;
+	};
+	std::vector<Hypothesis> m_hypotheses;
 	mrpt::poses::CPose2D m_odometrySince;
-	unsigned int m_streak = 0;
+	/** A hypothesis made at the last scan at `pose`, carried back through
+	 * the odometry and scored on every window scan. */
+	Hypothesis backdated(const mrpt::poses::CPose2D& pose, double score) const;
+	/** The hypothesis that is found, or null. */
+	const Hypothesis* confirmed() const;
 };
 }  // namespace featloc

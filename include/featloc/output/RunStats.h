@@ -58,6 +58,7 @@ struct RunStats
 	 * description), scans matched against it, matches used by the
 	 * estimator, failed, and rejected by its gate (with examples). */
 	std::string localizationMap;
+	std::string localizationMapFile;  //!< its path, as read
 	size_t mapMatchesAttempted = 0, mapMatchesUsed = 0, mapMatchFailures = 0,
 		   mapMatchesRejected = 0;
 	std::map<std::string, size_t> mapMatchFailuresByKind;

@@ -1,4 +1,5 @@
 #pragma once
+#include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/TPose3D.h>
 
 #include <Eigen/Core>
@@ -15,15 +16,16 @@ namespace featloc
  * estimated poses, the estimated path as a line strip, the robot's 3-sigma
  * (x, y) covariance ellipse every few scans, the estimator's landmarks
  * (EKF) with their 3-sigma ellipses, a corner at the last pose, a grid on
- * the floor. Written in finish(), also after an error,
+ * the floor, and a known map's occupied cells (localization in a map) in
+ * light grey under the scans. Written in finish(), also after an error,
  * with what the run produced until then. */
 class ScanMapSceneWriter : public RunOutput
 {
    public:
 	/** \param scanDecimation place every N-th scan's points (1 = all).
 	 * \param ellipseEvery robot covariance ellipse every N-th scan (0: none). */
-	ScanMapSceneWriter(
-		std::string path, unsigned int scanDecimation, unsigned int ellipseEvery);
+	ScanMapSceneWriter(std::string path, unsigned int scanDecimation, unsigned int ellipseEvery,
+		std::vector<mrpt::math::TPoint2D> map = {});
 	void onStep(const StepRecord& record) override;
 	void finish(const RunStats& stats) override;
 	std::string path() const override { return m_path; }
@@ -37,5 +39,6 @@ class ScanMapSceneWriter : public RunOutput
 	/** Robot (x, y) means and covariances at the ellipse scans. */
 	std::vector<std::pair<Eigen::Vector2d, Eigen::Matrix2d>> m_robotEllipses;
 	std::vector<EstimatedLandmark> m_landmarks;  //!< after the last step
+	std::vector<mrpt::math::TPoint2D> m_map;
 };
 }  // namespace featloc
