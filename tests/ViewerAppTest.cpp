@@ -377,3 +377,33 @@ TEST(Viewer, PlayAdvancesAtTheLogsOwnRate)
 	EXPECT_GE(step, 3) << r.output;
 	EXPECT_LE(step, 40) << r.output;
 }
+
+// Localization in a known map: the map the run used is drawn under the
+// scans (MapCanvas::kKnownMap, pink), read again from summary.json's
+// map_file; a run without a map has none.
+TEST(Viewer, DrawsTheKnownMapOfALocalizationRun)
+{
+	TempDir dir;
+	const std::string out = dir.file("inmap");
+	const CommandResult r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
+		shellQuote(kSource + "/rawlogs/sim/office.rawlog") + " --out " + shellQuote(out) +
+		" -q --set Pipeline:estimator=ekf --set 'Pipeline:initial_pose=[2 8 0]' --set Localization:map=" +
+		shellQuote(kSource + "/worlds/office.ini") + " --set Input:max_scans=60 2>&1");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	auto pink = [](const cv::Mat& img) {
+		size_t n = 0;
+		for (int y = kMapTop; y < img.rows; y++)
+			for (int x = 0; x < img.cols; x++)
+			{
+				const int b = img.at<cv::Vec3b>(y, x)[0], g = img.at<cv::Vec3b>(y, x)[1],
+						  r = img.at<cv::Vec3b>(y, x)[2];
+				n += r > b + 15 && b > g + 20 && r > g + 45 ? 1 : 0;
+			}
+		return n;
+	};
+	const cv::Mat withMap = screenshot(out, dir.file("map.png"), "--view map --size 1200x850");
+	EXPECT_GT(pink(withMap), 1000u);
+	const cv::Mat without = screenshot(runInto(dir.file("nomap"), "ekf"), dir.file("nomap.png"),
+		"--view map --size 1200x850");
+	EXPECT_LT(pink(without), 50u);
+}

@@ -41,7 +41,7 @@ class MapCanvas : public mrpt::gui::CWxGLCanvasBase
 	static constexpr unsigned char kCurrentScan[3] = {230, 30, 30};
 	static constexpr unsigned char kReferenceScan[3] = {0, 190, 190};
 	static constexpr unsigned char kScans[3] = {150, 150, 150};
-	static constexpr unsigned char kKnownMap[3] = {215, 185, 135};
+	static constexpr unsigned char kKnownMap[3] = {235, 165, 205};  // pink: apart from the ellipses' tan
 	static constexpr unsigned char kLandmarks[3] = {160, 60, 200};
 	static constexpr unsigned char kPathEllipses[3] = {250, 200, 130};
 
