@@ -95,21 +95,32 @@ pf() { # prefix map out [global]
 }
 # pf-localization's first step whose particles have converged (sqrt of the
 # covariance's trace under 0.2) and whether its mean is right there (0.2 m,
-# 5 deg): "STEP RIGHT" (STEP -1: never). Step k is ground-truth row k + 1.
+# 5 deg), and whether its mean is right at its last step: "STEP RIGHT
+# LAST_RIGHT" (STEP -1: never). Step k is ground-truth row k + 1.
+# Whether the last pose of a TUM trajectory is within 0.2 m / 5 deg of the
+# ground truth's last row: 1 or 0.
+last_right() { # trajectory.tum gt
+  python3 - "$1" "$2" <<'PY'
+import math, sys
+rows = lambda f: [l.split() for l in open(f) if not l.startswith("#") and l.strip()]
+e, g = rows(sys.argv[1])[-1], rows(sys.argv[2])[-1]
+yaw = lambda r: math.degrees(2 * math.atan2(float(r[6]), float(r[7])))
+a = (yaw(e) - yaw(g) + 180) % 360 - 180
+print(int(math.hypot(float(e[1]) - float(g[1]), float(e[2]) - float(g[2])) < 0.2 and abs(a) < 5))
+PY
+}
 pf_converged() { # out gt
   python3 - "$1/means.txt" "$2" <<'PY'
 import math, sys
 gt = [l.split() for l in open(sys.argv[2]) if not l.startswith("#") and l.strip()]
-for k, l in enumerate(open(sys.argv[1])):
-    x, y, w, tr = map(float, l.split())
-    if k == 0 or tr >= 0.2 or k + 1 >= len(gt):
-        continue
-    g = gt[k + 1]
+means = [list(map(float, l.split())) for l in open(sys.argv[1])]
+def right(k):
+    x, y, w, tr = means[k]
+    g = gt[min(k + 1, len(gt) - 1)]
     a = (w - math.degrees(2 * math.atan2(float(g[6]), float(g[7]))) + 180) % 360 - 180
-    print(k + 1, int(math.hypot(x - float(g[1]), y - float(g[2])) < 0.2 and abs(a) < 5))
-    break
-else:
-    print(-1, 0)
+    return int(math.hypot(x - float(g[1]), y - float(g[2])) < 0.2 and abs(a) < 5)
+first = next((k for k in range(1, len(means)) if means[k][3] < 0.2 and k + 1 < len(gt)), None)
+print(-1 if first is None else first + 1, 0 if first is None else right(first), right(len(means) - 1) if means else 0)
 PY
 }
 pf_ate() { jq -r '"\(.ate_m.rmse*1000|floor) / \(.ate_m.max*1000|floor)"' "$1/eval.json"; }
@@ -174,13 +185,13 @@ print(first, first_right, wrong)
 PY
 }
 echo
-echo "| world | random starts (seeds) | localizer | found within 10 scans, right | found later, right | never found (30 scans) | false confirmations | time per scan [s] (mean) |"
-echo "|---|---|---|---|---|---|---|---|"
+echo "| world | random starts (seeds) | localizer | found within 10 scans, right | found later, right | never found (30 scans) | false confirmations | estimate right at the last scan | time per scan [s] (mean) |"
+echo "|---|---|---|---|---|---|---|---|---|"
 for world in office lab; do
   "$BIN/featloc-sim" "$ROOT/worlds/$world.ini" --out "$OUT/$world-map" -q --gridmap 0.05 --set Simulation:max_scans=1 >/dev/null
   GRID="$OUT/$world-map.gridmap.gz"
-  within=0; later=0; never=0; wrong=0; searchTime=0
-  pwithin=0; plater=0; pnever=0; pwrong=0; pfTime=0
+  within=0; later=0; never=0; wrong=0; last=0; searchTime=0
+  pwithin=0; plater=0; pnever=0; pwrong=0; plast=0; pfTime=0
   for i in $(seq "$FIRST" $((FIRST + STARTS - 1))); do
     # A random start in free space: candidates drawn until the simulator
     # accepts one (explore_start needs its clearance).
@@ -196,20 +207,22 @@ for world in office lab; do
       --set Output:write_rawlog=false --set Output:write_scene=false >/dev/null
     read -r first right bad <<<"$(judge_found "$OUT/global-$world-$i-run" "$OUT/global-$world-$i.gt.txt")"
     wrong=$((wrong + bad))
+    last=$((last + $(last_right "$OUT/global-$world-$i-run/trajectory.tum" "$OUT/global-$world-$i.gt.txt")))
     if [ "$first" -ge 0 ] && [ "$right" = 1 ] && [ "$first" -lt 10 ]; then within=$((within + 1));
     elif [ "$first" -ge 0 ] && [ "$right" = 1 ]; then later=$((later + 1));
     elif [ "$first" -lt 0 ]; then never=$((never + 1)); fi
     searchTime=$(echo "$searchTime + $(jq -r '.wall_time_s / .counts.scans' "$OUT/global-$world-$i-run/summary.json")" | bc -l)
     pf "$OUT/global-$world-$i" "$GRID" "$OUT/global-$world-$i-pf" global
-    read -r step ok <<<"$(pf_converged "$OUT/global-$world-$i-pf" "$OUT/global-$world-$i.gt.txt")"
+    read -r step ok pfLast <<<"$(pf_converged "$OUT/global-$world-$i-pf" "$OUT/global-$world-$i.gt.txt")"
+    plast=$((plast + pfLast))
     if [ "$step" -lt 0 ]; then pnever=$((pnever + 1));
     elif [ "$ok" = 0 ]; then pwrong=$((pwrong + 1));
     elif [ "$step" -lt 10 ]; then pwithin=$((pwithin + 1)); else plater=$((plater + 1)); fi
     pfTime=$(echo "$pfTime + $(awk '{s+=$1; n++} END{print (n ? s/n : 0)}' "$OUT"/global-$world-$i-pf/LOG_000_*/exec_times.txt)" | bc -l)
   done
   seeds="$FIRST-$((FIRST + STARTS - 1))"
-  echo "| $world | $STARTS ($seeds) | featloc | $within | $later | $never | $wrong | $(fmt "$(echo "$searchTime / $STARTS" | bc -l)" 3) (whole run) |"
-  echo "| $world | $STARTS ($seeds) | pf-localization | $pwithin | $plater | $pnever | $pwrong | $(fmt "$(echo "$pfTime / $STARTS" | bc -l)" 3) (filter step) |"
+  echo "| $world | $STARTS ($seeds) | featloc | $within | $later | $never | $wrong | $last | $(fmt "$(echo "$searchTime / $STARTS" | bc -l)" 3) (whole run) |"
+  echo "| $world | $STARTS ($seeds) | pf-localization | $pwithin | $plater | $pnever | $pwrong | $plast | $(fmt "$(echo "$pfTime / $STARTS" | bc -l)" 3) (filter step) |"
 done
 
 echo

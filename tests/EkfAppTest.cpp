@@ -18,11 +18,13 @@
 #include "featloc/io/RawlogReader.h"
 #include "featloc/registerClasses.h"
 #include "support/CommandRunner.h"
+#include "support/JsonFile.h"
 #include "support/TempDir.h"
 #include "support/TestRawlog.h"
 
 using namespace featloc;
 using featloc::test::CommandResult;
+using featloc::test::readJson;
 using featloc::test::runCommand;
 using featloc::test::shellQuote;
 using featloc::test::TempDir;
@@ -34,12 +36,6 @@ const std::string kSim = FEATLOC_SIM_EXE;
 const std::string kEval = FEATLOC_EVAL_EXE;
 const std::string kConfig = std::string(FEATLOC_SOURCE_DIR) + "/config.ini";
 const std::string kWorlds = std::string(FEATLOC_SOURCE_DIR) + "/worlds/";
-
-nlohmann::json readJson(const std::string& file)
-{
-	std::ifstream in(file);
-	return nlohmann::json::parse(in);
-}
 
 /** featloc-sim WORLD with the given --set arguments; returns the prefix. */
 std::string simulate(const TempDir& dir, const std::string& world, const std::string& sets)

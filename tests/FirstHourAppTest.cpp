@@ -11,9 +11,11 @@
 
 #include "featloc/registerClasses.h"
 #include "support/CommandRunner.h"
+#include "support/JsonFile.h"
 #include "support/TempDir.h"
 
 using featloc::test::CommandResult;
+using featloc::test::readJson;
 using featloc::test::runCommand;
 using featloc::test::shellQuote;
 using featloc::test::TempDir;
@@ -54,12 +56,6 @@ std::set<std::string> names(const std::string& dir)
 	std::set<std::string> out;
 	for (const auto& [name, bytes] : contents(dir)) out.insert(name);
 	return out;
-}
-
-nlohmann::json readJson(const std::string& file)
-{
-	std::ifstream in(file);
-	return nlohmann::json::parse(in);
 }
 
 /** Nothing featloc left beside the results (staging or old folders). */

@@ -26,6 +26,7 @@
 #include "featloc/sim/ScipLaserServer.h"
 #include "support/LiveEmulator.h"
 #include "support/CommandRunner.h"
+#include "support/JsonFile.h"
 #include "support/FreePort.h"
 #include "support/DocumentedKeys.h"
 #include "support/TempDir.h"
@@ -41,12 +42,6 @@ const std::string kRun = FEATLOC_RUN_EXE;
 const std::string kSim = FEATLOC_SIM_EXE;
 const std::string kConfig = std::string(FEATLOC_SOURCE_DIR) + "/configs/live-emulator.ini";
 const std::string kWorld = std::string(FEATLOC_SOURCE_DIR) + "/worlds/office.ini";
-
-nlohmann::json readJson(const std::string& file)
-{
-	std::ifstream f(file);
-	return nlohmann::json::parse(f);
-}
 
 std::vector<std::string> poseRows(const std::string& tum)
 {

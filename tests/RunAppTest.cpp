@@ -14,11 +14,13 @@
 #include "featloc/io/RawlogReader.h"
 #include "featloc/registerClasses.h"
 #include "support/CommandRunner.h"
+#include "support/JsonFile.h"
 #include "support/TempDir.h"
 #include "support/TestRawlog.h"
 
 using namespace featloc;
 using featloc::test::CommandResult;
+using featloc::test::readJson;
 using featloc::test::runCommand;
 using featloc::test::shellQuote;
 using featloc::test::TempDir;
@@ -38,12 +40,6 @@ const std::string kMalaga =
 CommandResult featlocRun(const std::string& args)
 {
 	return runCommand(shellQuote(kRun) + " " + args + " -q");
-}
-
-nlohmann::json readJson(const std::string& file)
-{
-	std::ifstream in(file);
-	return nlohmann::json::parse(in);
 }
 
 size_t dataRows(const std::string& file)

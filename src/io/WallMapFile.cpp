@@ -3,6 +3,7 @@
 #include <mrpt/config/CConfigFile.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "featloc/config/ConfigValues.h"
@@ -34,8 +35,12 @@ void addPieces(
 	}
 }
 
-void openWorldFile(const std::string& path, mrpt::config::CConfigFile& cfg)
+/** Calls `visit(cfg, section)` for every section of the world file `path`;
+ * the file's own errors and a bad value become InputErrors naming it. */
+void forEachWorldSection(const std::string& path,
+	const std::function<void(const mrpt::config::CConfigFile&, const std::string&)>& visit)
 {
+	mrpt::config::CConfigFile cfg;
 	try
 	{
 		cfg.setFileName(path);
@@ -45,39 +50,37 @@ void openWorldFile(const std::string& path, mrpt::config::CConfigFile& cfg)
 		// MRPT's preprocessor ($env{}, $eval{}) throws without the file's name.
 		throw InputError(path + ": " + exceptionText(e));
 	}
-}
-
-std::vector<MapWall> loadWorldFile(const std::string& path)
-{
-	mrpt::config::CConfigFile cfg;
-	openWorldFile(path, cfg);
 	std::vector<std::string> sections;
 	cfg.getAllSections(sections);
-	std::vector<MapWall> out;
 	try
 	{
-		for (const auto& s : sections)
-		{
-			std::vector<std::vector<double>> rows;
-			if (s.rfind("Wall.", 0) == 0)
-			{
-				bool closed = false;
-				config::readRows(cfg, s, "polyline", rows, {2});
-				config::read(cfg, s, "closed", closed);
-				config::require(rows.size() >= 2, cfg, s, "polyline", "at least two points [x y; x y]");
-				addPieces(path, s, rows, closed, out);
-			}
-			else if (s.rfind("Obstacle.", 0) == 0)
-			{
-				config::readRows(cfg, s, "polygon", rows, {2});
-				if (!rows.empty()) addPieces(path, s, rows, true, out);
-			}
-		}
+		for (const auto& s : sections) visit(cfg, s);
 	}
 	catch (const ConfigError& e)
 	{
 		throw InputError(e.what());
 	}
+}
+
+std::vector<MapWall> loadWorldFile(const std::string& path)
+{
+	std::vector<MapWall> out;
+	forEachWorldSection(path, [&](const mrpt::config::CConfigFile& cfg, const std::string& s) {
+		std::vector<std::vector<double>> rows;
+		if (s.rfind("Wall.", 0) == 0)
+		{
+			bool closed = false;
+			config::readRows(cfg, s, "polyline", rows, {2});
+			config::read(cfg, s, "closed", closed);
+			config::require(rows.size() >= 2, cfg, s, "polyline", "at least two points [x y; x y]");
+			addPieces(path, s, rows, closed, out);
+		}
+		else if (s.rfind("Obstacle.", 0) == 0)
+		{
+			config::readRows(cfg, s, "polygon", rows, {2});
+			if (!rows.empty()) addPieces(path, s, rows, true, out);
+		}
+	});
 	if (out.empty())
 		throw InputError(
 			path + ": no walls: a map needs [Wall.<name>] polyline or [Obstacle.<name>] polygon "
@@ -141,28 +144,15 @@ std::vector<MapCircle> WallMapFile::loadCircles(const std::string& path)
 	std::ifstream in(path);
 	if (!in) throw InputError("cannot read the map '" + path + "'");
 	if (!isWorldFile(in)) return {};
-	mrpt::config::CConfigFile cfg;
-	openWorldFile(path, cfg);
-	std::vector<std::string> sections;
-	cfg.getAllSections(sections);
 	std::vector<MapCircle> out;
-	try
-	{
-		for (const auto& s : sections)
-		{
-			if (s.rfind("Obstacle.", 0) != 0) continue;
-			std::vector<std::vector<double>> rows;
-			config::readRows(cfg, s, "circle", rows, {3});
-			if (rows.empty()) continue;
-			config::require(rows.size() == 1 && rows[0][2] > 0, cfg, s, "circle",
-				"one row [cx cy r] with r > 0");
-			out.push_back({{rows[0][0], rows[0][1]}, rows[0][2], s});
-		}
-	}
-	catch (const ConfigError& e)
-	{
-		throw InputError(e.what());
-	}
+	forEachWorldSection(path, [&](const mrpt::config::CConfigFile& cfg, const std::string& s) {
+		if (s.rfind("Obstacle.", 0) != 0) return;
+		std::vector<std::vector<double>> rows;
+		config::readRows(cfg, s, "circle", rows, {3});
+		if (rows.empty()) return;
+		config::require(rows.size() == 1 && rows[0][2] > 0, cfg, s, "circle", "one row [cx cy r] with r > 0");
+		out.push_back({{rows[0][0], rows[0][1]}, rows[0][2], s});
+	});
 	return out;
 }
 }  // namespace featloc
