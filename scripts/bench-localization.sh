@@ -237,5 +237,35 @@ echo "|---|---|"
 jq -r '.localization.events[]' "$OUT/kidnap-run/summary.json" | sed 's/^/| | /; s/$/ |/'
 read -r first right bad <<<"$(judge_found "$OUT/kidnap-run" "$OUT/kidnap.gt.txt")"
 echo "| | wrong founds: $bad; ATE median after the first found $(jq -r '.evaluation.ate_m.median * 1000 | floor' "$OUT/kidnap-run/summary.json") mm |"
+
+# Real data: MRPT's localization demo (a real log and its simplemap, no
+# ground truth): featloc from a global start and pf-localization with its
+# own demo settings (its initial region, 40000 particles), side by side.
+echo
+D=/usr/share/mrpt/datasets
+"$BIN/featloc-run" "$ROOT/config.ini" "$D/localization_demo.rawlog" --out "$OUT/demo-featloc" -q \
+  --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global --set Localization:map="$D/localization_demo.simplemap.gz" \
+  --set Evaluation:ground_truth= --set Output:write_rawlog=false >/dev/null
+mkdir -p "$OUT/demo-pf"
+sed -e "s#^map_file=.*#map_file=$D/localization_demo.simplemap.gz#" -e "s#^rawlog_file=.*#rawlog_file=$D/localization_demo.rawlog#" \
+  -e "s#^logOutput_dir=.*#logOutput_dir=$OUT/demo-pf/LOG#" -e "s#^SHOW_PROGRESS_3D_REAL_TIME *=.*#SHOW_PROGRESS_3D_REAL_TIME=false#" \
+  -e "s#^3DSceneFrequency=.*#3DSceneFrequency=-1#" /usr/share/mrpt/config_files/pf-localization/localization_demo.ini > "$OUT/demo-pf/pf.ini"
+(cd "$OUT/demo-pf" && pf-localization pf.ini > pf.log 2>&1)
+echo "MRPT localization_demo (real, no ground truth): featloc (global start) against pf-localization (demo ini), step by step"
+python3 - "$OUT/demo-featloc/trajectory.tum" "$OUT/demo-pf/pf.log" "$OUT/demo-featloc/summary.json" <<'PY'
+import json, math, re, sys
+est = [l.split() for l in open(sys.argv[1]) if not l.startswith("#") and l.strip()]
+pf = [tuple(map(float, m.groups())) for m in (re.search(r"PDF estimation: \(([-0-9.]+),([-0-9.]+),([-0-9.]+)deg.*tr\(cov\): ([-0-9.e]+)", l) for l in open(sys.argv[2])) if m]
+s = json.load(open(sys.argv[3]))["localization"]
+found = next((int(re.match(r"found at scan (\d+)", e).group(1)) for e in s["events"] if e.startswith("found")), None)
+# This log starts with an action: pf-localization's step k is frame k,
+# featloc's row k. Compared where both have converged (pf: sqrt(trace) < 0.2).
+pfFound = next((k for k, p in enumerate(pf) if k > 0 and p[3] < 0.2), None)
+start = max(found or 0, pfFound or 0)
+d = [math.hypot(float(est[k][1]) - pf[k][0], float(est[k][2]) - pf[k][1]) for k in range(start, min(len(pf), len(est)))]
+print("| featloc found at scan | pf-localization converged at step | map matches used / rejected / scans matched | events | featloc vs pf-localization from then on: mean / max [m] |")
+print("|---|---|---|---|---|")
+print("| %s | %s | %d / %d / %d | %s | %.3f / %.3f |" % (found, pfFound, s["map_matches_used"], s["map_matches_rejected_by_gate"], s["map_matches"], "; ".join(e.split(" (")[0] for e in s["events"]), sum(d) / len(d), max(d)))
+PY
 echo
 echo "results in $OUT"
