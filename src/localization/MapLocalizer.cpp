@@ -42,13 +42,31 @@ void MapLocalizer::track(const EstimationStep& step, PoseEstimator& estimator, O
 		out.reason = "the map match failed: " + r.match.failureReason;
 	m_misses = out.used ? 0 : m_misses + 1;
 	if (m_options.lost_after_scans == 0 || m_misses < m_options.lost_after_scans) return;
+	// Lost, or only a map match less certain than it says? The map
+	// decides: the scan where the estimate puts it against the best place
+	// anywhere in the map.
+	globalSearch();
+	// (Both on the sharp table: the search's own scores are on its wide one.)
+	const auto here = m_global->refine(*step.scan, estimator.pose().mean, kTrackXY, kTrackYaw);
+	out.global = m_global->search(*step.scan);
+	const auto there = m_global->refine(*step.scan, out.global->best, kTrackXY, kTrackYaw);
+	if (here.score >= m_options.global_min_score &&
+		here.score >= there.score - m_options.global_min_evidence / m_options.global_confirm_scans)
+	{
+		m_misses = 0;  // still where the estimate says: not lost
+		return;
+	}
 	m_tracking = false;
 	m_hypotheses.clear();
 	m_window.clear();
 	m_odometrySince = mrpt::poses::CPose2D();
 	out.event = "lost";
+	char buf[160];
+	std::snprintf(buf, sizeof(buf),
+		"; %.0f%% of the scan on the map at the estimate, %.0f%% at the best place in the map",
+		100 * here.score, 100 * there.score);
 	out.message = std::to_string(m_misses) + " scans in a row without a usable map match (last: " +
-		out.reason + ")";
+		out.reason + ")" + buf;
 	m_misses = 0;
 }
 
@@ -88,15 +106,18 @@ const MapLocalizer::Hypothesis* MapLocalizer::confirmed() const
 	return best;
 }
 
+void MapLocalizer::globalSearch()
+{
+	if (m_global) return;
+	GlobalMapSearch::Options o;
+	o.resolution = m_options.global_resolution;
+	o.hitSigma = 2 * m_options.global_resolution;
+	m_global = std::make_unique<GlobalMapSearch>(*m_map, o);
+}
+
 void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, Outcome& out)
 {
-	if (!m_global)
-	{
-		GlobalMapSearch::Options o;
-		o.resolution = m_options.global_resolution;
-		o.hitSigma = 2 * m_options.global_resolution;
-		m_global = std::make_unique<GlobalMapSearch>(*m_map, o);
-	}
+	globalSearch();
 	m_window.push_back({step.scan, m_odometrySince});
 	// Every hypothesis moved by the odometry and put back on the map.
 	for (auto& h : m_hypotheses)

@@ -22,7 +22,11 @@ namespace featloc
  *   estimate and the estimator fuses it as an absolute pose. When
  *   lost_after_scans scans in a row give no usable map match (failed, or
  *   rejected by the gate: a kidnapped robot, a map that no longer fits),
- *   the robot is lost and the global search starts.
+ *   the map is asked: if the scan, put back on the map around the
+ *   estimate (GlobalMapSearch::refine), scores at least global_min_score
+ *   and about as well as the best place anywhere in the map, the robot is
+ *   where the estimate says and only the map matches' covariance is too
+ *   small; otherwise it is lost and the global search starts.
  * - Searching (from the start with `[Pipeline] initial_pose = global`, or
  *   once lost): the scans since the search began (up to kMaxWindow, with
  *   the odometry between them) and hypotheses of the robot's pose, each
@@ -84,6 +88,9 @@ class MapLocalizer
 
    private:
 	void search(const EstimationStep& step, PoseEstimator& estimator, Outcome& out);
+	/** Builds m_global on first use (its tables cost a fraction of a
+	 * second: runs that never search do not pay). */
+	void globalSearch();
 	void track(const EstimationStep& step, PoseEstimator& estimator, Outcome& out);
 
 	std::shared_ptr<const LocalizationMap> m_map;
