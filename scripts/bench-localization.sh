@@ -46,10 +46,10 @@ OFFICE_B_PATH='Robot:waypoints=[35 8; 20 8; 20 8.3; 7.5 8; 7.5 11; 8.5 13; 6.5 1
 
 # "x y yaw_deg" of row N (0-based) of a TUM ground truth.
 gt_pose() { awk -v n="$2" '!/^#/{if (k++ == n) {printf "%s %s %.4f", $2, $3, 2*atan2($7,$8)*180/3.14159265358979; exit}}' "$1"; }
-# featloc-run, EKF, in MAP ("" = none), ATE without alignment. Args: prefix out map
+# featloc-run, EKF, in MAP ("" = none), ATE without alignment. Args: prefix out map [--set ...]
 loc() {
-  local p="$1" out="$2" map="$3"
-  "$BIN/featloc-run" "$ROOT/config.ini" "$p.rawlog" --out "$out" -q \
+  local p="$1" out="$2" map="$3"; shift 3
+  "$BIN/featloc-run" "$ROOT/config.ini" "$p.rawlog" --out "$out" -q "$@" \
     --set Pipeline:estimator=ekf --set "Pipeline:initial_pose=[$(gt_pose "$p.gt.txt" 0)]" \
     --set 'Pipeline:initial_pose_sigma=[0.1 0.1 3]' --set Localization:map="$map" \
     --set Evaluation:ground_truth="$p.gt.txt" --set Evaluation:align=false \
@@ -150,6 +150,13 @@ for world in office lab; do
   echo "| $world | featloc, run A's map.simplemap | $(ate "$OUT/$world-b-simplemap") | $(used "$OUT/$world-b-simplemap") | $(maptime "$OUT/$world-b-simplemap") | $(perscan "$OUT/$world-b-simplemap") |"
   echo "| $world | pf-localization, run A's map.simplemap | $(pf_ate "$OUT/$world-b-pf") | - | - | $(pf_time "$OUT/$world-b-pf") (filter step) |"
   echo "| $world | featloc, no map (EKF from the start) | $(ate "$OUT/$world-b-nomap") | - | - | $(perscan "$OUT/$world-b-nomap") |"
+done
+echo
+echo "| office run B in the world file: [Localization] matcher_class | ATE RMSE / max [mm] | map matches used / failed / rejected | map match [ms] (median) |"
+echo "|---|---|---|---|"
+for m in IcpMatcher IdcMatcher CfIdcMatcher PcmFeatureMatcher; do
+  loc "$OUT/office-b" "$OUT/office-b-world-$m" "$ROOT/worlds/office.ini" --set Localization:matcher_class=featloc::$m
+  echo "| $m | $(ate "$OUT/office-b-world-$m") | $(jq -r '"\(.localization.map_matches_used) / \(.localization.map_match_failures) / \(.localization.map_matches_rejected_by_gate)"' "$OUT/office-b-world-$m/summary.json") | $(maptime "$OUT/office-b-world-$m") |"
 done
 echo
 echo "| office path | scans | ATE RMSE / max [mm], in the world file |"
