@@ -206,12 +206,12 @@ TEST(LocalizationApp, BadMapsAreClearErrorsBeforeAnythingIsWritten)
 	const std::string old((std::istreambuf_iterator<char>(before)), std::istreambuf_iterator<char>());
 	r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " -q --out " + shellQuote(out) +
 		" --set Pipeline:estimator=ekf --set Localization:map=" + shellQuote(dir.file("nope.gridmap")));
-	EXPECT_NE(r.exitCode, 0);
+	EXPECT_EQ(r.exitCode, 1);  // an input error
 	EXPECT_NE(r.output.find("nope.gridmap"), std::string::npos) << r.output;
 	// The matcher estimator cannot fuse a pose in a map: named in the error.
 	r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " -q --out " + shellQuote(out) +
 		" --set Localization:map=" + shellQuote(kOffice));
-	EXPECT_NE(r.exitCode, 0);
+	EXPECT_EQ(r.exitCode, 2);  // a configuration error
 	EXPECT_NE(r.output.find("[Localization] map"), std::string::npos) << r.output;
 	EXPECT_NE(r.output.find("estimator = ekf"), std::string::npos) << r.output;
 	std::ifstream after(out + "/trajectory.tum");
@@ -313,7 +313,7 @@ TEST(LocalizationApp, GlobalStartNeedsAMap)
 {
 	const CommandResult r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) +
 		" -q --out /tmp/featloc-never-written --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global");
-	EXPECT_NE(r.exitCode, 0);
+	EXPECT_EQ(r.exitCode, 2);
 	EXPECT_NE(r.output.find("initial_pose"), std::string::npos) << r.output;
 	EXPECT_NE(r.output.find("[Localization] map is empty"), std::string::npos) << r.output;
 }
