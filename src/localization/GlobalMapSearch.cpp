@@ -64,17 +64,6 @@ void GlobalMapSearch::robotFramePoints(
 	}
 }
 
-double GlobalMapSearch::yawStep(
-	const std::vector<double>& x, const std::vector<double>& y, double res)
-{
-	std::vector<double> ranges;
-	for (size_t i = 0; i < x.size(); i++) ranges.push_back(std::hypot(x[i], y[i]));
-	if (ranges.empty()) return 0.01;
-	auto p95 = ranges.begin() + static_cast<long>((ranges.size() - 1) * 95 / 100);
-	std::nth_element(ranges.begin(), p95, ranges.end());
-	return res / std::max(*p95, res);
-}
-
 GlobalMapSearch::Local GlobalMapSearch::refine(const mrpt::obs::CObservation2DRangeScan& scan,
 	const mrpt::poses::CPose2D& around, double halfXY, double halfYaw) const
 {
@@ -84,7 +73,7 @@ GlobalMapSearch::Local GlobalMapSearch::refine(const mrpt::obs::CObservation2DRa
 	if (x.size() < 10) return out;
 	CorrelationTables::Window w;
 	w.centre = around;
-	w.yawStep = yawStep(x, y, m_sharp.resolution());
+	w.yawStep = CorrelationTables::rotationStep(x, y, m_sharp.resolution());
 	w.nx = w.ny = static_cast<int>(std::ceil(halfXY / m_sharp.resolution()));
 	w.nYaw = static_cast<int>(std::ceil(halfYaw / w.yawStep));
 	const auto best = m_sharp.search(x, y, w, 1.0);
@@ -93,14 +82,6 @@ GlobalMapSearch::Local GlobalMapSearch::refine(const mrpt::obs::CObservation2DRa
 	out.pose.normalizePhi();
 	out.score = best.front().score;
 	return out;
-}
-
-double GlobalMapSearch::score(
-	const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& pose) const
-{
-	std::vector<double> x, y;
-	robotFramePoints(scan, x, y);
-	return m_tables.score(x, y, pose);
 }
 
 GlobalMapSearch::Result GlobalMapSearch::search(const mrpt::obs::CObservation2DRangeScan& scan) const
@@ -114,7 +95,7 @@ GlobalMapSearch::Result GlobalMapSearch::search(const mrpt::obs::CObservation2DR
 	w.centre = mrpt::poses::CPose2D(m_cx, m_cy, 0);
 	w.nx = m_nx;
 	w.ny = m_ny;
-	w.yawStep = yawStep(x, y, m_tables.resolution());
+	w.yawStep = CorrelationTables::rotationStep(x, y, m_tables.resolution());
 	w.nYaw = static_cast<int>(std::ceil(M_PI / w.yawStep));
 	const auto best = m_tables.search(x, y, w, 1.0);
 	if (best.empty()) return r;
@@ -123,8 +104,7 @@ GlobalMapSearch::Result GlobalMapSearch::search(const mrpt::obs::CObservation2DR
 	r.best.normalizePhi();
 	r.bestScore = best.front().score;
 	const auto rival = m_tables.search(x, y, w, 1.0, [&](const mrpt::poses::CPose2D& p) {
-		const Eigen::Vector3d d = poseDifference(p, r.best);
-		return std::hypot(d[0], d[1]) <= m_options.distinctXY && std::abs(d[2]) <= m_options.distinctYaw;
+		return posesWithin(p, r.best, m_options.distinctXY, m_options.distinctYaw);
 	});
 	if (!rival.empty())
 	{

@@ -133,8 +133,7 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 		for (auto& h : m_hypotheses) h.scores.pop_front();
 	}
 	auto same = [](const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) {
-		const Eigen::Vector3d d = poseDifference(a, b);
-		return std::hypot(d[0], d[1]) <= kSameXY && std::abs(d[2]) <= kSameYaw;
+		return posesWithin(a, b, kSameXY, kSameYaw);
 	};
 	// Hypotheses that the map pulled to one place are one (the best record
 	// stays); weak ones go.

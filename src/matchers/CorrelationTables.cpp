@@ -15,6 +15,17 @@ int CorrelationTables::topLevelFor(double halfWindow, double resolution)
 	return top;
 }
 
+double CorrelationTables::rotationStep(
+	const std::vector<double>& px, const std::vector<double>& py, double resolution)
+{
+	std::vector<double> ranges(px.size());
+	for (size_t i = 0; i < px.size(); i++) ranges[i] = std::hypot(px[i], py[i]);
+	if (ranges.empty()) return resolution;
+	auto p95 = ranges.begin() + static_cast<long>((ranges.size() - 1) * 95 / 100);
+	std::nth_element(ranges.begin(), p95, ranges.end());
+	return resolution / std::max(*p95, resolution);
+}
+
 void CorrelationTables::build(int width, int height, double x0, double y0, double res,
 	double hitSigma, int top, const std::function<void(cv::Mat& surface)>& drawSurface)
 {

@@ -234,14 +234,8 @@ CorrelativeScanSearch::Result CorrelativeScanSearch::search(
 	pickPoints(current);
 	r.resolution = m_tables.resolution();
 
-	// Rotation step: one cell's motion at the far points (Olson's choice),
-	// the 95th percentile of range so that one stray return does not set it.
+	r.yawStep = CorrelationTables::rotationStep(m_px, m_py, r.resolution);
 	const size_t n = m_px.size();
-	std::vector<double> ranges(n);
-	for (size_t i = 0; i < n; i++) ranges[i] = std::hypot(m_px[i], m_py[i]);
-	auto p95 = ranges.begin() + static_cast<long>((n - 1) * 95 / 100);
-	std::nth_element(ranges.begin(), p95, ranges.end());
-	r.yawStep = r.resolution / std::max(*p95, r.resolution);
 
 	const auto found = branchAndBound(guess, r);
 	if (found.empty())
@@ -404,7 +398,6 @@ CorrelativeScanSearch::Ambiguity CorrelativeScanSearch::ambiguity(const Result& 
 
 bool CorrelativeScanSearch::distinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const
 {
-	const Eigen::Vector3d d = poseDifference(a, b);
-	return std::hypot(d[0], d[1]) > options.distinctXY || std::abs(d[2]) > options.distinctYaw;
+	return !posesWithin(a, b, options.distinctXY, options.distinctYaw);
 }
 }  // namespace featloc

@@ -59,15 +59,10 @@ class GlobalMapSearch
 	Local refine(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& around,
 		double halfXY, double halfYaw) const;
 
-	/** The scan's score at a robot pose (the same table). */
-	double score(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& pose) const;
 
 	const Options& options() const { return m_options; }
 
    private:
-	/** Olson's rotation step for these points: one cell of `res` at the
-	 * 95th-percentile range. */
-	static double yawStep(const std::vector<double>& x, const std::vector<double>& y, double res);
 	/** The scan's valid points in the robot frame, evenly picked. */
 	void robotFramePoints(const mrpt::obs::CObservation2DRangeScan& scan, std::vector<double>& x,
 		std::vector<double>& y) const;

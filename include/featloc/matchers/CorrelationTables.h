@@ -32,6 +32,13 @@ class CorrelationTables
 	 * across it per rotation (a wider top costs more table than it saves). */
 	static int topLevelFor(double halfWindow, double resolution);
 
+	/** Olson's rotation step for points (px, py) around their frame's
+	 * origin: the angle that moves the 95th-percentile-range point by one
+	 * cell of `resolution` (the 95th percentile so that one stray return
+	 * does not set it). */
+	static double rotationStep(
+		const std::vector<double>& px, const std::vector<double>& py, double resolution);
+
 	/** Tables of `width` x `height` cells of `resolution` from (x0, y0),
 	 * levels 0..top. `drawSurface` draws the reference surface as zero
 	 * pixels into a CV_8U image of 255 (row v, column u: the cell from
