@@ -15,7 +15,7 @@ namespace featloc
 GlobalMapSearch::GlobalMapSearch(const LocalizationMap& map, const Options& options)
 	: m_options(options)
 {
-	const auto cells = map.occupiedCells();
+	const auto& cells = map.occupiedCells();
 	double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
 	for (const auto& p : cells)
 	{

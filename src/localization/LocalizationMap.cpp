@@ -12,6 +12,11 @@ LocalizationMap::LocalizationMap(
 	mrpt::math::TPoint2D gridOffset)
 	: m_grid(std::move(grid)), m_path(std::move(path)), m_kind(std::move(kind)), m_gridOffset(gridOffset)
 {
+	const auto& g = *m_grid;
+	for (unsigned int y = 0; y < g.getSizeY(); y++)
+		for (unsigned int x = 0; x < g.getSizeX(); x++)
+			if (1.0f - g.getCell(x, y) > kOccupiedThreshold)
+				m_occupied.emplace_back(g.idx2x(x) - m_gridOffset.x, g.idx2y(y) - m_gridOffset.y);
 }
 
 mrpt::obs::CObservation2DRangeScan LocalizationMap::virtualScan(
@@ -40,17 +45,6 @@ mrpt::obs::CObservation2DRangeScan LocalizationMap::virtualScan(
 	for (size_t i = 0; i < v.getScanSize(); i++)
 		if (v.getScanRangeValidity(i)) v.setScanRange(i, v.getScanRange(i) + extra);
 	return v;
-}
-
-std::vector<mrpt::math::TPoint2D> LocalizationMap::occupiedCells() const
-{
-	std::vector<mrpt::math::TPoint2D> out;
-	const auto& g = *m_grid;
-	for (unsigned int y = 0; y < g.getSizeY(); y++)
-		for (unsigned int x = 0; x < g.getSizeX(); x++)
-			if (1.0f - g.getCell(x, y) > kOccupiedThreshold)
-				out.emplace_back(g.idx2x(x) - m_gridOffset.x, g.idx2y(y) - m_gridOffset.y);
-	return out;
 }
 
 std::string LocalizationMap::describe() const

@@ -44,15 +44,6 @@ std::string formatExtension(const std::string& path)
 	return p.substr(dot);
 }
 
-size_t occupiedCount(const COccupancyGridMap2D& g)
-{
-	size_t n = 0;
-	for (unsigned int y = 0; y < g.getSizeY(); y++)
-		for (unsigned int x = 0; x < g.getSizeX(); x++)
-			n += 1.0f - g.getCell(x, y) > LocalizationMap::kOccupiedThreshold ? 1 : 0;
-	return n;
-}
-
 std::shared_ptr<COccupancyGridMap2D> fromSimpleMap(const std::string& path, double resolution)
 {
 	mrpt::maps::CSimpleMap sm;
@@ -201,9 +192,10 @@ LocalizationMap LocalizationMapFile::load(const LocalizationOptions& o)
 		grid = fromImage(path, o), kind = "image";
 	else
 		grid = fromWorld(path, o.grid_resolution, offset), kind = "world";
-	if (occupiedCount(*grid) == 0)
+	LocalizationMap map(std::move(grid), path, kind, offset);
+	if (map.occupiedCells().empty())
 		throw InputError("map '" + path + "' (" + kind +
 			"): no occupied cell: nothing for a scan to be matched against");
-	return LocalizationMap(std::move(grid), path, kind, offset);
+	return map;
 }
 }  // namespace featloc

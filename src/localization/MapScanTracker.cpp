@@ -2,22 +2,10 @@
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
-#include <Eigen/Dense>
 #include <chrono>
 
 namespace featloc
 {
-namespace
-{
-/** R C R^T with R the rotation by `yaw` on (x, y) (yaw kept). */
-mrpt::math::CMatrixDouble33 rotated(const mrpt::math::CMatrixDouble33& c, double yaw)
-{
-	Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
-	R.topLeftCorner<2, 2>() = Eigen::Rotation2Dd(yaw).toRotationMatrix();
-	return mrpt::math::CMatrixDouble33(R * c.asEigen() * R.transpose());
-}
-}  // namespace
-
 MapScanTracker::MapScanTracker(
 	std::shared_ptr<const LocalizationMap> map, ScanMatcher::Ptr matcher, LocalizationOptions options)
 	: m_map(std::move(map)), m_matcher(std::move(matcher)), m_options(std::move(options))
@@ -33,13 +21,16 @@ MapScanTracker::Result MapScanTracker::track(
 	for (size_t i = 0; i < reference.getScanSize(); i++)
 		r.mapBeams += reference.getScanRangeValidity(i) ? 1 : 0;
 	const double yaw = predicted.mean.phi();
-	const mrpt::poses::CPosePDFGaussian guess(mrpt::poses::CPose2D(), rotated(predicted.cov, -yaw));
+	// The prediction's covariance in its own robot frame.
+	mrpt::poses::CPosePDFGaussian guess(mrpt::poses::CPose2D(), predicted.cov);
+	guess.rotateCov(-yaw);
 	r.match = m_matcher->match(reference, scan, guess);
 	r.match.timeSeconds =
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	if (!r.match.success) return r;
 	r.pose.mean = predicted.mean + r.match.estimate.mean;
-	r.pose.cov = rotated(r.match.estimate.cov, yaw);
+	r.pose.cov = r.match.estimate.cov;
+	r.pose.rotateCov(yaw);	// back into the map frame
 	r.pose.cov *= m_options.covariance_scale;
 	r.pose.cov(0, 0) += m_options.map_sigma_xy * m_options.map_sigma_xy;
 	r.pose.cov(1, 1) += m_options.map_sigma_xy * m_options.map_sigma_xy;

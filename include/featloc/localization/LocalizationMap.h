@@ -38,8 +38,9 @@ class LocalizationMap
 	mrpt::obs::CObservation2DRangeScan virtualScan(
 		const mrpt::obs::CObservation2DRangeScan& like, const mrpt::poses::CPose2D& robotPose) const;
 
-	/** Centres of the occupied cells, for pictures. */
-	std::vector<mrpt::math::TPoint2D> occupiedCells() const;
+	/** Centres of the occupied cells (map frame), for pictures and the
+	 * global search; found once, when the map is made. */
+	const std::vector<mrpt::math::TPoint2D>& occupiedCells() const { return m_occupied; }
 
 	/** The grid, in its own frame: map point p is grid point p + gridOffset(). */
 	const mrpt::maps::COccupancyGridMap2D& grid() const { return *m_grid; }
@@ -58,5 +59,6 @@ class LocalizationMap
 	std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> m_grid;
 	std::string m_path, m_kind;
 	mrpt::math::TPoint2D m_gridOffset;
+	std::vector<mrpt::math::TPoint2D> m_occupied;
 };
 }  // namespace featloc
