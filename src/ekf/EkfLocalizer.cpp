@@ -169,17 +169,22 @@ EkfLocalizer::MotionUpdate EkfLocalizer::testRelativeMotion(
 	relativeMotionTerms(kRobot, z, cols, H, nu);
 	const Eigen::MatrixXd S =
 		H * P()(cols, cols) * H.transpose() + z.cov.asEigen() + gateAllowance.asEigen();
+	return gate(nu, S, options.matcher_gate_chi2, "the match", "matcher_gate_chi2");
+}
+
+EkfLocalizer::MotionUpdate EkfLocalizer::gate(const Eigen::VectorXd& nu, const Eigen::MatrixXd& S,
+	double chi2, const char* what, const char* key)
+{
 	MotionUpdate out;
 	out.mahalanobis2 = nu.dot(S.ldlt().solve(nu));
-	out.used = out.mahalanobis2 <= options.matcher_gate_chi2;
+	out.used = out.mahalanobis2 <= chi2;
 	if (!out.used)
 	{
 		char buf[200];
 		std::snprintf(buf, sizeof(buf),
-			"the match disagrees with the prediction (Mahalanobis^2 %.1f > matcher_gate_chi2 "
-			"%.1f: %.3f m, %.2f deg apart)",
-			out.mahalanobis2, options.matcher_gate_chi2, std::hypot(nu[0], nu[1]),
-			mrpt::RAD2DEG(nu[2]));
+			"%s disagrees with the prediction (Mahalanobis^2 %.1f > %s %.1f: %.3f m, %.2f deg "
+			"apart)",
+			what, out.mahalanobis2, key, chi2, std::hypot(nu[0], nu[1]), mrpt::RAD2DEG(nu[2]));
 		out.reason = buf;
 	}
 	return out;
@@ -193,21 +198,9 @@ EkfLocalizer::MotionUpdate EkfLocalizer::updateAbsolutePose(
 	Eigen::VectorXd nu(3);
 	nu << z.mean.x() - m_x[kRobot], z.mean.y() - m_x[kRobot + 1],
 		mrpt::math::wrapToPi(z.mean.phi() - m_x[kRobot + 2]);
-	const Eigen::Matrix3d S = P()(cols, cols) + z.cov.asEigen();
-	MotionUpdate out;
-	out.mahalanobis2 = nu.dot(S.ldlt().solve(nu));
-	out.used = out.mahalanobis2 <= gateChi2;
-	if (!out.used)
-	{
-		char buf[200];
-		std::snprintf(buf, sizeof(buf),
-			"the map match disagrees with the prediction (Mahalanobis^2 %.1f > gate_chi2 %.1f: "
-			"%.3f m, %.2f deg apart)",
-			out.mahalanobis2, gateChi2, std::hypot(nu[0], nu[1]), mrpt::RAD2DEG(nu[2]));
-		out.reason = buf;
-		return out;
-	}
-	update(cols, H, nu, z.cov.asEigen());
+	const Eigen::MatrixXd S = P()(cols, cols) + z.cov.asEigen();
+	const MotionUpdate out = gate(nu, S, gateChi2, "the map match", "gate_chi2");
+	if (out.used) update(cols, H, nu, z.cov.asEigen());
 	return out;
 }
 

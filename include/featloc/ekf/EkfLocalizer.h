@@ -183,6 +183,11 @@ class EkfLocalizer
 		int polarity = 0;
 		bool vertical() const { return size == 4; }
 	};
+	/** The gate of a pose-like innovation nu (x, y, yaw) with covariance S:
+	 * used when nu^T S^-1 nu <= chi2; the reason names `what` was tested and
+	 * the threshold's config `key`. */
+	static MotionUpdate gate(const Eigen::VectorXd& nu, const Eigen::MatrixXd& S, double chi2,
+		const char* what, const char* key);
 	/** x <- x + K nu, P <- P - K S K^T for an observation whose Jacobian is
 	 * `Hc` (m x cols.size()) on the state entries `cols` (zero elsewhere).
 	 * Returns the innovation's Mahalanobis^2, nu^T S^-1 nu. */
