@@ -207,9 +207,10 @@ int SimApp::main(int argc, char** argv)
 		lo.map = argWorld.getValue();
 		lo.grid_resolution = argGridmap.getValue();
 		const LocalizationMap map = LocalizationMapFile::load(lo);
-		mrpt::maps::COccupancyGridMap2D grid(map.grid());
-		grid.setSize(grid.getXMin(), grid.getXMax(), grid.getYMin(), grid.getYMax(),
-			grid.getResolution(), 1.0f);
+		const auto& drawn = map.grid();
+		mrpt::maps::COccupancyGridMap2D grid;
+		grid.setSize(drawn.getXMin(), drawn.getXMax(), drawn.getYMin(), drawn.getYMax(),
+			drawn.getResolution(), 1.0f);
 		for (const auto& c : map.occupiedCells())
 			grid.setCell(grid.x2idx(static_cast<float>(c.x)), grid.y2idx(static_cast<float>(c.y)), 0.0f);
 		mrpt::io::CFileGZOutputStream f(prefix + ".gridmap.gz");

@@ -43,6 +43,12 @@ void countStereo(const StereoStepResult& r, RunStats& s)
 	s.stereoTimes.push_back(r.frame.seconds);
 }
 
+/** "scan 12 (entry #25)": where a step's message applies. */
+std::string scanAndEntry(const EstimationStep& step)
+{
+	return "scan " + std::to_string(step.scanIndex) + " (entry #" + std::to_string(step.entryIndex) + ")";
+}
+
 /** "5 CObservationBearingRange, 3 CObservationImage": what the log holds. */
 std::string describeContents(const std::map<std::string, size_t>& perClass)
 {
@@ -239,8 +245,7 @@ void Pipeline::processStep(
 				stats.matchFailuresByKind[match.failureKind]++;
 				if (stats.failureExamples.size() < kMaxFailureExamples)
 					stats.failureExamples.push_back(
-						"scan " + std::to_string(step.scanIndex) + " (entry #" +
-						std::to_string(step.entryIndex) + "): " + match.failureReason);
+						scanAndEntry(step) + ": " + match.failureReason);
 			}
 		}
 		const auto e0 = std::chrono::steady_clock::now();
@@ -252,8 +257,7 @@ void Pipeline::processStep(
 			stats.fallbacks++;
 			if (match.success) fallbackReason = m_estimator->lastFallbackReason();
 			if (match.success && stats.rejectionExamples.size() < kMaxFailureExamples)
-				stats.rejectionExamples.push_back("scan " + std::to_string(step.scanIndex) +
-					" (entry #" + std::to_string(step.entryIndex) + "): " + fallbackReason);
+				stats.rejectionExamples.push_back(scanAndEntry(step) + ": " + fallbackReason);
 		}
 	}
 	MapLocalizer::Outcome inMap;
@@ -298,8 +302,7 @@ MapLocalizer::Outcome Pipeline::localizeInMap(const EstimationStep& step, RunSta
 	if (out.event == "found" && stats.firstFoundTime < 0)
 		stats.firstFoundTime = mrpt::Clock::toDouble(step.time);
 	if (!out.event.empty())
-		stats.localizationEvents.push_back(out.event + " at scan " + std::to_string(step.scanIndex) +
-			" (entry #" + std::to_string(step.entryIndex) + "): " + out.message);
+		stats.localizationEvents.push_back(out.event + " at " + scanAndEntry(step) + ": " + out.message);
 	if (!out.mapMatch) return out;
 	const auto& r = *out.mapMatch;
 	stats.mapMatchesAttempted++;
@@ -315,8 +318,7 @@ MapLocalizer::Outcome Pipeline::localizeInMap(const EstimationStep& step, RunSta
 	{
 		stats.mapMatchesRejected++;
 		if (stats.mapRejectionExamples.size() < kMaxFailureExamples)
-			stats.mapRejectionExamples.push_back("scan " + std::to_string(step.scanIndex) +
-				" (entry #" + std::to_string(step.entryIndex) + "): " + out.reason);
+			stats.mapRejectionExamples.push_back(scanAndEntry(step) + ": " + out.reason);
 	}
 	return out;
 }
