@@ -66,5 +66,8 @@ TEST(GlobalMapSearch, FindsTheRobotAnywhereInTheOfficeFromOneScanOrSaysItIsAmbig
 	}
 	std::printf("%zu of %zu scans right, %zu wrong (%zu of them without a close rival); %.2f s per search\n",
 		right, n, wrong, wrongUnambiguous, seconds / n);
-	EXPECT_GT(right, n / 2);
+	// Measured: 20 of 20 right. A wrong best must at least have a rival
+	// that scores nearly as well (the caller then waits for more scans).
+	EXPECT_GE(right, n * 9 / 10);
+	EXPECT_EQ(wrongUnambiguous, 0u);
 }
