@@ -4,8 +4,13 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
+#include <sys/resource.h>
+
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <iterator>
+#include <memory>
 
 #include "featloc/core/InputError.h"
 #include "featloc/io/RawlogReader.h"
@@ -157,4 +162,54 @@ TEST(RawlogReader, MissingFileAndDirectoryAreErrors)
 	EXPECT_NE(errorMessageOf<InputError>([&] { RawlogReader r(dir.path().string()); })
 				  .find("is a directory"),
 		std::string::npos);
+}
+
+TEST(RawlogReader, AnAbsurdBeamCountIsCorruptBeforeItIsAllocated)
+{
+	registerClasses();
+	TempDir dir;
+	TestRawlog log;
+	log.scans = 6;
+	log.compress = false;
+	log.observationsOnly = true;
+	// A beam count no other field of the file holds, to find it.
+	constexpr uint32_t kBeams = 4321;
+	log.editScan = [&](size_t, mrpt::obs::CObservation2DRangeScan& s) {
+		s.resizeScanAndAssign(kBeams, 1.0f, true);
+	};
+	log.write(dir.file("ok.rawlog"));
+	std::ifstream in(dir.file("ok.rawlog"), std::ios::binary);
+	std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+	// The third scan's beam count (little-endian uint32 after its class
+	// name) becomes 2^29: 4.5 GB of ranges, intensities and validity flags
+	// that MRPT would allocate and zero before finding the file too short.
+	size_t at = 0;
+	for (int i = 0; i < 3; ++i) at = bytes.find("CObservation2DRangeScan", at + 1);
+	ASSERT_NE(at, std::string::npos);
+	const std::string count(reinterpret_cast<const char*>(&kBeams), 4);
+	at = bytes.find(count, at);
+	ASSERT_NE(at, std::string::npos);
+	const uint32_t absurd = uint32_t(1) << 29;
+	bytes.replace(at, 4, std::string(reinterpret_cast<const char*>(&absurd), 4));
+	std::ofstream(dir.file("absurd.rawlog"), std::ios::binary) << bytes;
+
+	rusage before{};
+	::getrusage(RUSAGE_SELF, &before);
+	size_t read = 0;
+	const std::string msg = errorMessageOf<InputError>([&] {
+		RawlogReader reader(dir.file("absurd.rawlog"));
+		RawlogEntry e;
+		while (reader.next(e)) read++;
+	});
+	rusage after{};
+	::getrusage(RUSAGE_SELF, &after);
+	EXPECT_NE(msg.find("absurd.rawlog': entry #" + std::to_string(read)), std::string::npos) << msg;
+	EXPECT_NE(msg.find("asks for more than 1024 MiB"), std::string::npos) << msg;
+	EXPECT_GE(read, 2u);
+	std::cout << msg << "\n";
+	// The peak resident memory did not grow by the gigabytes asked for.
+	EXPECT_LT(after.ru_maxrss - before.ru_maxrss, 256L * 1024) << "kB";
+	// And the ceiling is gone afterwards: a large allocation works again.
+	const std::unique_ptr<char[]> big(new char[size_t(1.5 * RawlogReader::kMaxEntryBytes)]);
+	EXPECT_TRUE(big);
 }

@@ -356,6 +356,36 @@ TEST(StereoCamera, StereoObservationWithoutCalibrationIsAnInputError)
 	EXPECT_NE(r2.output.find("rightCameraPose gives no baseline"), std::string::npos) << r2.output;
 }
 
+TEST(StereoCamera, ImagesOfAbsurdSizeAreRefusedBeforeTheyAreDecoded)
+{
+	// A calibration for absurd images is corrupt, whatever the files hold.
+	TempDir d;
+	const auto r = runOnBrokenLog(d, [](mrpt::obs::CObservationStereoImages& o) {
+		o.leftCamera.ncols = 100000;
+	});
+	EXPECT_NE(r.exitCode, 0);
+	EXPECT_NE(r.output.find("entry #1 (stereo 'STEREO'): the leftCamera calibration is for "
+							"100000x480 images: corrupt"),
+		std::string::npos)
+		<< r.output;
+	// An image file whose header claims 12000x12000 pixels (a valid PNG of
+	// 144 megapixels, a few hundred kB on disk) where the calibration says
+	// 640x480: the decoder is refused the memory before it fills it.
+	TempDir d2;
+	const auto r2 = runOnBrokenLog(
+		d2, [](mrpt::obs::CObservationStereoImages&) {},
+		[&] {
+			cv::imwrite((d2.path() / "sim_Images" / "STEREO_000001_left.png").string(),
+				cv::Mat(12000, 12000, CV_8UC1, cv::Scalar(0)));
+		});
+	EXPECT_NE(r2.exitCode, 0);
+	EXPECT_NE(r2.output.find("the left image file"), std::string::npos) << r2.output;
+	EXPECT_NE(r2.output.find("does not decode as an image within 68 MiB (the calibration is "
+							 "for 640x480)"),
+		std::string::npos)
+		<< r2.output;
+}
+
 namespace
 {
 /** The stereo observations of a rawlog, in file order, read as featloc-run reads them. */

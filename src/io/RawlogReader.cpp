@@ -8,6 +8,7 @@
 
 #include <sstream>
 
+#include "featloc/core/AllocationCeiling.h"
 #include "featloc/core/ExceptionText.h"
 #include "featloc/core/InputError.h"
 #include "featloc/io/GzipFileInputStream.h"
@@ -87,8 +88,22 @@ bool RawlogReader::next(RawlogEntry& entry)
 	mrpt::serialization::CSerializable::Ptr obj;
 	try
 	{
+		// MRPT sizes arrays and strings from the length fields it reads,
+		// before reading their contents: a corrupt length must fail here,
+		// not fill gigabytes of memory with zeros.
+		const AllocationCeiling ceiling(kMaxEntryBytes);
 		auto arch = mrpt::serialization::archiveFrom(in);
 		obj = arch.ReadObject();
+	}
+	catch (const std::bad_alloc&)
+	{
+		std::ostringstream msg;
+		msg << "rawlog '" << m_path << "': entry #" << m_nextIndex << " (byte " << before
+			<< " of the uncompressed stream) is corrupt: a length field in it asks for more "
+			<< "than " << (kMaxEntryBytes >> 20) << " MiB of memory";
+		if (m_nextIndex > 0)
+			msg << "; the " << m_nextIndex << " entries before it were read correctly";
+		throw InputError(msg.str());
 	}
 	catch (const std::exception& e)
 	{

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "featloc/core/AllocationCeiling.h"
 #include "featloc/core/InputError.h"
 #include "featloc/io/DecodedStereoPair.h"
 
@@ -15,11 +16,23 @@ namespace
 {
 std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 
+/** Larger calibrated images than this are taken for corrupt values, not
+ * cameras: 16384 pixels a side, 2^28 pixels (a 268-megapixel sensor). */
+constexpr uint32_t kMaxImageSide = 16384;
+constexpr uint64_t kMaxImagePixels = uint64_t(1) << 28;
+
+/** What decoding an image of the calibrated size may take: 4 bytes per
+ * channel of 3 channels, and OpenCV's working buffers. */
+uint64_t decodeBudget(const mrpt::img::TCamera& c)
+{
+	return 16 * uint64_t(c.ncols) * uint64_t(c.nrows) + (uint64_t(64) << 20);
+}
+
 /** The image, grey, loading it from its file when it is stored externally
  * (the path made absolute in the observation on success). */
 cv::Mat checkImage(
 	mrpt::img::CImage& img, const char* side, const std::string& imagesDir,
-	const std::string& where)
+	const mrpt::img::TCamera& camera, const std::string& where)
 {
 	if (!img.isExternallyStored())
 	{
@@ -36,11 +49,26 @@ cv::Mat checkImage(
 			where + ": the " + side + " image file '" + file.string() +
 			"' is missing (external images are looked up in the rawlog's " +
 			"<name>_Images folder: '" + imagesDir + "')");
-	const cv::Mat m = cv::imread(file.string(), cv::IMREAD_GRAYSCALE);
+	// An image file's header can claim any size; the decoder allocates it
+	// before reading the pixels. The calibration says what size to expect.
+	cv::Mat m;
+	std::string failure;
+	try
+	{
+		const AllocationCeiling ceiling(decodeBudget(camera));
+		m = cv::imread(file.string(), cv::IMREAD_GRAYSCALE);
+	}
+	catch (const std::exception& e)	 // std::bad_alloc, cv::Exception
+	{
+		failure = e.what();
+	}
 	if (m.empty())
 		throw InputError(
 			where + ": the " + side + " image file '" + file.string() +
-			"' does not decode as an image");
+			"' does not decode as an image within " +
+			std::to_string(decodeBudget(camera) >> 20) + " MiB (the calibration is for " +
+			sizeText(static_cast<int>(camera.ncols), static_cast<int>(camera.nrows)) + ")" +
+			(failure.empty() ? std::string() : ": " + failure));
 	img.setExternalStorage(fs::absolute(file, ec).string());
 	return m;
 }
@@ -49,6 +77,13 @@ void checkCamera(const mrpt::img::TCamera& c, const char* side, const std::strin
 {
 	const bool ok = std::isfinite(c.fx()) && std::isfinite(c.fy()) && c.fx() > 0 && c.fy() > 0 &&
 		std::isfinite(c.cx()) && std::isfinite(c.cy()) && c.ncols > 0 && c.nrows > 0;
+	if (ok && (c.ncols > kMaxImageSide || c.nrows > kMaxImageSide ||
+				  uint64_t(c.ncols) * c.nrows > kMaxImagePixels))
+		throw InputError(
+			where + ": the " + side + "Camera calibration is for " +
+			sizeText(static_cast<int>(c.ncols), static_cast<int>(c.nrows)) +
+			" images: corrupt (at most " + std::to_string(kMaxImageSide) +
+			" pixels a side and " + std::to_string(kMaxImagePixels >> 20) + " megapixels)");
 	if (!ok)
 		throw InputError(
 			where + ": stereo observation without a calibration: " + side +
@@ -90,8 +125,9 @@ bool StereoImagesHandler::handle(
 			where + ": stereo observation without a calibration: rightCameraPose gives no "
 					"baseline (the right camera must be offset from the left one)");
 	auto images = std::make_shared<DecodedStereoPair>();
-	images->left = checkImage(obs->imageLeft, "left", m_imagesDirectory, where);
-	images->right = checkImage(obs->imageRight, "right", m_imagesDirectory, where);
+	images->left = checkImage(obs->imageLeft, "left", m_imagesDirectory, obs->leftCamera, where);
+	images->right =
+		checkImage(obs->imageRight, "right", m_imagesDirectory, obs->rightCamera, where);
 	const cv::Size left = images->left.size(), right = images->right.size();
 	if (left != right)
 		throw InputError(

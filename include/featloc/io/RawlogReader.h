@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -13,11 +14,19 @@ namespace featloc
  * false both at the end and on a damaged file, next() tells them apart: the
  * end of the file exactly between two entries is a clean end; running out of
  * data inside an entry is a truncated file, and anything else that fails to
- * deserialize is a corrupt file. Both throw InputError naming the file, the
+ * deserialize is a corrupt file, as is an entry asking for more than
+ * kMaxEntryBytes of memory. Both throw InputError naming the file, the
  * entry index and the byte offset (in the uncompressed stream). */
 class RawlogReader
 {
    public:
+	/** The most memory one entry may take while it is read. MRPT allocates
+	 * what an entry's length fields say before reading the data they
+	 * announce; an entry that asks for more is reported as corrupt before
+	 * any of it is allocated (AllocationCeiling). Real entries are far
+	 * below it: a 1081-beam scan is 10 kB, a 12-megapixel colour image 36 MB. */
+	static constexpr uint64_t kMaxEntryBytes = uint64_t(1) << 30;
+
 	/** Opens the file. Throws InputError if it does not exist, is a
 	 * directory, or cannot be opened. */
 	explicit RawlogReader(const std::string& path);
