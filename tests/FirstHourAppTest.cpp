@@ -9,6 +9,10 @@
 #include <set>
 #include <sstream>
 
+#include "featloc/core/InputError.h"
+#include "featloc/eval/TrajectoryFile.h"
+#include "featloc/io/MatchTableFile.h"
+#include "featloc/io/RawlogReader.h"
 #include "featloc/registerClasses.h"
 #include "support/CommandRunner.h"
 #include "support/JsonFile.h"
@@ -217,6 +221,87 @@ TEST(FirstHour, CtrlCStopsCleanlyAndKeepsWhatWasDone)
 	for (std::string line; std::getline(tum, line);) rows += !line.empty() && line[0] != '#';
 	EXPECT_EQ(rows, scans);
 	expectNoLeftovers(dir);
+}
+
+namespace
+{
+/** A text output ends with a whole line. */
+void expectEndsWithANewline(const std::string& file)
+{
+	std::ifstream in(file, std::ios::binary);
+	std::stringstream ss;
+	ss << in.rdbuf();
+	EXPECT_FALSE(ss.str().empty()) << file;
+	EXPECT_EQ(ss.str().back(), '\n') << file << " ends inside a line";
+}
+}  // namespace
+
+TEST(FirstHour, AKilledRunLosesNothingAndLeavesWholeFiles)
+{
+	featloc::registerClasses();
+	TempDir dir;
+	const std::string out = dir.file("k");
+	// Earlier results, as a user keeps them.
+	ASSERT_EQ(featlocRun(shellQuote(kConfig) + " " + shellQuote(kSimul) + " --out " +
+				  shellQuote(out) + " --set Pipeline:estimator=odometry")
+				  .exitCode,
+		0);
+	const auto before = contents(out);
+	// The EKF over MRPT's 1733-scan log takes seconds: SIGKILL (no chance
+	// to clean up) once 300 poses are in the staging folder.
+	const CommandResult killed = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
+		shellQuote(kSimul) + " -q --set Pipeline:estimator=ekf --out " + shellQuote(out) +
+		" > /dev/null & pid=$!; f=" + shellQuote(out) + ".featloc-partial-$pid/poses_cov.txt; " +
+		"for i in $(seq 400); do [ -f $f ] && [ $(wc -l < $f) -gt 300 ] && break; sleep 0.05; "
+		"done; kill -KILL $pid; wait $pid; echo exit=$? pid=$pid");
+	ASSERT_NE(killed.output.find("exit=137"), std::string::npos) << killed.output;
+	const std::string pid = killed.output.substr(killed.output.find("pid=") + 4,
+		killed.output.find_first_of("\n", killed.output.find("pid=")) - killed.output.find("pid=") - 4);
+	// The earlier results are untouched, byte for byte.
+	EXPECT_EQ(contents(out), before);
+	// The killed run's files: rows whole, the rawlog readable to its last
+	// whole entry, no file written at the end half there.
+	const std::string staged = out + ".featloc-partial-" + pid;
+	ASSERT_TRUE(fs::is_directory(staged)) << staged;
+	// featloc's own readers (featloc-eval's, the viewer's) read them whole.
+	for (const char* f : {"poses_cov.txt", "trajectory.tum", "matches.txt"})
+		expectEndsWithANewline(staged + "/" + f);
+	const size_t poses = featloc::TrajectoryFile::read(staged + "/poses_cov.txt").poses.size();
+	EXPECT_GT(poses, 300u);
+	EXPECT_LT(poses, 1733u);
+	EXPECT_EQ(featloc::TrajectoryFile::read(staged + "/trajectory.tum").poses.size(), poses);
+	EXPECT_GE(featloc::MatchTableFile::read(staged + "/matches.txt").size(), poses - 1);
+	size_t entries = 0;
+	std::string end = "clean end";
+	try
+	{
+		featloc::RawlogReader reader(staged + "/estimated.rawlog");
+		featloc::RawlogEntry e;
+		while (reader.next(e)) entries++;
+	}
+	catch (const featloc::InputError& e)
+	{
+		end = e.what();
+	}
+	EXPECT_GT(entries, 100u) << end;
+	if (end != "clean end")
+	{
+		EXPECT_NE(end.find("truncated"), std::string::npos) << end;
+	}
+	for (const auto& e : fs::directory_iterator(staged))
+		EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos) << e.path();
+	EXPECT_FALSE(fs::exists(staged + "/summary.json"));
+	// The next run into the folder says where the killed run's files are,
+	// keeps them, and replaces the results.
+	const CommandResult next = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
+		shellQuote(kSimul) + " --out " + shellQuote(out) + " --set Pipeline:estimator=odometry");
+	EXPECT_EQ(next.exitCode, 0) << next.output;
+	EXPECT_NE(next.output.find("a run killed before it finished left its partial results in " +
+				  fs::path(staged).string()),
+		std::string::npos)
+		<< next.output;
+	EXPECT_TRUE(fs::is_directory(staged));
+	EXPECT_TRUE(fs::exists(out + "/summary.json"));
 }
 
 TEST(FirstHour, CarmenLogsRunEndToEndAgainstTheirCorrectedPoses)

@@ -175,6 +175,7 @@ int LiveApp::main(int argc, char** argv)
 		source.description().c_str(), rc.estimator->name().c_str(),
 		rc.estimator->usesScanMatcher() ? (", matcher " + rc.matcher->className()).c_str() : "",
 		folder.dir().c_str());
+	RunReport::printAbandoned(folder);
 	for (const auto& section : notStarted)
 		std::printf("  not started: [%s] (not in [Live] sensors)\n", section.c_str());
 	std::printf("starting the drivers (each must answer within %.0f s)...\n",

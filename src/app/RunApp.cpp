@@ -254,6 +254,7 @@ int RunApp::main(int argc, char** argv)
 		run.rc.estimator->usesScanMatcher() ? (", matcher " + run.rc.matcher->className()).c_str()
 											: "",
 		run.folder->dir().c_str());
+	RunReport::printAbandoned(*run.folder);
 	std::fflush(stdout);
 	if (signals.requested())
 	{

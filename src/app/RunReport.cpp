@@ -1,4 +1,5 @@
 #include "featloc/app/RunReport.h"
+#include "featloc/core/WholeFile.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -37,9 +38,21 @@ RunReport::Reference RunReport::readGroundTruth(const TrackedConfig& cfg, const 
 
 void RunReport::writeUsedConfig(const TrackedConfig& cfg, const std::string& path)
 {
-	std::ofstream f(path);
-	f << "# effective configuration of this run (ini + --set)\n" << cfg.content();
-	if (!f) throw std::runtime_error("cannot write '" + path + "'");
+	writeWholeFile(path, [&](const std::string& file) {
+		std::ofstream f(file);
+		f << "# effective configuration of this run (ini + --set)\n" << cfg.content();
+		f.close();
+		if (!f) throw std::runtime_error("cannot write '" + path + "'");
+	});
+}
+
+void RunReport::printAbandoned(const ResultsFolder& folder)
+{
+	for (const auto& a : folder.abandoned())
+		std::printf(
+			"  note: a run killed before it finished left its partial results in %s "
+			"(kept; delete it when done)\n",
+			a.c_str());
 }
 
 void RunReport::printSummary(const RunStats& s)

@@ -1,4 +1,5 @@
 #include "featloc/eval/EvaluationReport.h"
+#include "featloc/core/WholeFile.h"
 
 #include <mrpt/core/bits_math.h>
 
@@ -143,7 +144,12 @@ std::string EvaluationReport::toJson() const
 }
 void EvaluationReport::writeNeesSeries(const std::string& path) const
 {
-	std::ofstream out(path);
+	writeWholeFile(path, [&](const std::string& file) { writeNeesRows(file, path); });
+}
+
+void EvaluationReport::writeNeesRows(const std::string& file, const std::string& path) const
+{
+	std::ofstream out(file);
 	if (!out) throw std::runtime_error("cannot write '" + path + "'");
 	out << "# NEES of each pose against the reference (3 dof; consistent: mean 3): t nees\n";
 	char buf[64];
@@ -152,6 +158,7 @@ void EvaluationReport::writeNeesSeries(const std::string& path) const
 		std::snprintf(buf, sizeof(buf), "%.6f %.6g\n", t, nees);
 		out << buf;
 	}
+	out.close();
 	if (!out) throw std::runtime_error("error writing '" + path + "'");
 }
 }  // namespace featloc

@@ -1,4 +1,5 @@
 #include "featloc/output/LandmarkTableWriter.h"
+#include "featloc/core/WholeFile.h"
 
 #include <cmath>
 #include <cstdio>
@@ -16,7 +17,12 @@ void LandmarkTableWriter::onStep(const StepRecord& r)
 
 void LandmarkTableWriter::finish(const RunStats&)
 {
-	std::ofstream f(m_path);
+	writeWholeFile(m_path, [&](const std::string& file) { writeTable(file); });
+}
+
+void LandmarkTableWriter::writeTable(const std::string& file) const
+{
+	std::ofstream f(file);
 	if (!f) throw std::runtime_error("cannot write '" + m_path + "'");
 	f << "# featloc EKF landmarks (world frame): id x y c_xx c_xy c_yy "
 		 "observations kind plane l_low l_high l sigma_x sigma_y sigma_l_low sigma_l_high\n"
@@ -39,5 +45,7 @@ void LandmarkTableWriter::finish(const RunStats&)
 				std::sqrt(l.covariance(0, 0)), std::sqrt(l.covariance(1, 1)));
 		f << row;
 	}
+	f.close();
+	if (!f) throw std::runtime_error("error writing '" + m_path + "'");
 }
 }  // namespace featloc

@@ -1,6 +1,14 @@
 #include "featloc/output/ResultsFolder.h"
 
+#include <fcntl.h>
+#include <stdio.h>
 #include <unistd.h>
+
+#include <signal.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 
 #include <filesystem>
 #include <stdexcept>
@@ -19,6 +27,27 @@ bool replaceable(const fs::path& dir)
 	std::error_code ec;
 	if (fs::is_empty(dir, ec) && !ec) return true;
 	return fs::is_regular_file(dir / "summary.json", ec);
+}
+
+/** The staging folders beside `d` of runs that are no longer running:
+ * killed before they could publish (SIGKILL, power loss). */
+std::vector<std::string> abandonedStagingFolders(const fs::path& d)
+{
+	std::vector<std::string> found;
+	const std::string prefix = d.filename().string() + ".featloc-partial-";
+	std::error_code ec;
+	for (fs::directory_iterator it(d.parent_path(), ec), end; !ec && it != end; it.increment(ec))
+	{
+		const std::string name = it->path().filename().string();
+		if (name.rfind(prefix, 0) != 0) continue;
+		char* rest = nullptr;
+		const long pid = std::strtol(name.c_str() + prefix.size(), &rest, 10);
+		if (pid <= 0 || *rest != '\0') continue;
+		if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;	// still running
+		found.push_back(it->path().string());
+	}
+	std::sort(found.begin(), found.end());
+	return found;
 }
 
 /** Absolute, normalised, without a trailing separator. */
@@ -47,6 +76,7 @@ ResultsFolder::ResultsFolder(const std::string& dir)
 				"replaces the whole folder: give an empty or new folder with --out DIR");
 	}
 	fs::create_directories(d.parent_path(), ec);
+	m_abandoned = abandonedStagingFolders(d);
 	m_staging = (d.parent_path() /
 		(d.filename().string() + ".featloc-partial-" + std::to_string(::getpid())))
 					.string();
@@ -95,25 +125,15 @@ void ResultsFolder::publish()
 	std::error_code ec;
 	if (fs::exists(d, ec))
 	{
-		// Rename first, delete after: the old results are never half gone.
-		const fs::path old = d.parent_path() /
-			(d.filename().string() + ".featloc-old-" + std::to_string(::getpid()));
-		fs::remove_all(old, ec);
-		fs::rename(d, old, ec);
-		if (ec)
+		// One atomic exchange: at every instant DIR holds either the old
+		// results or the new ones, even if the process is killed here.
+		// The staging name then holds the old results, removed after.
+		if (::renameat2(AT_FDCWD, m_staging.c_str(), AT_FDCWD, m_dir.c_str(), RENAME_EXCHANGE) != 0)
 			throw std::runtime_error(
-				"cannot replace the results folder '" + m_dir + "' (" + ec.message() +
+				"cannot replace the results folder '" + m_dir + "' (" +
+				std::error_code(errno, std::generic_category()).message() +
 				"); this run's results are in '" + m_staging + "'");
-		fs::rename(m_staging, d, ec);
-		if (ec)
-		{
-			std::error_code back;
-			fs::rename(old, d, back);
-			throw std::runtime_error(
-				"cannot move the results into '" + m_dir + "' (" + ec.message() +
-				"); this run's results are in '" + m_staging + "'");
-		}
-		fs::remove_all(old, ec);
+		fs::remove_all(m_staging, ec);
 	}
 	else
 	{

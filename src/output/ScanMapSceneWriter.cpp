@@ -1,4 +1,5 @@
 #include "featloc/output/ScanMapSceneWriter.h"
+#include "featloc/core/WholeFile.h"
 
 #include <mrpt/opengl/CEllipsoid2D.h>
 #include <mrpt/opengl/CGridPlaneXY.h>
@@ -149,7 +150,8 @@ void ScanMapSceneWriter::finish(const RunStats&)
 		robot->setPose(mrpt::poses::CPose3D(m_path3d.back()));
 		scene.insert(robot);
 	}
-	if (!scene.saveToFile(m_path))
-		throw std::runtime_error("cannot write '" + m_path + "'");
+	writeWholeFile(m_path, [&](const std::string& file) {
+		if (!scene.saveToFile(file)) throw std::runtime_error("cannot write '" + m_path + "'");
+	});
 }
 }  // namespace featloc

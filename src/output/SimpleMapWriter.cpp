@@ -1,4 +1,5 @@
 #include "featloc/output/SimpleMapWriter.h"
+#include "featloc/core/WholeFile.h"
 
 #include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -28,6 +29,8 @@ void SimpleMapWriter::onStep(const StepRecord& r)
 
 void SimpleMapWriter::finish(const RunStats&)
 {
-	if (!m_map->saveToFile(m_path)) throw std::runtime_error("cannot write '" + m_path + "'");
+	writeWholeFile(m_path, [&](const std::string& file) {
+		if (!m_map->saveToFile(file)) throw std::runtime_error("cannot write '" + m_path + "'");
+	});
 }
 }  // namespace featloc

@@ -1,4 +1,5 @@
 #include "featloc/output/StereoDebugPictureWriter.h"
+#include "featloc/core/WholeFile.h"
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -28,7 +29,9 @@ void StereoDebugPictureWriter::onStep(const StepRecord& r)
 	char name[32];
 	std::snprintf(name, sizeof(name), "/%06zu.png", r.step.index);
 	const std::string file = m_dir + name;
-	if (!cv::imwrite(file, StereoDebugPicture::draw(r.step.stereoImages->left, r.stereo->frame)))
-		throw std::runtime_error("cannot write '" + file + "'");
+	const cv::Mat picture = StereoDebugPicture::draw(r.step.stereoImages->left, r.stereo->frame);
+	writeWholeFile(file, [&](const std::string& partial) {
+		if (!cv::imwrite(partial, picture)) throw std::runtime_error("cannot write '" + file + "'");
+	});
 }
 }  // namespace featloc

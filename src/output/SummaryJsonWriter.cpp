@@ -1,4 +1,5 @@
 #include "featloc/output/SummaryJsonWriter.h"
+#include "featloc/core/WholeFile.h"
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -93,11 +94,15 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 
 void writeJson(const std::string& path, const nlohmann::json& j)
 {
-	std::ofstream out(path);
-	if (!out) throw std::runtime_error("cannot write '" + path + "'");
-	// MRPT's exception texts can quote raw bytes of a damaged file: replace
-	// invalid UTF-8 rather than lose the whole summary.
-	out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+	writeWholeFile(path, [&](const std::string& file) {
+		std::ofstream out(file);
+		if (!out) throw std::runtime_error("cannot write '" + path + "'");
+		// MRPT's exception texts can quote raw bytes of a damaged file:
+		// replace invalid UTF-8 rather than lose the whole summary.
+		out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+		out.close();
+		if (!out) throw std::runtime_error("error writing '" + path + "'");
+	});
 }
 }  // namespace
 

@@ -1,4 +1,5 @@
 #include "featloc/plot/CurvePlot.h"
+#include "featloc/core/WholeFile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -92,7 +93,8 @@ void CurvePlot::save(const std::string& pngPath, int width, int height) const
 		cv::putText(img, series[s].label, {left + 52, ly}, font, 0.5, cv::Scalar(0, 0, 0), 1,
 			cv::LINE_AA);
 	}
-	if (!cv::imwrite(pngPath, img))
-		throw std::runtime_error("cannot write the plot '" + pngPath + "'");
+	writeWholeFile(pngPath, [&](const std::string& file) {
+		if (!cv::imwrite(file, img)) throw std::runtime_error("cannot write the plot '" + pngPath + "'");
+	});
 }
 }  // namespace featloc

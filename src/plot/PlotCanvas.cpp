@@ -1,4 +1,5 @@
 #include "featloc/plot/PlotCanvas.h"
+#include "featloc/core/WholeFile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -139,7 +140,8 @@ void PlotCanvas::legend(const std::string& text, Rgb colour)
 
 void PlotCanvas::save(const std::string& pngPath) const
 {
-	if (!cv::imwrite(pngPath, m->img))
-		throw std::runtime_error("cannot write plot '" + pngPath + "'");
+	writeWholeFile(pngPath, [&](const std::string& file) {
+		if (!cv::imwrite(file, m->img)) throw std::runtime_error("cannot write plot '" + pngPath + "'");
+	});
 }
 }  // namespace featloc

@@ -30,6 +30,9 @@ class RunReport
 	static Reference readGroundTruth(const TrackedConfig& cfg, const RunConfiguration& rc);
 
 	static void printSummary(const RunStats& s);
+	/** One console line per staging folder that a killed run left beside
+	 * the results folder (ResultsFolder::abandoned()). */
+	static void printAbandoned(const ResultsFolder& folder);
 
 	/** The evaluation against the reference (summary.json, nees.txt) and
 	 * trajectory.png, with or without a reference. */

@@ -57,5 +57,9 @@ struct EvaluationReport
 	 * tests over several runs: scripts/bench-ekf.sh). Throws when the file
 	 * cannot be written. */
 	void writeNeesSeries(const std::string& path) const;
+
+   private:
+	/** The rows of writeNeesSeries() into `file`; `path` names it in errors. */
+	void writeNeesRows(const std::string& file, const std::string& path) const;
 };
 }  // namespace featloc

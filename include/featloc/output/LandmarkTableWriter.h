@@ -19,6 +19,9 @@ class LandmarkTableWriter : public RunOutput
 	std::string path() const override { return m_path; }
 
    private:
+	/** The table into `file` (a temporary renamed to m_path). */
+	void writeTable(const std::string& file) const;
+
 	std::string m_path;
 	std::vector<EstimatedLandmark> m_landmarks;
 };

@@ -15,8 +15,12 @@ namespace featloc
  * (`DIR.featloc-partial-PID`); publish() swaps that in place of DIR at the
  * end of the run (finished, failed part-way, or interrupted), and a run
  * abandoned before it started removes its staging folder. A run killed
- * outright leaves DIR untouched and its partial files in the staging
- * folder. */
+ * outright (SIGKILL) leaves DIR as it was and its partial files in the
+ * staging folder: every file there whole (rows are written a line at a
+ * time, files written at the end appear whole through writeWholeFile) and
+ * estimated.rawlog readable up to its last whole entry. The next run into
+ * DIR finds such folders (abandoned()) and says so; it does not delete
+ * them. */
 class ResultsFolder
 {
    public:
@@ -41,8 +45,13 @@ class ResultsFolder
 
 	const std::string& dir() const { return m_dir; }
 
+	/** Staging folders beside DIR left by runs killed before they
+	 * published (their process is gone), found when this one was made. */
+	const std::vector<std::string>& abandoned() const { return m_abandoned; }
+
    private:
 	std::string m_dir, m_staging;
+	std::vector<std::string> m_abandoned;
 	bool m_published = false;
 };
 }  // namespace featloc
