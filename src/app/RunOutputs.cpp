@@ -42,7 +42,8 @@ RunOutputs RunOutputs::make(const RunConfiguration& rc, const ResultsFolder& fol
 			"estimated.rawlog");
 	if (rc.output.write_scene)
 		add(std::make_unique<ScanMapSceneWriter>(folder.stagedFile("map.3Dscene"),
-				rc.output.scene_scan_decimation, rc.output.scene_ellipse_every,
+				rc.output.scene_scan_decimation, rc.output.scene_point_resolution,
+				rc.output.scene_ellipse_every,
 				rc.mapLocalizer ? rc.mapLocalizer->map().occupiedCells()
 								: std::vector<mrpt::math::TPoint2D>{}),
 			"map.3Dscene");

@@ -31,9 +31,10 @@ std::shared_ptr<mrpt::opengl::CEllipsoid2D> ellipse(
 }  // namespace
 
 ScanMapSceneWriter::ScanMapSceneWriter(std::string path, unsigned int scanDecimation,
-	unsigned int ellipseEvery, std::vector<mrpt::math::TPoint2D> map)
+	double pointResolution, unsigned int ellipseEvery, std::vector<mrpt::math::TPoint2D> map)
 	: m_path(std::move(path)),
 	  m_decimation(std::max(1u, scanDecimation)),
+	  m_pointResolution(pointResolution),
 	  m_ellipseEvery(ellipseEvery),
 	  m_map(std::move(map))
 {
@@ -57,8 +58,17 @@ void ScanMapSceneWriter::onStep(const StepRecord& r)
 	const double c = std::cos(sensor.phi()), s = std::sin(sensor.phi());
 	for (const auto& p : ScanPoints::fromScan(*r.step.scan).points)
 	{
-		m_x.push_back(static_cast<float>(sensor.x() + c * p.x - s * p.y));
-		m_y.push_back(static_cast<float>(sensor.y() + s * p.x + c * p.y));
+		const double x = sensor.x() + c * p.x - s * p.y, y = sensor.y() + s * p.x + c * p.y;
+		if (m_pointResolution > 0)
+		{
+			// A robot that comes back sees the same walls again: one point
+			// per cell is what a picture of them needs.
+			const auto cx = static_cast<uint32_t>(static_cast<int32_t>(std::floor(x / m_pointResolution)));
+			const auto cy = static_cast<uint32_t>(static_cast<int32_t>(std::floor(y / m_pointResolution)));
+			if (!m_cells.insert((uint64_t(cx) << 32) | cy).second) continue;
+		}
+		m_x.push_back(static_cast<float>(x));
+		m_y.push_back(static_cast<float>(y));
 		m_z.push_back(0.0f);
 	}
 }

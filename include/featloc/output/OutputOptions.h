@@ -23,6 +23,11 @@ struct OutputOptions : public mrpt::config::CLoadableOptions
 	std::string pose_label = "featloc_estimate";
 	/** map.3Dscene holds the points of every N-th scan. */
 	unsigned int scene_scan_decimation = 1;
+	/** [m] map.3Dscene keeps the first scan point that falls in each cell
+	 * of this size: the scene (and the run's memory) grows with the area
+	 * seen, not with the log's length (0: every point, as many as the log
+	 * has). */
+	double scene_point_resolution = 0.02;
 	/** map.3Dscene draws the robot's 3-sigma covariance ellipse at every
 	 * N-th scan (0: none); landmarks always get theirs. */
 	unsigned int scene_ellipse_every = 10;

@@ -3,7 +3,9 @@
 #include <mrpt/math/TPose3D.h>
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -23,9 +25,11 @@ class ScanMapSceneWriter : public RunOutput
 {
    public:
 	/** \param scanDecimation place every N-th scan's points (1 = all).
+	 * \param pointResolution [m] keep the first point of each cell of this
+	 *   size (0: every point).
 	 * \param ellipseEvery robot covariance ellipse every N-th scan (0: none). */
-	ScanMapSceneWriter(std::string path, unsigned int scanDecimation, unsigned int ellipseEvery,
-		std::vector<mrpt::math::TPoint2D> map = {});
+	ScanMapSceneWriter(std::string path, unsigned int scanDecimation, double pointResolution,
+		unsigned int ellipseEvery, std::vector<mrpt::math::TPoint2D> map = {});
 	void onStep(const StepRecord& record) override;
 	void finish(const RunStats& stats) override;
 	std::string path() const override { return m_path; }
@@ -33,7 +37,9 @@ class ScanMapSceneWriter : public RunOutput
    private:
 	std::string m_path;
 	unsigned int m_decimation;
+	double m_pointResolution;
 	std::vector<float> m_x, m_y, m_z;
+	std::unordered_set<uint64_t> m_cells;	//!< cells holding a point (pointResolution > 0)
 	unsigned int m_ellipseEvery;
 	std::vector<mrpt::math::TPose3D> m_path3d;
 	/** Robot (x, y) means and covariances at the ellipse scans. */
