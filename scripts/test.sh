@@ -11,7 +11,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   export FEATLOC_CMAKE_ARGS="-DFEATLOC_SANITIZE=ON -DFEATLOC_BUILD_BENCHMARKS=OFF"
   # The flags live in the cache: reconfigure (cheap) in case they changed.
   [ -f "$FEATLOC_BUILD_DIR/CMakeCache.txt" ] && cmake "$FEATLOC_BUILD_DIR" $FEATLOC_CMAKE_ARGS > /dev/null
-  export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:allocator_may_return_null=1}"
+  export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
   export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1:suppressions=$ROOT/tests/sanitizer/ubsan.supp}"
   export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$ROOT/tests/sanitizer/lsan.supp:print_suppressions=0}"
 elif [ -n "${1:-}" ]; then

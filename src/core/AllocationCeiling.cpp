@@ -24,8 +24,30 @@ uint64_t AllocationCeiling::dataBytesInUse()
 	return data * static_cast<uint64_t>(::sysconf(_SC_PAGESIZE));
 }
 
+// AddressSanitizer maps its own bookkeeping (shadow, quarantine, stack
+// depot) as the program runs; under a data limit those mmaps fail and ASan
+// dies ("Failed to mmap"). Sanitized builds have no ceiling: there
+// libFuzzer's malloc limit flags what the ceiling would refuse.
+#if defined(__SANITIZE_ADDRESS__)
+#define FEATLOC_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FEATLOC_UNDER_ASAN 1
+#endif
+#endif
+
+bool AllocationCeiling::available()
+{
+#ifdef FEATLOC_UNDER_ASAN
+	return false;
+#else
+	return true;
+#endif
+}
+
 AllocationCeiling::AllocationCeiling(uint64_t bytes)
 {
+	if (!available()) return;
 	const uint64_t inUse = dataBytesInUse();
 	if (inUse == 0 || ::getrlimit(RLIMIT_DATA, &m_saved) != 0) return;  // cannot tell: no ceiling
 	const uint64_t wanted = inUse + bytes;

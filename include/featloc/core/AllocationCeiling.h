@@ -16,7 +16,7 @@ namespace featloc
  * It lowers the soft RLIMIT_DATA (enforced for mmap too since Linux 4.7)
  * and restores the previous limit when it goes; never raises it. The limit
  * is the process's, so other threads share the headroom meanwhile: keep
- * the scope short. */
+ * the scope short. Off under AddressSanitizer (available()). */
 class AllocationCeiling
 {
    public:
@@ -24,6 +24,10 @@ class AllocationCeiling
 	~AllocationCeiling();
 	AllocationCeiling(const AllocationCeiling&) = delete;
 	AllocationCeiling& operator=(const AllocationCeiling&) = delete;
+
+	/** False in AddressSanitizer builds, where the ceiling is off (ASan's
+	 * own mappings would fail under it). */
+	static bool available();
 
 	/** The process's data memory now, in bytes (/proc/self/statm). */
 	static uint64_t dataBytesInUse();
