@@ -18,10 +18,14 @@
 #include "featloc/io/CarmenLogReader.h"
 #include "featloc/io/MatchTableFile.h"
 #include "featloc/io/RawlogReader.h"
+#include "featloc/io/StereoCalibrationFile.h"
 #include "featloc/io/TumPoseFile.h"
 #include "featloc/io/WallMapFile.h"
 #include "featloc/registerClasses.h"
 #include "featloc/sim/SimConfiguration.h"
+#include "featloc/stereo/StereoVerticalLines.h"
+
+#include <opencv2/core.hpp>
 
 namespace featloc::fuzz
 {
@@ -121,5 +125,50 @@ inline void trajectoryFile(const uint8_t* data, size_t size)
 	documentedErrorsOnly([&] { TrajectoryFile::readRelations(file.path); });
 	documentedErrorsOnly([&] { TumPoseFile::read(file.path); });
 	documentedErrorsOnly([&] { MatchTableFile::read(file.path); });
+}
+/** fuzz_stereo: byte 0 even: a stereo calibration, the rest split at its
+ * first NUL into the left and right camera files (OpenCV camera_info or
+ * EuRoC sensor.yaml), read by StereoCalibrationFile (featloc-stereo-import).
+ * Byte 0 odd: a grey stereo pair made of the bytes through the segment
+ * stage of Moon et al. (StereoVerticalLines: detection, dynamic-programming
+ * matching, SAD disparity, triangulation): bytes 1-2 give the width and
+ * height (8 to 263 px), byte 3 the right image's shift (disparity), byte 4
+ * the focal length; the pixels repeat the bytes that follow. */
+inline void stereo(const uint8_t* data, size_t size)
+{
+	if (size == 0) return;
+	if ((data[0] & 1) == 0)
+	{
+		const uint8_t* rest = data + 1;
+		const size_t n = size - 1;
+		size_t cut = 0;
+		while (cut < n && rest[cut] != 0) cut++;
+		FuzzFile left(rest, cut, "-left.yaml");
+		FuzzFile right(rest + std::min(cut + 1, n), n - std::min(cut + 1, n), "-right.yaml");
+		documentedErrorsOnly([&] { StereoCalibrationFile::load(left.path, right.path); });
+		return;
+	}
+	if (size < 6) return;
+	const int w = 8 + data[1], h = 8 + data[2], shift = data[3] % w;
+	const uint8_t* pixels = data + 5;
+	const size_t n = size - 5;
+	cv::Mat left(h, w, CV_8UC1), right(h, w, CV_8UC1);
+	for (int r = 0; r < h; r++)
+		for (int c = 0; c < w; c++)
+		{
+			left.at<uint8_t>(r, c) = pixels[(size_t(r) * w + c) % n];
+			right.at<uint8_t>(r, c) = pixels[(size_t(r) * w + (c + shift) % w) % n];
+		}
+	mrpt::img::TStereoCamera camera;
+	for (auto* c : {&camera.leftCamera, &camera.rightCamera})
+	{
+		c->ncols = w;
+		c->nrows = h;
+		c->setIntrinsicParamsFromValues(20.0 + data[4] * 4, 20.0 + data[4] * 4, w / 2.0, h / 2.0);
+	}
+	camera.rightCameraPose = mrpt::math::TPose3DQuat(0.12, 0, 0, 1, 0, 0, 0);
+	documentedErrorsOnly([&] {
+		StereoVerticalLines().extract(left, right, camera, mrpt::poses::CPose3D(), "fuzz pair");
+	});
 }
 }  // namespace featloc::fuzz

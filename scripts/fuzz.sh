@@ -19,7 +19,7 @@ if [ ! -f "$BUILD/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DFEATLOC_FUZZ=ON -DBUILD_TESTING=OFF -DFEATLOC_BUILD_BENCHMARKS=OFF >/dev/null
 fi
-TARGETS=(fuzz_rawlog_reader fuzz_carmen_reader fuzz_config fuzz_world_file fuzz_trajectory_file fuzz_scan_matchers)
+TARGETS=(fuzz_rawlog_reader fuzz_carmen_reader fuzz_config fuzz_world_file fuzz_trajectory_file fuzz_scan_matchers fuzz_stereo)
 [ $# -gt 0 ] && TARGETS=("$@")
 cmake --build "$BUILD" -j "$(nproc)" --target "${TARGETS[@]}" >/dev/null
 
@@ -40,7 +40,13 @@ mkdir -p "$CORPUS/fuzz_world_file"
 for f in "$ROOT"/worlds/*.ini; do { printf '\0'; cat "$f"; } > "$CORPUS/fuzz_world_file/seed-$(basename "$f")"; done
 for f in "$ROOT"/worlds/*.yaml; do { printf '\1'; cat "$f"; } > "$CORPUS/fuzz_world_file/seed-$(basename "$f")"; done
 seed fuzz_trajectory_file "$ROOT"/rawlogs/*/*.gt.txt "$ROOT"/rawlogs/stereo/*.tum
-mkdir -p "$CORPUS/fuzz_scan_matchers"
+mkdir -p "$CORPUS/fuzz_scan_matchers" "$CORPUS/fuzz_stereo"
+# Stereo: the shipped calibrations (byte 0 even, left NUL right) and a pair
+# of vertical bars (byte 0 odd: 64x48 px, 6 px apart, focal 200 px).
+S="$ROOT/../shared/data/stereo"
+[ -f "$S/rtabmap-indoor-rect/stereo_left.yaml" ] && { printf '\0'; cat "$S/rtabmap-indoor-rect/stereo_left.yaml"; printf '\0'; cat "$S/rtabmap-indoor-rect/stereo_right.yaml"; } > "$CORPUS/fuzz_stereo/seed-rtabmap"
+[ -f "$S/euroc-v1-pairs/sensorLeft.yaml" ] && { printf '\0'; cat "$S/euroc-v1-pairs/sensorLeft.yaml"; printf '\0'; cat "$S/euroc-v1-pairs/sensorRight.yaml"; } > "$CORPUS/fuzz_stereo/seed-euroc"
+python3 -c "import sys; sys.stdout.buffer.write(bytes([1, 56, 40, 6, 45] + [(230 if (c // 8) % 2 else 30) for c in range(64)]))" > "$CORPUS/fuzz_stereo/seed-bars"
 
 echo "| target | seconds | executions | corpus files | crashes | leaks | timeouts | out of memory |"
 echo "|---|---|---|---|---|---|---|---|"

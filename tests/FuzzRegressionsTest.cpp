@@ -25,6 +25,7 @@ const std::map<std::string, std::function<void(const uint8_t*, size_t)>> kBodies
 	{"config", featloc::fuzz::configText},
 	{"world_file", featloc::fuzz::worldFile},
 	{"trajectory_file", featloc::fuzz::trajectoryFile},
+	{"stereo", featloc::fuzz::stereo},
 };
 }  // namespace
 
