@@ -102,3 +102,15 @@ TEST(SimConfiguration, EveryKeyIsInTheSimulatorDoc)
 		std::string(FEATLOC_SOURCE_DIR) + "/doc/simulator.md",
 		[](mrpt::config::CConfigFileBase& c) { SimConfiguration().saveSettings(c); });
 }
+
+TEST(SimConfiguration, AbsurdBeamCountsAndRatesAreRejectedBeforeAnythingIsMade)
+{
+	for (const char* line : {"beams = 1000000000", "beams = 1", "rate = 1e9"})
+	{
+		TrackedConfig c;
+		c.loadText(std::string("[Laser]\n") + line + "\n" + kWall, "s.ini");
+		const std::string msg = errorMessageOf<ConfigError>([&] { SimConfiguration::load(c); });
+		EXPECT_NE(msg.find(std::string(line).substr(0, 4)), std::string::npos) << msg;
+		EXPECT_NE(msg.find("s.ini"), std::string::npos) << msg;
+	}
+}

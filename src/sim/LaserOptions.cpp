@@ -66,8 +66,10 @@ void LaserOptions::loadFromConfigFile(
 	sensor_pose = {pose[0], pose[1], mrpt::DEG2RAD(pose[2])};
 
 	require(!label.empty(), c, s, "label", "a non-empty sensor label");
-	require(rate > 0, c, s, "rate", "> 0");
-	require(beams >= 2, c, s, "beams", ">= 2");
+	// Real 2-D lidars give at most a few thousand beams, some 100 scans a
+	// second: far beyond is a typo that would fill memory and disk.
+	require(rate > 0 && rate <= 1000, c, s, "rate", "in (0, 1000] Hz");
+	require(beams >= 2 && beams <= 100000, c, s, "beams", "in [2, 100000]");
 	require(aperture > 0 && aperture <= 2 * M_PI, c, s, "aperture_DEG", "in (0, 360]");
 	require(max_range > 0, c, s, "max_range", "> 0");
 	require(min_range >= 0 && min_range < max_range, c, s, "min_range",
