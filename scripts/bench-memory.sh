@@ -42,7 +42,7 @@ row() { # laps, label, args...
   local log="$OUT/office$n.rawlog"
   read -r secs mb < <(measure "$ROOT/config.ini" "$log" -q --out "$OUT/res-$n-${label// /_}" "$@")
   local scans; scans=$(grep -vc '^#' "$OUT/office$n.gt.txt")
-  echo "| office, $n laps | $(du -m "$log" | cut -f1) MB | $scans | $label | $secs | $mb |"
+  echo "| office, $n laps | $(du -mL "$log" | cut -f1) MB | $scans | $label | $secs | $mb |"
 }
 for n in 1 5 25; do
   row $n "streaming core" --set Pipeline:estimator=odometry --set Evaluation:ground_truth= \

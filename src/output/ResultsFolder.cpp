@@ -1,15 +1,13 @@
 #include "featloc/output/ResultsFolder.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <stdio.h>
 #include <unistd.h>
-
-#include <signal.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdlib>
-
 #include <filesystem>
 #include <stdexcept>
 
@@ -128,12 +126,15 @@ void ResultsFolder::publish()
 		// One atomic exchange: at every instant DIR holds either the old
 		// results or the new ones, even if the process is killed here.
 		// The staging name then holds the old results, removed after.
-		if (::renameat2(AT_FDCWD, m_staging.c_str(), AT_FDCWD, m_dir.c_str(), RENAME_EXCHANGE) != 0)
+		if (::renameat2(AT_FDCWD, m_staging.c_str(), AT_FDCWD, m_dir.c_str(), RENAME_EXCHANGE) == 0)
+			fs::remove_all(m_staging, ec);
+		else if (errno == EINVAL || errno == ENOSYS)
+			replaceInTwoSteps();  // a file system without the exchange
+		else
 			throw std::runtime_error(
 				"cannot replace the results folder '" + m_dir + "' (" +
 				std::error_code(errno, std::generic_category()).message() +
 				"); this run's results are in '" + m_staging + "'");
-		fs::remove_all(m_staging, ec);
 	}
 	else
 	{
@@ -144,5 +145,29 @@ void ResultsFolder::publish()
 				"); they are in '" + m_staging + "'");
 	}
 	m_published = true;
+}
+
+void ResultsFolder::replaceInTwoSteps()
+{
+	// Rename first, delete after: the old results are never half gone (a
+	// kill between the two renames leaves them in DIR.featloc-old-PID).
+	const fs::path d(m_dir);
+	const fs::path old =
+		d.parent_path() / (d.filename().string() + ".featloc-old-" + std::to_string(::getpid()));
+	std::error_code ec;
+	fs::remove_all(old, ec);
+	fs::rename(d, old, ec);
+	if (ec)
+		throw std::runtime_error("cannot replace the results folder '" + m_dir + "' (" +
+			ec.message() + "); this run's results are in '" + m_staging + "'");
+	fs::rename(m_staging, d, ec);
+	if (ec)
+	{
+		std::error_code back;
+		fs::rename(old, d, back);
+		throw std::runtime_error("cannot move the results into '" + m_dir + "' (" + ec.message() +
+			"); this run's results are in '" + m_staging + "'");
+	}
+	fs::remove_all(old, ec);
 }
 }  // namespace featloc

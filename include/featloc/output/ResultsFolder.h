@@ -50,6 +50,10 @@ class ResultsFolder
 	const std::vector<std::string>& abandoned() const { return m_abandoned; }
 
    private:
+	/** publish() where the file system cannot exchange two folders
+	 * atomically: DIR aside, the staging folder in, the old one deleted. */
+	void replaceInTwoSteps();
+
 	std::string m_dir, m_staging;
 	std::vector<std::string> m_abandoned;
 	bool m_published = false;
