@@ -22,6 +22,7 @@
 #include "featloc/eval/ScanPairBenchmark.h"
 #include "featloc/eval/TrajectoryEvaluator.h"
 #include "featloc/eval/TrajectoryFile.h"
+#include "featloc/eval/LoopClosureRelations.h"
 #include "featloc/io/CarmenLogReader.h"
 #include "featloc/io/CarmenLogSource.h"
 #include "featloc/io/RawlogReader.h"
@@ -120,6 +121,29 @@ std::vector<std::pair<double, double>> parseBasinLevels(const std::string& text)
 	}
 	if (out.empty()) throw UsageError("--basin-levels names no level");
 	return out;
+}
+
+/** --loop-relations: the direct matches across the loops of a trajectory,
+ * written as relations (LoopClosureRelations). */
+int writeLoopRelations(const Sequence& seq, const std::string& data, const std::string& trajectoryPath,
+	const std::string& matcherClass, const std::string& out, const TrackedConfig& cfg)
+{
+	ScanMatcher::Ptr matcher = ScanMatcherFactory::create(matcherClass);
+	matcher->loadParams(cfg, ScanMatcherFactory::paramsSection(matcherClass));
+	const Trajectory trajectory = TrajectoryFile::read(trajectoryPath);
+	const auto r = LoopClosureRelations::find(
+		seq.scans, seq.times, trajectory, *matcher, LoopClosureRelations::Options());
+	if (r.relations.empty())
+		throw InputError("'" + trajectoryPath + "' comes back to no place of '" + data +
+			"' where " + matcherClass + " matches the two scans (" + std::to_string(r.revisits) +
+			" revisits, " + std::to_string(r.failed) + " failed)");
+	LoopClosureRelations::write(out, r.relations,
+		"loop closures of " + data + ": " + matcherClass + " across the revisits of " + trajectoryPath);
+	std::printf("%zu revisits in %s: %zu relations written to %s, %zu matches failed or flagged\n",
+		r.revisits, trajectoryPath.c_str(), r.relations.size(), out.c_str(), r.failed);
+	for (const auto& [kind, n] : r.failuresByKind)
+		std::printf("  %zu %s, e.g. %s\n", n, kind.c_str(), r.exampleByKind.at(kind).c_str());
+	return 0;
 }
 
 void printHeader()
@@ -226,6 +250,15 @@ int BenchApp::main(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argBasinLevels("", "basin-levels",
 		"Initial error bounds of the basin curve, XY_M/YAW_DEG,...", false,
 		"0.1/2,0.2/5,0.3/10,0.4/15,0.5/20", "LEVELS", cmd);
+	TCLAP::ValueArg<std::string> argLoops("", "loop-relations",
+		"Instead of benchmarking: where TRAJECTORY (of this log) comes back to a place "
+		"(poses within 1 m and 30 deg, 50 or more scans apart), match the two scans "
+		"directly with --reference-matcher from the trajectory's motion and write the "
+		"converged matches to --write-relations: a reference for featloc-eval where the "
+		"log has no ground truth",
+		false, "", "TRAJECTORY", cmd);
+	TCLAP::ValueArg<std::string> argRelationsOut("", "write-relations",
+		"With --loop-relations: the relations file to write", false, "", "FILE", cmd);
 	ConfigCommandLine config(cmd, "ScanMatcher.PcmFeatureMatcher:refinement=none", "");
 	int exitCode = 0;
 	if (!parseCommandLine(cmd, argc, argv, exitCode)) return exitCode;
@@ -243,7 +276,12 @@ int BenchApp::main(int argc, char** argv)
 	cfg.requireAllKeysRead();
 
 	const std::string data = argData.getValue();
+	if (argLoops.isSet() != argRelationsOut.isSet() || (argLoops.isSet() && !argReference.isSet()))
+		throw UsageError("--loop-relations needs --write-relations FILE and --reference-matcher CLASS");
 	const Sequence seq = CarmenLogSource::handles(data) ? loadCarmen(data) : loadRawlog(data, rc, argGt.getValue());
+	if (argLoops.isSet())
+		return writeLoopRelations(seq, data, argLoops.getValue(), argReference.getValue(),
+			argRelationsOut.getValue(), cfg);
 	ScanMatcher::Ptr reference;
 	if (seq.reference.empty())
 	{

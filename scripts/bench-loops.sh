@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Issue 17: the EKF against the matcher alone on MRPT's Malaga 2006 log,
+# which has no ground truth, measured at its loop. featloc-bench
+# --loop-relations finds where a trajectory comes back to a place it passed
+# (poses within 1 m and 30 deg, 50 or more scans apart) and matches the two
+# scans directly (IcpMatcher with the wide-basin coarse search, from that
+# trajectory's motion); featloc-eval measures each estimate against these
+# relations (Kuemmerle et al. 2009). The relations are built twice, from
+# the matcher's and from the EKF's trajectory, to show they do not depend
+# on the trajectory that proposed them.
+# Usage: scripts/bench-loops.sh [OUTDIR]      (about 1 minute)
+set -euo pipefail
+source "$(dirname "$0")/bench-common.sh"
+bench_init loops "$@"
+MALAGA="/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog"
+machine_line
+
+run() { # name, featloc-run --set arguments...
+  local name="$1"; shift
+  "$BIN/featloc-run" "$ROOT/config.ini" "$MALAGA" -q --out "$OUT/$name" \
+    --set Evaluation:ground_truth= "$@" >/dev/null
+}
+run odometry --set Pipeline:estimator=odometry
+run matcher --set Pipeline:estimator=matcher
+run ekf --set Pipeline:estimator=ekf
+run ekf-covariance-check --set Pipeline:estimator=ekf --set Odometry:covariance_check=true
+
+for from in matcher ekf; do
+  "$BIN/featloc-bench" "$ROOT/config.ini" "$MALAGA" -q --reference-matcher featloc::IcpMatcher \
+    --set ScanMatcher.IcpMatcher:coarse_search=true --loop-relations "$OUT/$from/poses_cov.txt" \
+    --write-relations "$OUT/loops-from-$from.txt"
+done
+echo
+echo "| relations from | estimate | relations | translation error mean / median / max [m] | rotation error mean / median / max [deg] |"
+echo "|---|---|---|---|---|"
+for from in matcher ekf; do
+  for est in odometry matcher ekf ekf-covariance-check; do
+    "$BIN/featloc-eval" "$OUT/loops-from-$from.txt" "$OUT/$est/poses_cov.txt" \
+      --reference-format relations -j > "$OUT/eval-$from-$est.json"
+    python3 - "$OUT/eval-$from-$est.json" "$from" "$est" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+t, r = j["relation_translation_m"], j["relation_rotation"]  # m, deg
+print("| %s's | %s | %d | %.3f / %.3f / %.3f | %.2f / %.2f / %.2f |" % (
+    sys.argv[2], sys.argv[3], j["relations_matched"],
+    t["mean"], t["median"], t["max"], r["mean"], r["median"], r["max"]))
+PY
+  done
+done
