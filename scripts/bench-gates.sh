@@ -26,8 +26,8 @@ run() {
 
 echo
 echo "## Guess gates and the EKF gate (ATE mm, failures, fallbacks); -1 = no ground truth"
-echo "| log | matcher | matcher alone | matcher, guess gate off | matcher, sampling offset off | EKF | EKF, gate off | EKF, sampling offset off | EKF + covariance_check |"
-echo "|---|---|---|---|---|---|---|---|---|"
+echo "| log | matcher | matcher alone | matcher, guess gate off | matcher, sampling offset off | EKF | EKF, gate off | EKF, sampling offset off | EKF + covariance_check | EKF + odometry direction (2 deg) |"
+echo "|---|---|---|---|---|---|---|---|---|---|"
 for log in bundled malaga office lab corridor-people; do
   case $log in
     bundled) in=""; gt="";;
@@ -45,18 +45,19 @@ for log in bundled malaga office lab corridor-people; do
     e0=$(run "$log-$m-e0" "$in" "$gt" "${c[@]}" --set Pipeline:estimator=ekf --set Ekf:matcher_gate_chi2=1e12)
     eo=$(run "$log-$m-eo" "$in" "$gt" "${c[@]}" --set Pipeline:estimator=ekf --set Odometry:action_sampling_offset=false)
     ec=$(run "$log-$m-ec" "$in" "$gt" "${c[@]}" --set Pipeline:estimator=ekf --set Odometry:covariance_check=true)
-    echo "| $log | $m | $a | $b | $ao | $e | $e0 | $eo | $ec |"
+    ed=$(run "$log-$m-ed" "$in" "$gt" "${c[@]}" --set Pipeline:estimator=ekf --set Ekf:odometry_direction_sigma_DEG=2)
+    echo "| $log | $m | $a | $b | $ao | $e | $e0 | $eo | $ec | $ed |"
   done
 done
 
 if [ -d "$LASER2D" ]; then
   echo
   echo "## Radish CARMEN logs through featloc-run (IcpMatcher; ATE mm against the corrected poses, failures, fallbacks)"
-  echo "| log | matcher alone | EKF | EKF + covariance_check |"
-  echo "|---|---|---|---|"
+  echo "| log | matcher alone | EKF | EKF + covariance_check | EKF + odometry direction (2 deg) |"
+  echo "|---|---|---|---|---|"
   for f in "$LASER2D"/*.log.gz; do
     n=$(basename "$f" .log.gz)
-    echo "| $n | $(run "$n-m" "$f" "") | $(run "$n-e" "$f" "" --set Pipeline:estimator=ekf) | $(run "$n-ec" "$f" "" --set Pipeline:estimator=ekf --set Odometry:covariance_check=true) |"
+    echo "| $n | $(run "$n-m" "$f" "") | $(run "$n-e" "$f" "" --set Pipeline:estimator=ekf) | $(run "$n-ec" "$f" "" --set Pipeline:estimator=ekf --set Odometry:covariance_check=true) | $(run "$n-ed" "$f" "" --set Pipeline:estimator=ekf --set Ekf:odometry_direction_sigma_DEG=2) |"
   done
 fi
 echo

@@ -38,11 +38,82 @@ LandmarkObservation observation(double x, double y, double sigma, int64_t id = -
 	o.id = id;
 	return o;
 }
+/** The filter of the hand-computed tests: no odometry direction offset in
+ * play (tested on its own below). */
+EkfOptions withoutDirectionOffset()
+{
+	EkfOptions o;
+	o.odometry_direction_sigma = 0;
+	return o;
+}
 }  // namespace
+
+TEST(EkfLocalizer, AReadingsSamplingErrorIsTakenBackAtTheNextStep)
+{
+	// The odometry reading at the first scan may be off by e ~ N(0, s^2)
+	// along the step (read early or late); the next reading is exact. The
+	// robot after two steps is as certain as the odometry says (zero here):
+	// e was taken back, not added up as a random walk would.
+	EkfLocalizer f(withoutDirectionOffset());
+	f.reset(gaussian(CPose2D(0, 0, 0), 0, 0, 0));
+	mrpt::math::CMatrixDouble33 sampling;
+	sampling(0, 0) = 0.01;
+	f.predict(gaussian(CPose2D(1, 0, 0), 0, 0, 0), sampling);
+	EXPECT_NEAR(f.robotPose().cov(0, 0), 0.01, 1e-12);
+	f.predict(gaussian(CPose2D(1, 0, 0), 0, 0, 0));
+	EXPECT_NEAR(f.robotPose().mean.x(), 2, 1e-12);
+	EXPECT_NEAR(f.robotPose().cov(0, 0), 0, 1e-12);
+	// A match that shows the first reading was 0.1 m long moves the robot
+	// back, and the correction carries to the next step (e's mean).
+	EkfLocalizer g(withoutDirectionOffset());
+	g.reset(gaussian(CPose2D(0, 0, 0), 0, 0, 0));
+	g.predict(gaussian(CPose2D(1, 0, 0), 1e-6, 1e-6, 1e-8), sampling);
+	ASSERT_TRUE(g.updateRelativeMotion(gaussian(CPose2D(0.9, 0, 0), 1e-6, 1e-6, 1e-8)).used);
+	EXPECT_NEAR(g.robotPose().mean.x(), 0.9, 1e-3);
+	g.predict(gaussian(CPose2D(1, 0, 0), 1e-6, 1e-6, 1e-8));
+	EXPECT_NEAR(g.robotPose().mean.x(), 2, 1e-3);  // 0.9 + 1 + the 0.1 taken back
+}
+
+TEST(EkfLocalizer, TheOdometryDirectionOffsetIsLearntFromTheMatches)
+{
+	// The odometry's steps point 3 deg to the right of the robot's true
+	// motion (a scanner mounted 3 deg off): driving straight, each 0.5 m
+	// step's translation disagrees with the (exact) match by 2.6 cm to the
+	// side. The heading stays 0 throughout.
+	const double beta = mrpt::DEG2RAD(3.0);
+	const auto odometry = gaussian(CPose2D(0.5, 0, 0), 1e-4, 1e-4, mrpt::square(mrpt::DEG2RAD(0.5)));
+	const CPose2D truth(0.5 * std::cos(beta), 0.5 * std::sin(beta), 0);
+	// One match per keyframe interval of 4 steps: the sideways disagreement
+	// of a step can be blamed on the heading at the steps before it.
+	const auto match = gaussian(truth + truth + truth + truth, 4e-4, 4e-4, mrpt::square(mrpt::DEG2RAD(0.05)));
+	auto drive = [&](EkfLocalizer& f) {
+		f.reset(gaussian(CPose2D(0, 0, 0), 0, 0, 0));
+		for (int i = 0; i < 80; ++i)
+		{
+			f.predict(odometry);
+			if (i % 4 != 3) continue;
+			EXPECT_TRUE(f.updateRelativeMotion(match).used) << "step " << i;
+			f.cloneKeyframe();
+		}
+		return f.robotPose();
+	};
+	EkfOptions o;
+	o.odometry_direction_sigma = mrpt::DEG2RAD(2.0);
+	EkfLocalizer with(o), without(withoutDirectionOffset());
+	const auto p = drive(with);
+	const auto q = drive(without);
+	EXPECT_NEAR(mrpt::RAD2DEG(with.state()[EkfLocalizer::kOdometryDirection]), 3.0, 0.2);
+	EXPECT_LT(std::abs(mrpt::RAD2DEG(p.mean.phi())), 0.05);
+	// Without b, the filter turns the robot a little at every match to
+	// explain the steps' sideways disagreement.
+	EXPECT_GT(std::abs(mrpt::RAD2DEG(q.mean.phi())), 0.05);
+	EXPECT_LT(std::abs(p.mean.phi()), std::abs(q.mean.phi()) / 10);
+	EXPECT_LT(std::abs(p.mean.y() - 40 * std::sin(beta)), 0.05);
+}
 
 TEST(EkfLocalizer, PredictionComposesOnSE2WithHandComputedCovariance)
 {
-	EkfLocalizer f;
+	EkfLocalizer f(withoutDirectionOffset());
 	// At (1, 2) heading +90 deg, P = diag(a, b, c); move 1 m forward.
 	const double a = 0.01, b = 0.02, c = 0.003;
 	f.reset(gaussian(CPose2D(1, 2, M_PI / 2), a, b, c));
@@ -67,7 +138,7 @@ TEST(EkfLocalizer, PredictionComposesOnSE2WithHandComputedCovariance)
 
 TEST(EkfLocalizer, MatchUpdateIsTheScalarKalmanUpdateWhenTheCloneIsCertain)
 {
-	EkfLocalizer f;
+	EkfLocalizer f(withoutDirectionOffset());
 	f.reset(gaussian(CPose2D(0, 0, 0), 0, 0, 0));
 	f.predict(gaussian(CPose2D(1, 0, 0), 0.04, 0.04, 0.0004));
 	// The matcher says 1.1 m with variance 0.01: gain 0.04 / 0.05 = 0.8.

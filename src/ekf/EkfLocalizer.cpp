@@ -47,6 +47,7 @@ void EkfLocalizer::reset(const mrpt::poses::CPosePDFGaussian& initial)
 	m_Pbuf = Eigen::MatrixXd::Zero(kLandmarks + 2 * 32, kLandmarks + 2 * 32);
 	m_x.segment<3>(kRobot) << initial.mean.x(), initial.mean.y(), initial.mean.phi();
 	P().block<3, 3>(kRobot, kRobot) = initial.cov.asEigen();
+	P()(kOdometryDirection, kOdometryDirection) = mrpt::square(options.odometry_direction_sigma);
 	m_info.clear();
 	m_held.reset();
 	m_step = 0;
@@ -65,22 +66,57 @@ void EkfLocalizer::reserve(Eigen::Index n)
 	m_Pbuf.swap(grown);
 }
 
-void EkfLocalizer::predict(const mrpt::poses::CPosePDFGaussian& u)
+void EkfLocalizer::predict(
+	const mrpt::poses::CPosePDFGaussian& u, const mrpt::math::CMatrixDouble33& samplingCovariance)
 {
+	// x_r <- x_r (+) v, v = e (+) u_b: u_b is the odometry increment with its
+	// translation turned by the direction offset b; e is the last reading's
+	// error, taken back (zero, with zero covariance, while no reading had
+	// one). Then the new reading's error e' is taken off: x_r (+) (-e') ~
+	// x_r - G e' with G the rotation into the world (MRPT's J_u at e' = 0).
+	// See the class comment.
+	const Eigen::Index n = m_x.size(), E = kSamplingError, D = kOdometryDirection;
+	const double b = m_x[D], cb = std::cos(b), sb = std::sin(b);
+	const double ux = u.mean.x(), uy = u.mean.y();
+	const mrpt::poses::CPose2D ub(cb * ux - sb * uy, sb * ux + cb * uy, u.mean.phi());
+	const Eigen::Vector3d dub(-sb * ux - cb * uy, cb * ux - sb * uy, 0);  // d u_b / d b
 	const mrpt::poses::CPose2D x(m_x[0], m_x[1], m_x[2]);
-	mrpt::math::CMatrixDouble33 Jx, Ju;
-	mrpt::poses::CPosePDF::jacobiansPoseComposition(x, u.mean, Jx, Ju);
-	const mrpt::poses::CPose2D next = x + u.mean;
+	const mrpt::poses::CPose2D e(m_x[E], m_x[E + 1], m_x[E + 2]);
+	mrpt::math::CMatrixDouble33 Je, Jue, Jx, Ju;
+	mrpt::poses::CPosePDF::jacobiansPoseComposition(e, ub, Je, Jue);
+	const mrpt::poses::CPose2D v = e + ub;
+	mrpt::poses::CPosePDF::jacobiansPoseComposition(x, v, Jx, Ju);
+	const mrpt::poses::CPose2D next = x + v;
 	m_x.segment<3>(kRobot) << next.x(), next.y(), next.phi();
-	const Eigen::Matrix3d A = Jx.asEigen(), B = Ju.asEigen();
-	const Eigen::Index n = m_x.size();
-	// The robot's rows and columns: P_rr and its correlations with the rest.
-	const Eigen::Matrix3d Prr = A * P().block<3, 3>(0, 0) * A.transpose() +
-		B * u.cov.asEigen() * B.transpose();
-	const Eigen::MatrixXd Prest = A * P().block(0, 3, 3, n - 3);
-	P().block<3, 3>(0, 0) = 0.5 * (Prr + Prr.transpose());
-	P().block(0, 3, 3, n - 3) = Prest;
-	P().block(3, 0, n - 3, 3) = Prest.transpose();
+	const Eigen::Matrix3d B = Ju.asEigen(), Bu = B * Jue.asEigen();
+	// The new robot pose's Jacobian in what it is computed from: the old
+	// pose, e and b.
+	Eigen::Matrix<double, 3, 7> T;
+	T << Jx.asEigen(), B * Je.asEigen(), Bu * dub;
+	Eigen::Matrix3d G = Eigen::Matrix3d::Zero();
+	G.topLeftCorner<2, 2>() = -rotation(next.phi());
+	G(2, 2) = -1;
+	const Eigen::Matrix3d Sigma = samplingCovariance.asEigen();
+	auto Pn = P();
+	const std::vector<Eigen::Index> from = {kRobot, kRobot + 1, kRobot + 2, E, E + 1, E + 2, D};
+	// Everything but the robot and e: the clones, b and the landmarks.
+	std::vector<Eigen::Index> rest;
+	rest.reserve(n);
+	for (Eigen::Index k = 3; k < n; ++k)
+		if (k < E || k > E + 2) rest.push_back(k);
+	const Eigen::Matrix3d Prr = T * Pn(from, from) * T.transpose() +
+		Bu * u.cov.asEigen() * Bu.transpose() + G * Sigma * G.transpose();
+	const Eigen::MatrixXd Prest = T * Pn(from, rest);
+	Pn.block<3, 3>(kRobot, kRobot) = 0.5 * (Prr + Prr.transpose());
+	Pn(Eigen::seqN(kRobot, 3), rest) = Prest;
+	Pn(rest, Eigen::seqN(kRobot, 3)) = Prest.transpose();
+	// e' is new: independent of everything but the robot pose it displaced.
+	Pn.middleRows(E, 3).setZero();
+	Pn.middleCols(E, 3).setZero();
+	Pn.block<3, 3>(E, E) = Sigma;
+	Pn.block<3, 3>(E, kRobot) = Sigma * G.transpose();
+	Pn.block<3, 3>(kRobot, E) = G * Sigma;
+	m_x.segment<3>(E).setZero();
 	m_step++;
 	pruneLandmarks();
 }

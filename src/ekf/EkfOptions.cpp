@@ -10,6 +10,7 @@ void EkfOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, cons
 	read(c, s, "use_scan_matcher", use_scan_matcher);
 	read(c, s, "matcher_gate_chi2", matcher_gate_chi2);
 	read(c, s, "matcher_covariance_scale", matcher_covariance_scale);
+	readDegrees(c, s, "odometry_direction_sigma_DEG", odometry_direction_sigma);
 	read(c, s, "landmark_gate_probability", landmark_gate_probability);
 	read(c, s, "landmark_new_probability", landmark_new_probability);
 	readChoice(c, s, "data_association", data_association, {"jcbb", "nearest"});
@@ -17,6 +18,8 @@ void EkfOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, cons
 	read(c, s, "landmark_probation_steps", landmark_probation_steps);
 	require(matcher_gate_chi2 > 0, c, s, "matcher_gate_chi2", "> 0");
 	require(matcher_covariance_scale > 0, c, s, "matcher_covariance_scale", "> 0");
+	require(odometry_direction_sigma >= 0 && odometry_direction_sigma <= M_PI / 4, c, s,
+		"odometry_direction_sigma_DEG", "in [0, 45]");
 	require(landmark_gate_probability > 0 && landmark_gate_probability < 1, c, s,
 		"landmark_gate_probability", "in (0, 1)");
 	require(landmark_new_probability >= landmark_gate_probability && landmark_new_probability < 1,
@@ -32,6 +35,8 @@ void EkfOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::s
 		"a matcher motion whose Mahalanobis^2 against the prediction exceeds this is not used (21.1: 99.99% for 3 dof)");
 	write(c, s, "matcher_covariance_scale", matcher_covariance_scale,
 		"the matcher's covariance times this before fusion");
+	writeDegrees(c, s, "odometry_direction_sigma_DEG", odometry_direction_sigma,
+		"prior sigma of the angle between the odometry's direction of travel and the scanner's, estimated from the matches (0: not estimated)");
 	write(c, s, "landmark_gate_probability", landmark_gate_probability,
 		"probability of the individual and joint landmark gates (chi-square)");
 	write(c, s, "landmark_new_probability", landmark_new_probability,

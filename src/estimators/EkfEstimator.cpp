@@ -30,7 +30,7 @@ void EkfEstimator::initialize(const mrpt::poses::CPosePDFGaussian& initialPose)
 
 bool EkfEstimator::process(const EstimationStep& step, const MatchResult* match)
 {
-	m_filter.predict(step.odometry);
+	m_filter.predict(step.odometry, step.odometrySamplingCovariance);
 	m_reason.clear();
 	bool used = false;
 	if (match && match->success)
@@ -40,7 +40,9 @@ bool EkfEstimator::process(const EstimationStep& step, const MatchResult* match)
 		// Gated against the state without this keyframe's earlier matches:
 		// they measured (nearly) the same thing, with (nearly) the same
 		// error, so only the latest accepted one is held for fusion.
-		const auto u = m_filter.testRelativeMotion(z, match->gateAllowance);
+		// No gate allowance: the state holds the odometry's sampling error
+		// (EkfLocalizer::predict), which is what the allowance stands for.
+		const auto u = m_filter.testRelativeMotion(z);
 		used = u.used;
 		m_reason = u.reason;
 		if (used) m_filter.holdRelativeMotion(z);

@@ -14,6 +14,14 @@ void addStep(double dx, double dy, double dyaw, mrpt::math::CMatrixDouble33& cov
 }
 }  // namespace
 
+mrpt::math::CMatrixDouble33 OdometrySamplingOffset::ofReading(const mrpt::poses::CPose2D& step)
+{
+	mrpt::math::CMatrixDouble33 cov;
+	cov.setZero();
+	addStep(step.x(), step.y(), step.phi(), cov);
+	return cov;
+}
+
 mrpt::math::CMatrixDouble33 OdometrySamplingOffset::covariance(
 	const mrpt::poses::CPose2D& keyframeStep, const mrpt::poses::CPose2D& currentStep,
 	const mrpt::poses::CPose2D& motion)

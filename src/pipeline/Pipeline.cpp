@@ -225,6 +225,8 @@ void Pipeline::processStep(
 	// check's factor (1 while the log's covariance agrees with the matches).
 	EstimationStep step = logStep;
 	step.odometry.cov *= m_odometryCheck.scale();
+	if (m_odometry.action_sampling_offset && step.odometryFromActions)
+		step.odometrySamplingCovariance = OdometrySamplingOffset::ofReading(step.odometry.mean);
 	MatchResult match;
 	const MatchResult* matchPtr = nullptr;
 	bool usedMatch = false;

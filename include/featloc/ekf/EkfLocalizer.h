@@ -19,7 +19,9 @@ namespace featloc
  * landmarks, with their joint covariance: one state, one covariance.
  *
  * State x = [robot (x, y, yaw); keyframe clone (x, y, yaw); match clone
- * (x, y, yaw); landmark 1 (x, y); ...], all in the world frame. Plain Eigen
+ * (x, y, yaw); odometry sampling error (x, y, yaw); odometry direction
+ * offset b; landmark 1 (x, y); ...], all in the world frame but the
+ * sampling error, which is in the robot frame of the last scan. Plain Eigen
  * rather than MRPT's CKalmanFilterCapable: that template has one
  * observation-noise matrix for all observations of a step (ours each bring
  * their own covariance) and no place for cloned poses, which are neither
@@ -28,6 +30,31 @@ namespace featloc
  * - predict(u): x_r <- x_r (+) u with the odometry increment u (SE(2)
  *   composition, MRPT's Jacobians J_x, J_u): P_rr <- J_x P_rr J_x^T +
  *   J_u Q J_u^T, the robot's cross-covariances <- J_x P_r*. O(n).
+ * - predict(u, Sigma) with Sigma != 0: the odometry was read off the scan's
+ *   instant (OdometrySamplingOffset), by e_i at scan i, e_i ~ N(0, Sigma_i).
+ *   The reading at scan i is the true pose (+) e_i, so the true motion is
+ *   x_i = x_{i-1} (+) e_{i-1} (+) u_i (-) e_i: the error of one reading is
+ *   taken back at the next (a moving-average noise, not a random walk).
+ *   e_{i-1} is kept in the state (state augmentation for correlated process
+ *   noise, Bar-Shalom, Li & Kirubarajan 2001, sec. 8.2), so the filter
+ *   weighs the odometry by the error it really has over an interval (two
+ *   ends, whatever the interval's length) and a match that shows a reading
+ *   was early or late corrects the next step too. With Sigma = 0 throughout
+ *   (odometry taken at the scan's time) e stays 0 and this is predict(u).
+ * - The odometry's translation is turned by b before it is composed: an
+ *   odometry frame turned against the scanner's (a laser mounted a few
+ *   degrees off the sensor pose the log gives, or wheels that pull to one
+ *   side) makes every step's translation disagree with the matches to the
+ *   side. Without b in the state the filter can explain that only by
+ *   turning the robot, a little at every match, and its heading drifts
+ *   (MRPT's Malaga log: the odometry's steps point 2.6 deg off the
+ *   matcher's; doc/benchmarks.md, "Malaga's loop"). b is a constant with
+ *   prior sigma odometry_direction_sigma_DEG, learnt from the matches
+ *   through its correlation with the robot pose: online odometry
+ *   calibration (Roy & Thrun 1999; Martinelli, Tomatis & Siegwart 2007).
+ *   Off by default (sigma 0: b = 0): on the Radish logs, which were not
+ *   used to develop it, it made three of six runs worse (fhw 1.66 ->
+ *   3.03 m ATE), wrong matches teaching it a wrong b.
  * - Scan matches measure the motion from the keyframe scan to the current
  *   one, z = x_c^-1 (+) x_r (stochastic cloning, Roumeliotis & Burdick
  *   2002): the clone is correlated with the robot, so an update corrects
@@ -87,7 +114,12 @@ class EkfLocalizer
 	/** Robot and clones at `initial`, no landmarks, no held match. */
 	void reset(const mrpt::poses::CPosePDFGaussian& initial);
 
-	void predict(const mrpt::poses::CPosePDFGaussian& increment);
+	/** `samplingCovariance`: of the odometry reading's error at this scan
+	 * (robot frame at this scan); zero when the odometry is taken at the
+	 * scan's time. */
+	void predict(
+		const mrpt::poses::CPosePDFGaussian& increment,
+		const mrpt::math::CMatrixDouble33& samplingCovariance = {});
 
 	/** Commits nothing: the caller commits a held match first if it wants
 	 * it (EkfEstimator does, at every new keyframe). */
@@ -157,7 +189,8 @@ class EkfLocalizer
 	/** Index of landmark j's x in the state (point landmarks take 2
 	 * entries, vertical-line landmarks 4). */
 	Eigen::Index landmarkIndex(size_t j) const { return m_info[j].index; }
-	static constexpr Eigen::Index kRobot = 0, kClone = 3, kMatchClone = 6, kLandmarks = 9;
+	static constexpr Eigen::Index kRobot = 0, kClone = 3, kMatchClone = 6, kSamplingError = 9,
+								  kOdometryDirection = 12, kLandmarks = 13;
 
 	/** Predicted observation of landmark j from the current state, and its
 	 * Jacobians in the robot pose (2x3) and the landmark (2x2). */

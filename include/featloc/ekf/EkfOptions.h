@@ -1,6 +1,7 @@
 #pragma once
 #include <mrpt/config/CLoadableOptions.h>
 
+#include <cmath>
 #include <string>
 
 namespace featloc
@@ -21,6 +22,11 @@ struct EkfOptions : public mrpt::config::CLoadableOptions
 	/** The matcher's covariance is scaled by this before fusion (1: as the
 	 * matcher reports it; MRPT's ICP under-reports by about 2). */
 	double matcher_covariance_scale = 1;
+	/** Prior sigma [rad] of the odometry direction offset b
+	 * (EkfLocalizer): the angle between the odometry's direction of travel
+	 * and the scanner frame's, estimated from the matches. 0: not
+	 * estimated (b = 0). Config key odometry_direction_sigma_DEG. */
+	double odometry_direction_sigma = 0;
 	/** Probability of the landmark gates: individual (2 dof) and joint
 	 * (2 dof per pair). */
 	double landmark_gate_probability = 0.99;

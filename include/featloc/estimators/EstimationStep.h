@@ -47,6 +47,12 @@ struct EstimationStep
 	 * lead or lag the scan: OdometrySamplingOffset). False when it was
 	 * interpolated at the scan's own time (format #2, CARMEN logs). */
 	bool odometryFromActions = false;
+	/** Covariance of the error of this step's odometry reading at this
+	 * scan (robot frame at this scan) when it was read off the scan's
+	 * instant: D D^T / 12 for the step's increment D
+	 * (OdometrySamplingOffset; [Odometry] action_sampling_offset). Zero
+	 * otherwise. The EKF keeps the error in its state. */
+	mrpt::math::CMatrixDouble33 odometrySamplingCovariance;
 	/** Point landmarks observed in this frame (robot frame). */
 	std::vector<LandmarkObservation> landmarks;
 	/** A stereo pair of this frame (checked: calibration, images that
