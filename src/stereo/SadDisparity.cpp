@@ -11,10 +11,11 @@ namespace featloc
 {
 cv::Mat SadDisparity::compute(const cv::Mat& left, const cv::Mat& right, int minDisparity, int numDisparities) const
 {
-	// OpenCV's block matcher needs the window inside the image (it throws
-	// otherwise): a smaller image has no area-based disparity at all, so
+	// OpenCV's block matcher needs the window smaller than the image (it throws
+	// otherwise): an image no larger than the window has no area-based
+	// disparity at all (fuzz/regressions/stereo), so
 	// every segment match goes unsupported ("no SAD disparity around it").
-	if (left.cols < options.block_size || left.rows < options.block_size)
+	if (left.cols <= options.block_size || left.rows <= options.block_size)
 		return cv::Mat(left.rows, left.cols, CV_32F, cv::Scalar(-1));
 	// Eq. (2): SAD in both directions, kept where they agree within 1 px.
 	auto bm = cv::StereoBM::create(numDisparities, options.block_size);
