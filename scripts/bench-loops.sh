@@ -24,6 +24,10 @@ run odometry --set Pipeline:estimator=odometry
 run matcher --set Pipeline:estimator=matcher
 run ekf --set Pipeline:estimator=ekf
 run ekf-covariance-check --set Pipeline:estimator=ekf --set Odometry:covariance_check=true
+# The odometry direction offset learnt in the EKF (off by default), at two
+# prior sigmas: the log's odometry steps point 2.6 deg off the matcher's.
+run ekf-direction-2deg --set Pipeline:estimator=ekf --set Ekf:odometry_direction_sigma_DEG=2
+run ekf-direction-5deg --set Pipeline:estimator=ekf --set Ekf:odometry_direction_sigma_DEG=5
 
 for from in matcher ekf; do
   "$BIN/featloc-bench" "$ROOT/config.ini" "$MALAGA" -q --reference-matcher featloc::IcpMatcher \
@@ -34,7 +38,7 @@ echo
 echo "| relations from | estimate | relations | translation error mean / median / max [m] | rotation error mean / median / max [deg] |"
 echo "|---|---|---|---|---|"
 for from in matcher ekf; do
-  for est in odometry matcher ekf ekf-covariance-check; do
+  for est in odometry matcher ekf ekf-covariance-check ekf-direction-2deg ekf-direction-5deg; do
     "$BIN/featloc-eval" "$OUT/loops-from-$from.txt" "$OUT/$est/poses_cov.txt" \
       --reference-format relations -j > "$OUT/eval-$from-$est.json"
     python3 - "$OUT/eval-$from-$est.json" "$from" "$est" <<'PY'
