@@ -267,7 +267,9 @@ TEST(FirstHour, AKilledRunLosesNothingAndLeavesWholeFiles)
 	for (const char* f : {"poses_cov.txt", "trajectory.tum", "matches.txt"})
 		expectEndsWithANewline(staged + "/" + f);
 	const size_t poses = featloc::TrajectoryFile::read(staged + "/poses_cov.txt").poses.size();
-	EXPECT_GT(poses, 300u);
+	// The loop stops at over 300 lines, its one header line included: at
+	// least 300 poses (exactly 300 when the kill beats the next write).
+	EXPECT_GE(poses, 300u);
 	EXPECT_LT(poses, 1733u);
 	EXPECT_EQ(featloc::TrajectoryFile::read(staged + "/trajectory.tum").poses.size(), poses);
 	EXPECT_GE(featloc::MatchTableFile::read(staged + "/matches.txt").size(), poses - 1);
