@@ -519,35 +519,3 @@ TEST(EkfLocalizer, IncrementalJointDistanceEqualsTheStackedOne)
 	EXPECT_NEAR(joint.push(4, 2), (pairs.emplace_back(4, 2), dense(pairs)), 1e-8);
 }
 
-// OdometrySamplingOffset's allowance widens the gate and nothing else: the
-// Mahalanobis^2 is against S + allowance, and a match let through by it is
-// fused with its own covariance, exactly as a match let through by a wider
-// chi^2 threshold.
-TEST(EkfLocalizer, GateAllowanceWidensTheGateNotTheUpdate)
-{
-	const auto z = gaussian(CPose2D(1.3, 0.0, 0.0), 1e-4, 1e-4, 1e-5);
-	mrpt::math::CMatrixDouble33 allowance;
-	allowance(0, 0) = 0.3 * 0.3 / 12 * 2;  // 0.3 m steps at both ends
-	EkfLocalizer a, b;
-	for (EkfLocalizer* f : {&a, &b})
-	{
-		f->reset(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
-		f->cloneKeyframe();
-		f->predict(gaussian(CPose2D(1, 0, 0), 1e-3, 1e-3, 1e-4));
-	}
-	const auto without = a.testRelativeMotion(z);
-	const auto with = a.testRelativeMotion(z, allowance);
-	EXPECT_FALSE(without.used);
-	ASSERT_TRUE(with.used);
-	// nu = 0.3 along x; S_xx = 1e-3 + 1e-4 (+ 0.015 with the allowance).
-	EXPECT_NEAR(without.mahalanobis2, 0.09 / (1e-3 + 1e-4), 1e-6 * without.mahalanobis2);
-	EXPECT_NEAR(with.mahalanobis2, 0.09 / (1e-3 + 1e-4 + 0.015), 1e-6 * with.mahalanobis2);
-	b.options.matcher_gate_chi2 = 1e9;
-	ASSERT_TRUE(b.testRelativeMotion(z).used);
-	a.holdRelativeMotion(z);
-	b.holdRelativeMotion(z);
-	a.commitHeldMotion();
-	b.commitHeldMotion();
-	EXPECT_LT((a.robotPose().mean.asVectorVal() - b.robotPose().mean.asVectorVal()).norm(), 1e-12);
-	EXPECT_LT((a.robotPose().cov.asEigen() - b.robotPose().cov.asEigen()).cwiseAbs().maxCoeff(), 1e-15);
-}

@@ -99,17 +99,14 @@ void EkfLocalizer::predict(
 	const Eigen::Matrix3d Sigma = samplingCovariance.asEigen();
 	auto Pn = P();
 	const std::vector<Eigen::Index> from = {kRobot, kRobot + 1, kRobot + 2, E, E + 1, E + 2, D};
-	// Everything but the robot and e: the clones, b and the landmarks.
-	std::vector<Eigen::Index> rest;
-	rest.reserve(n);
-	for (Eigen::Index k = 3; k < n; ++k)
-		if (k < E || k > E + 2) rest.push_back(k);
 	const Eigen::Matrix3d Prr = T * Pn(from, from) * T.transpose() +
 		Bu * u.cov.asEigen() * Bu.transpose() + G * Sigma * G.transpose();
-	const Eigen::MatrixXd Prest = T * Pn(from, rest);
+	// The robot's correlations with the rest (e's columns are replaced
+	// below).
+	const Eigen::MatrixXd Prest = T * Pn(from, Eigen::seq(3, n - 1));
 	Pn.block<3, 3>(kRobot, kRobot) = 0.5 * (Prr + Prr.transpose());
-	Pn(Eigen::seqN(kRobot, 3), rest) = Prest;
-	Pn(rest, Eigen::seqN(kRobot, 3)) = Prest.transpose();
+	Pn.block(kRobot, 3, 3, n - 3) = Prest;
+	Pn.block(3, kRobot, n - 3, 3) = Prest.transpose();
 	// e' is new: independent of everything but the robot pose it displaced.
 	Pn.middleRows(E, 3).setZero();
 	Pn.middleCols(E, 3).setZero();
@@ -196,15 +193,14 @@ void EkfLocalizer::relativeMotionTerms(
 	nu << z.mean.x() - h.x(), z.mean.y() - h.y(), mrpt::math::wrapToPi(z.mean.phi() - h.z());
 }
 
-EkfLocalizer::MotionUpdate EkfLocalizer::testRelativeMotion(
-	const mrpt::poses::CPosePDFGaussian& z, const mrpt::math::CMatrixDouble33& gateAllowance) const
+EkfLocalizer::MotionUpdate EkfLocalizer::testRelativeMotion(const mrpt::poses::CPosePDFGaussian& z) const
 {
 	std::vector<Eigen::Index> cols;
 	Eigen::MatrixXd H;
 	Eigen::VectorXd nu;
 	relativeMotionTerms(kRobot, z, cols, H, nu);
 	const Eigen::MatrixXd S =
-		H * P()(cols, cols) * H.transpose() + z.cov.asEigen() + gateAllowance.asEigen();
+		H * P()(cols, cols) * H.transpose() + z.cov.asEigen();
 	return gate(nu, S, options.matcher_gate_chi2, "the match", "matcher_gate_chi2");
 }
 

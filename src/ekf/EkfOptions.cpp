@@ -1,5 +1,7 @@
 #include "featloc/ekf/EkfOptions.h"
 
+#include <cmath>
+
 #include "featloc/config/ConfigValues.h"
 
 namespace featloc

@@ -40,7 +40,7 @@ void OdometryOptions::saveToConfigFile(
 	writeDegrees(c, s, "no_odometry_sigma_yaw_DEG", no_odometry_sigma_yaw,
 		"[deg] prior yaw sigma of a step without odometry");
 	write(c, s, "action_sampling_offset", action_sampling_offset,
-		"the gates allow for format #1 odometry read off the scan's instant");
+		"the matchers' guess gates and the EKF (in its state) allow for format #1 odometry read off the scan's instant");
 	write(c, s, "covariance_check", covariance_check,
 		"inflate the odometry covariance when the matches show it is too small");
 	write(c, s, "covariance_check_window", covariance_check_window,

@@ -133,11 +133,9 @@ class EkfLocalizer
 	};
 	/** The gate alone: is `motion` (keyframe -> robot, with its covariance
 	 * already scaled as the caller wants) plausible against the state
-	 * without any held match? O(1). `gateAllowance` widens the gate only
-	 * (OdometrySamplingOffset), not the update. */
-	MotionUpdate testRelativeMotion(
-		const mrpt::poses::CPosePDFGaussian& motion,
-		const mrpt::math::CMatrixDouble33& gateAllowance = {}) const;
+	 * without any held match? O(1). (The odometry's sampling error is in
+	 * the state: no allowance is added for it.) */
+	MotionUpdate testRelativeMotion(const mrpt::poses::CPosePDFGaussian& motion) const;
 	/** Gate and fuse at once. */
 	MotionUpdate updateRelativeMotion(const mrpt::poses::CPosePDFGaussian& motion);
 	/** Gate and fuse an absolute robot pose in the world (map) frame, with

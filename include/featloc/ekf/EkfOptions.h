@@ -1,7 +1,6 @@
 #pragma once
 #include <mrpt/config/CLoadableOptions.h>
 
-#include <cmath>
 #include <string>
 
 namespace featloc

@@ -34,10 +34,10 @@ struct OdometryOptions : public mrpt::config::CLoadableOptions
 	double no_odometry_sigma_yaw = mrpt::DEG2RAD(30.0);	//!< [rad]
 
 	/** Format #1 odometry may have been read anywhere within the interval
-	 * between two scans: the EKF's gate and the matchers' guess gates allow
-	 * for the resulting offset at both ends of a match
-	 * (OdometrySamplingOffset). It widens the gates only, never the
-	 * odometry's weight in the estimate. */
+	 * between two scans: the matchers' guess gates allow for the resulting
+	 * offset at both ends of a match (OdometrySamplingOffset), and the EKF
+	 * keeps each reading's offset in its state (EkfLocalizer::predict), so
+	 * its gate and its weights both allow for it. */
 	bool action_sampling_offset = true;
 
 	/** Check the odometry covariance against the scan matches as the run
