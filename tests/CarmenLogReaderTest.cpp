@@ -58,6 +58,8 @@ TEST(CarmenLogReader, MalformedLinesNameFileAndLine)
 	std::ofstream(dir.file("short.log")) << "FLASER 181 1 2 3\n";
 	std::ofstream(dir.file("bad.log")) << flaser(5, 1.0, 0, 0, 0, 1).replace(9, 1, "x");
 	std::ofstream(dir.file("none.log")) << "ODOM 0 0 0 0 0 0 0 h 0\n";
+	std::ofstream(dir.file("odom.log")) << "ODOM 0 0 0 0 0 0 0 h 0\nODOM 1 nan 0 0 0 0 0 h 0\n";
+	std::ofstream(dir.file("odom2.log")) << "ODOM 1 2\n";
 	EXPECT_NE(errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file("short.log"), {}); })
 				  .find("short.log:1: FLASER with 181 ranges needs 192 fields"),
 		std::string::npos);
@@ -66,6 +68,12 @@ TEST(CarmenLogReader, MalformedLinesNameFileAndLine)
 		std::string::npos);
 	EXPECT_NE(errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file("none.log"), {}); })
 				  .find("no FLASER"),
+		std::string::npos);
+	EXPECT_NE(errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file("odom.log"), {}); })
+				  .find("odom.log:2: 'nan' is not a number"),
+		std::string::npos);
+	EXPECT_NE(errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file("odom2.log"), {}); })
+				  .find("odom2.log:1: ODOM needs x y theta"),
 		std::string::npos);
 	EXPECT_NE(errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file("nope.log"), {}); })
 				  .find("does not exist"),

@@ -1,6 +1,7 @@
 #include "featloc/io/CarmenLogReader.h"
 
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/system/filesystem.h>
 
@@ -41,6 +42,14 @@ std::vector<CarmenScan> CarmenLogReader::read(const std::string& path, const Opt
 	std::istringstream lines(readAll(path));
 	std::vector<CarmenScan> out;
 	double laserOffset = 0;
+	// The ODOM chain (class comment): `chain` accumulates the increments
+	// between consecutive ODOM messages, anchors excepted.
+	std::optional<mrpt::poses::CPose2D> lastOdom;
+	mrpt::poses::CPose2D chain;
+	size_t odomSinceScan = 0;
+	// The pose of the scan just read, until the next ODOM message.
+	bool anchorPossible = false;
+	mrpt::math::TPose2D anchorAt;
 	std::string line;
 	for (size_t lineNo = 1; std::getline(lines, line); lineNo++)
 	{
@@ -51,6 +60,27 @@ std::vector<CarmenScan> CarmenLogReader::read(const std::string& path, const Opt
 		const std::string where = path + ":" + std::to_string(lineNo);
 		if (tok[0] == "PARAM" && tok.size() >= 3 && tok[1] == "robot_frontlaser_offset")
 			laserOffset = number(tok[2], where);
+		if (tok[0] == "ODOM")
+		{
+			if (tok.size() < 4) throw InputError(where + ": ODOM needs x y theta");
+			const mrpt::math::TPose2D read{
+				number(tok[1], where), number(tok[2], where), number(tok[3], where)};
+			const bool anchor = anchorPossible && anchorAt.x == read.x && anchorAt.y == read.y &&
+				anchorAt.phi == read.phi;
+			const mrpt::poses::CPose2D odom(read);
+			if (!anchor && lastOdom)
+			{
+				chain = chain + (odom - *lastOdom);
+				odomSinceScan++;
+			}
+			else if (!anchor && out.empty())
+				chain = odom;  // the stream starts before the first scan
+			// else: an anchor, or a stream that starts after the first scan
+			// (this message is its base: no motion known before it).
+			lastOdom = odom;
+			anchorPossible = false;
+			continue;
+		}
 		if (tok[0] != "FLASER") continue;
 		if (tok.size() < 2) throw InputError(where + ": FLASER without a range count");
 		const double nd = number(tok[1], where);
@@ -82,6 +112,10 @@ std::vector<CarmenScan> CarmenLogReader::read(const std::string& path, const Opt
 		s.odometry = {number(tok[p + 3], where), number(tok[p + 4], where),
 			number(tok[p + 5], where)};
 		s.time = number(tok[p + 8], where);
+		if (odomSinceScan > 0 || out.empty()) s.odomMessages = chain.asTPose();
+		odomSinceScan = 0;
+		anchorAt = s.pose;
+		anchorPossible = true;
 		scan->timestamp = mrpt::Clock::fromDouble(s.time);
 		s.scan = scan;
 		out.push_back(std::move(s));

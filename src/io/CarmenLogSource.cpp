@@ -19,6 +19,18 @@ CarmenLogSource::CarmenLogSource(const std::string& path)
 			m_scans[i].time = static_cast<double>(i) * kNumberedPeriod;
 			m_scans[i].scan->timestamp = mrpt::Clock::fromDouble(m_scans[i].time);
 		}
+	// A corrected log's odom fields are its reference poses: giving them as
+	// odometry would hand the estimator the answer (every Radish
+	// "-corrected" log; odometry alone would score 0 mm ATE).
+	bool corrected = true;
+	for (const auto& s : m_scans)
+		corrected = corrected && s.odometry.x == s.pose.x && s.odometry.y == s.pose.y &&
+			s.odometry.phi == s.pose.phi;
+	if (corrected)
+	{
+		for (const auto& s : m_scans) m_stepsWithoutOdomMessages += s.odomMessages ? 0 : 1;
+		m_odometry = m_stepsWithoutOdomMessages == 0 ? Odometry::OdomMessages : Odometry::None;
+	}
 }
 
 bool CarmenLogSource::handles(const std::string& path)
@@ -33,6 +45,7 @@ bool CarmenLogSource::handles(const std::string& path)
 bool CarmenLogSource::next(RawlogEntry& entry)
 {
 	if (m_next >= 2 * m_scans.size()) return false;
+	if (m_next % 2 == 0 && m_odometry == Odometry::None) m_next++;  // no odometry to give
 	const CarmenScan& s = m_scans[m_next / 2];
 	entry.index = m_next;
 	if (m_next % 2 == 0)
@@ -40,7 +53,8 @@ bool CarmenLogSource::next(RawlogEntry& entry)
 		auto odo = std::make_shared<mrpt::obs::CObservationOdometry>();
 		odo->sensorLabel = "ODOMETRY";
 		odo->timestamp = s.scan->timestamp;
-		odo->odometry = mrpt::poses::CPose2D(s.odometry);
+		odo->odometry = mrpt::poses::CPose2D(
+			m_odometry == Odometry::OdomMessages ? *s.odomMessages : s.odometry);
 		entry.object = odo;
 	}
 	else
@@ -61,6 +75,22 @@ std::string CarmenLogSource::description() const
 	if (m_numberedTimes)
 		d += "; its times do not increase, so the scans were numbered 1 s apart (the "
 			 "real-time figures of this run mean nothing)";
+	switch (m_odometry)
+	{
+		case Odometry::FlaserFields:
+			d += "; odometry: the FLASER messages' odom fields";
+			break;
+		case Odometry::OdomMessages:
+			d += "; odometry: the ODOM messages (a corrected log: its FLASER odom fields are "
+				 "the corrected poses)";
+			break;
+		case Odometry::None:
+			d += "; no odometry: a corrected log (its FLASER odom fields are the corrected "
+				 "poses) whose ODOM messages miss " +
+				std::to_string(m_stepsWithoutOdomMessages) + " of " +
+				std::to_string(m_scans.size()) + " scans";
+			break;
+	}
 	return d;
 }
 }  // namespace featloc

@@ -2,6 +2,7 @@
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,12 @@ struct CarmenScan
 	mrpt::obs::CObservation2DRangeScan::Ptr scan;
 	mrpt::math::TPose2D pose;  //!< x y theta (corrected logs: the reference)
 	mrpt::math::TPose2D odometry;  //!< odom_x odom_y odom_theta
+	/** The robot's odometry at this scan from the ODOM messages, chained
+	 * across re-anchoring lines (see CarmenLogReader): a pose in a frame
+	 * of its own, whose increments are the wheel odometry's. Empty when no
+	 * ODOM message (other than a re-anchoring one) came since the previous
+	 * scan, and on the first scan when no ODOM message came before it. */
+	std::optional<mrpt::math::TPose2D> odomMessages;
 	size_t line = 0;  //!< 1-based line in the file
 };
 
@@ -26,7 +33,18 @@ struct CarmenScan
  *
  * "No return" is written as the sensor's maximum, which differs between
  * logs (81.91, 51.15, 32.767 m...): readings at or beyond `maxRange` are
- * marked invalid. A malformed line is an InputError naming file and line. */
+ * marked invalid. A malformed line is an InputError naming file and line.
+ *
+ * ODOM messages (`ODOM x y theta tv rv accel ...`) are the wheel odometry
+ * stream. A corrected log (the Radish "-corrected" logs, written by a
+ * GMapping/GFS run) overwrites every FLASER's odom fields with the
+ * corrected pose, and after each FLASER writes an ODOM message at that
+ * corrected pose (timestamps 0): the stream is re-anchored at every scan
+ * and the ODOM messages that follow move on from there by the wheels'
+ * increments. Such an ODOM message (the first after a FLASER, at exactly
+ * its x y theta) is recognised as an anchor: it restarts the chain without
+ * adding motion, so odomMessages keeps the raw odometry's increments
+ * between scans. */
 class CarmenLogReader
 {
    public:

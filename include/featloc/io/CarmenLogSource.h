@@ -8,8 +8,13 @@ namespace featloc
 {
 /** A CARMEN log (`.log` or `.log.gz`, e.g. the Radish logs) as an
  * EntrySource of rawlog format #2: for every FLASER message a
- * CObservationOdometry (its odom_x odom_y odom_theta) and the
- * CObservation2DRangeScan, both at its logger time. The log is parsed
+ * CObservationOdometry and the CObservation2DRangeScan, both at its logger
+ * time. The odometry is the FLASER's odom_x odom_y odom_theta, except in a
+ * corrected log (every FLASER's odom fields equal its corrected pose: they
+ * are the reference, not odometry), where it is the wheel odometry of the
+ * ODOM messages (CarmenScan::odomMessages); when those miss a step, the
+ * log has no odometry featloc can use, and none is given (every step gets
+ * the no-odometry prior). description() says which. The log is parsed
  * whole when the source is made, so a malformed line is an InputError
  * before the run starts. The corrected poses of the log (x y theta) are
  * kept as its reference trajectory. A log whose times do not strictly
@@ -37,5 +42,12 @@ class CarmenLogSource : public EntrySource
 	std::vector<CarmenScan> m_scans;
 	size_t m_next = 0;	//!< next entry: 2 per scan (odometry, then scan)
 	bool m_numberedTimes = false;
+	enum class Odometry
+	{
+		FlaserFields,
+		OdomMessages,
+		None
+	} m_odometry = Odometry::FlaserFields;
+	size_t m_stepsWithoutOdomMessages = 0;
 };
 }  // namespace featloc
