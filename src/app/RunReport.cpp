@@ -75,6 +75,11 @@ void RunReport::printSummary(const RunStats& s)
 			"  odometry covariance: the log's is too small for the motion the matches "
 			"show; inflated x%.1f (see [Odometry] covariance_check)\n",
 			s.odometryCovarianceScale);
+	if (s.odometryDirectionOffsetDeg)
+		std::printf(
+			"  odometry direction offset learnt by the EKF: %.2f +- %.2f deg (the odometry's "
+			"direction of travel against the scanner's; [Ekf] odometry_direction_sigma_DEG)\n",
+			s.odometryDirectionOffsetDeg->first, s.odometryDirectionOffsetDeg->second);
 	for (const auto& [cls, n] : s.ignoredObservations)
 		std::printf("  %zu %s ignored (nothing in featloc uses them)\n", n, cls.c_str());
 	if (s.landmarkObservations || s.landmarksInMap)

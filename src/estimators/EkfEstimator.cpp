@@ -2,6 +2,8 @@
 
 #include <mrpt/obs/CObservationStereoImages.h>
 
+#include <cmath>
+
 #include "featloc/estimators/StereoStepResult.h"
 #include "featloc/io/DecodedStereoPair.h"
 #include "featloc/stereo/StereoLandmarkExtractor.h"
@@ -63,6 +65,13 @@ bool EkfEstimator::fuseAbsolutePose(
 	reason = u.reason;
 	m_pose = m_filter.robotPose();
 	return u.used;
+}
+
+std::optional<std::pair<double, double>> EkfEstimator::odometryDirectionOffset() const
+{
+	if (!(m_filter.options.odometry_direction_sigma > 0)) return {};
+	const auto D = EkfLocalizer::kOdometryDirection;
+	return std::make_pair(m_filter.state()[D], std::sqrt(m_filter.covariance()(D, D)));
 }
 
 std::vector<EstimatedLandmark> EkfEstimator::landmarks() const

@@ -88,6 +88,11 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 	j["log_duration_s"] = s.logSeconds;
 	j["real_time_factor"] = s.wallTime > 0 ? s.logSeconds / s.wallTime : 0.0;
 	j["odometry_covariance_scale"] = s.odometryCovarianceScale;
+	if (s.odometryDirectionOffsetDeg)
+		j["odometry_direction_offset_deg"] = {{"estimate", s.odometryDirectionOffsetDeg->first},
+			{"sigma", s.odometryDirectionOffsetDeg->second}};
+	else
+		j["odometry_direction_offset_deg"] = nullptr;
 	j["outputs"] = outputs;
 	return j;
 }

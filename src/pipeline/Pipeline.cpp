@@ -1,5 +1,7 @@
 #include "featloc/pipeline/Pipeline.h"
 
+#include <mrpt/core/bits_math.h>
+
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -285,6 +287,9 @@ void Pipeline::processStep(
 	stats.steps++;
 	if (step.scan) stats.scans++;
 	stats.odometryCovarianceScale = m_odometryCheck.maxScale();
+	if (const auto b = m_estimator->odometryDirectionOffset())
+		stats.odometryDirectionOffsetDeg =
+			std::make_pair(mrpt::RAD2DEG(b->first), mrpt::RAD2DEG(b->second));
 	if (stats.steps == 1) m_firstStepTime = step.time;
 	stats.logSeconds = std::chrono::duration<double>(step.time - m_firstStepTime).count();
 	const std::vector<EstimatedLandmark> landmarks = m_estimator->landmarks();

@@ -41,6 +41,7 @@ class EkfEstimator : public PoseEstimator
 	bool keepsLandmarks() const override { return true; }
 	std::vector<EstimatedLandmark> landmarks() const override;
 	std::string lastFallbackReason() const override { return m_reason; }
+	std::optional<std::pair<double, double>> odometryDirectionOffset() const override;
 	bool fusesAbsolutePoses() const override { return true; }
 	bool fuseAbsolutePose(
 		const mrpt::poses::CPosePDFGaussian& z, double gateChi2, std::string& reason) override;

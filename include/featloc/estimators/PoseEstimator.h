@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "featloc/ekf/EstimatedLandmark.h"
@@ -102,6 +103,11 @@ class PoseEstimator : public mrpt::rtti::CObject
 	 * not. The default throws std::logic_error (fusesAbsolutePoses()). */
 	virtual bool fuseAbsolutePose(
 		const mrpt::poses::CPosePDFGaussian& z, double gateChi2, std::string& reason);
+
+	/** The angle between the odometry's direction of travel and the
+	 * scanner's that the estimator has learnt, and its sigma [rad], when it
+	 * estimates one (the EKF with [Ekf] odometry_direction_sigma_DEG > 0). */
+	virtual std::optional<std::pair<double, double>> odometryDirectionOffset() const { return {}; }
 
 	/** Why the last process() did not use the match ("" if it did, or
 	 * there was none). */

@@ -1,7 +1,9 @@
 #pragma once
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace featloc
@@ -85,6 +87,9 @@ struct RunStats
 	/** Factor the odometry covariance was inflated by after checking it
 	 * against the matches ([Odometry] covariance_check; 1: not inflated). */
 	double odometryCovarianceScale = 1;
+	/** The odometry direction offset the estimator learnt and its sigma
+	 * [deg] (EkfEstimator, [Ekf] odometry_direction_sigma_DEG > 0). */
+	std::optional<std::pair<double, double>> odometryDirectionOffsetDeg;
 	bool ok = true;
 	/** Stopped early by SIGINT/SIGTERM (the outputs hold what was read). */
 	bool interrupted = false;
