@@ -191,3 +191,36 @@ TEST(EkfEstimator, FollowsTheTruthWithinItsCovarianceWhenHalfTheMatchesFail)
 	EXPECT_GT(neesSum / count, 1.0);  // not grossly under-confident either
 	EXPECT_LT(neesSum / count, 4.5);
 }
+
+TEST(EkfEstimator, ReportsTheOdometryDirectionOffsetItLearntOnlyWhenItEstimatesOne)
+{
+	// Odometry 0.5 m straight ahead each step; the exact match, keyframe to
+	// robot, says the robot went 3 deg to the left of that. A keyframe
+	// every 4 steps.
+	auto run = [](double sigmaDeg) {
+		EkfOptions o;
+		o.odometry_direction_sigma = mrpt::DEG2RAD(sigmaDeg);
+		EkfEstimator e(o);
+		e.initialize(diag(CPose2D(), 0, 0));
+		const double beta = mrpt::DEG2RAD(3.0);
+		EstimationStep step;
+		step.hasOdometry = true;
+		step.odometry = diag(CPose2D(0.5, 0, 0), 1e-4, mrpt::square(mrpt::DEG2RAD(0.5)));
+		for (int i = 0; i < 80; ++i)
+		{
+			MatchResult m;
+			m.success = true;
+			const double d = 0.5 * (i % 4 + 1);
+			m.estimate = diag(CPose2D(d * std::cos(beta), d * std::sin(beta), 0), 1e-4,
+				mrpt::square(mrpt::DEG2RAD(0.05)));
+			EXPECT_TRUE(e.process(step, &m)) << i << " " << e.lastFallbackReason();
+			if (i % 4 == 3) e.markKeyframe();
+		}
+		return e.odometryDirectionOffset();
+	};
+	EXPECT_FALSE(run(0).has_value());
+	const auto b = run(2);
+	ASSERT_TRUE(b.has_value());
+	EXPECT_NEAR(mrpt::RAD2DEG(b->first), 3.0, 0.3);
+	EXPECT_LT(mrpt::RAD2DEG(b->second), 1.0);
+}
