@@ -52,9 +52,7 @@ namespace featloc
  *   prior sigma odometry_direction_sigma_DEG, learnt from the matches
  *   through its correlation with the robot pose: online odometry
  *   calibration (Roy & Thrun 1999; Martinelli, Tomatis & Siegwart 2007).
- *   Off by default (sigma 0: b = 0): on the Radish logs, which were not
- *   used to develop it, it made three of six runs worse (fhw 1.66 ->
- *   3.03 m ATE), wrong matches teaching it a wrong b.
+ *   Prior sigma 2 deg by default (0: b = 0, not estimated).
  * - Scan matches measure the motion from the keyframe scan to the current
  *   one, z = x_c^-1 (+) x_r (stochastic cloning, Roumeliotis & Burdick
  *   2002): the clone is correlated with the robot, so an update corrects

@@ -24,8 +24,11 @@ struct EkfOptions : public mrpt::config::CLoadableOptions
 	/** Prior sigma [rad] of the odometry direction offset b
 	 * (EkfLocalizer): the angle between the odometry's direction of travel
 	 * and the scanner frame's, estimated from the matches. 0: not
-	 * estimated (b = 0). Config key odometry_direction_sigma_DEG. */
-	double odometry_direction_sigma = 0;
+	 * estimated (b = 0). Config key odometry_direction_sigma_DEG. 2 deg:
+	 * chosen on MRPT's Malaga log (5 deg gated a good match out there),
+	 * then measured on the Radish logs with their wheel odometry
+	 * (doc/benchmarks.md, "Gates and odometry covariance"). */
+	double odometry_direction_sigma = 0.034906585039886591;  // 2 deg
 	/** Probability of the landmark gates: individual (2 dof) and joint
 	 * (2 dof per pair). */
 	double landmark_gate_probability = 0.99;
