@@ -65,8 +65,7 @@ std::vector<CarmenScan> CarmenLogReader::read(const std::string& path, const Opt
 			if (tok.size() < 4) throw InputError(where + ": ODOM needs x y theta");
 			const mrpt::math::TPose2D read{
 				number(tok[1], where), number(tok[2], where), number(tok[3], where)};
-			const bool anchor = anchorPossible && anchorAt.x == read.x && anchorAt.y == read.y &&
-				anchorAt.phi == read.phi;
+			const bool anchor = anchorPossible && anchorAt == read;
 			const mrpt::poses::CPose2D odom(read);
 			if (!anchor && lastOdom)
 			{

@@ -3,6 +3,8 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/system/string_utils.h>
 
+#include <algorithm>
+
 namespace featloc
 {
 CarmenLogSource::CarmenLogSource(const std::string& path)
@@ -22,13 +24,12 @@ CarmenLogSource::CarmenLogSource(const std::string& path)
 	// A corrected log's odom fields are its reference poses: giving them as
 	// odometry would hand the estimator the answer (every Radish
 	// "-corrected" log; odometry alone would score 0 mm ATE).
-	bool corrected = true;
-	for (const auto& s : m_scans)
-		corrected = corrected && s.odometry.x == s.pose.x && s.odometry.y == s.pose.y &&
-			s.odometry.phi == s.pose.phi;
+	const bool corrected = std::all_of(m_scans.begin(), m_scans.end(),
+		[](const CarmenScan& s) { return s.odometry == s.pose; });
 	if (corrected)
 	{
-		for (const auto& s : m_scans) m_stepsWithoutOdomMessages += s.odomMessages ? 0 : 1;
+		m_stepsWithoutOdomMessages = static_cast<size_t>(std::count_if(m_scans.begin(),
+			m_scans.end(), [](const CarmenScan& s) { return !s.odomMessages; }));
 		m_odometry = m_stepsWithoutOdomMessages == 0 ? Odometry::OdomMessages : Odometry::None;
 	}
 }

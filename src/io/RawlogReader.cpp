@@ -85,6 +85,16 @@ bool RawlogReader::next(RawlogEntry& entry)
 {
 	auto& in = *m_impl->counter;
 	const uint64_t before = in.delivered();
+	// "rawlog 'F': entry #N (byte B of the uncompressed stream) WHAT; the N
+	// entries before it were read correctly".
+	auto entryError = [&](const std::string& what) {
+		std::ostringstream msg;
+		msg << "rawlog '" << m_path << "': entry #" << m_nextIndex << " (byte " << before
+			<< " of the uncompressed stream) " << what;
+		if (m_nextIndex > 0)
+			msg << "; the " << m_nextIndex << " entries before it were read correctly";
+		return msg.str();
+	};
 	mrpt::serialization::CSerializable::Ptr obj;
 	try
 	{
@@ -97,31 +107,19 @@ bool RawlogReader::next(RawlogEntry& entry)
 	}
 	catch (const std::bad_alloc&)
 	{
-		std::ostringstream msg;
-		msg << "rawlog '" << m_path << "': entry #" << m_nextIndex << " (byte " << before
-			<< " of the uncompressed stream) is corrupt: a length field in it asks for more "
-			<< "than " << (kMaxEntryBytes >> 20) << " MiB of memory";
-		if (m_nextIndex > 0)
-			msg << "; the " << m_nextIndex << " entries before it were read correctly";
-		throw InputError(msg.str());
+		throw InputError(entryError(
+			"is corrupt: a length field in it asks for more than " +
+				std::to_string(kMaxEntryBytes >> 20) + " MiB of memory"));
 	}
 	catch (const std::exception& e)
 	{
 		const bool nothingConsumed = in.delivered() == before;
 		if (nothingConsumed && in.shortRead()) return false;  // clean end
-		std::ostringstream msg;
-		msg << "rawlog '" << m_path << "': entry #" << m_nextIndex
-			<< " (byte " << before << " of the uncompressed stream) ";
-		if (in.shortRead())
-			msg << "is cut short: the file is truncated ("
-				<< exceptionText(e) << ")";
-		else
-			msg << "cannot be read: the file is corrupt or not a rawlog ("
-				<< exceptionText(e) << ")";
-		if (m_nextIndex > 0)
-			msg << "; the " << m_nextIndex
-				<< " entries before it were read correctly";
-		throw InputError(msg.str());
+		throw InputError(entryError(
+			in.shortRead()
+				? "is cut short: the file is truncated (" + exceptionText(e) + ")"
+				: "cannot be read: the file is corrupt or not a rawlog (" + exceptionText(e) +
+					")"));
 	}
 
 	if (!obj)

@@ -26,10 +26,10 @@ mrpt::math::CMatrixDouble33 OdometrySamplingOffset::covariance(
 	const mrpt::poses::CPose2D& keyframeStep, const mrpt::poses::CPose2D& currentStep,
 	const mrpt::poses::CPose2D& motion)
 {
-	mrpt::math::CMatrixDouble33 cov;
-	cov.setZero();
-	addStep(keyframeStep.x(), keyframeStep.y(), keyframeStep.phi(), cov);
+	// One reading's error at each end; the current one's into the
+	// keyframe's frame.
 	const double c = std::cos(motion.phi()), s = std::sin(motion.phi());
+	mrpt::math::CMatrixDouble33 cov = ofReading(keyframeStep);
 	addStep(c * currentStep.x() - s * currentStep.y(), s * currentStep.x() + c * currentStep.y(),
 		currentStep.phi(), cov);
 	return cov;

@@ -1,5 +1,6 @@
 #pragma once
 #include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/core/bits_math.h>
 
 #include <string>
 
@@ -28,7 +29,7 @@ struct EkfOptions : public mrpt::config::CLoadableOptions
 	 * chosen on MRPT's Malaga log (5 deg gated a good match out there),
 	 * then measured on the Radish logs with their wheel odometry
 	 * (doc/benchmarks.md, "Gates and odometry covariance"). */
-	double odometry_direction_sigma = 0.034906585039886591;  // 2 deg
+	double odometry_direction_sigma = mrpt::DEG2RAD(2.0);
 	/** Probability of the landmark gates: individual (2 dof) and joint
 	 * (2 dof per pair). */
 	double landmark_gate_probability = 0.99;

@@ -22,14 +22,14 @@ namespace featloc
 class OdometrySamplingOffset
 {
    public:
+	/** Covariance (x, y, yaw) of the error of one reading, at the end of
+	 * the step `step` (f D, f uniform in [-1/2, 1/2]). */
+	static mrpt::math::CMatrixDouble33 ofReading(const mrpt::poses::CPose2D& step);
 	/** Covariance (x, y, yaw) of the motion keyframe -> current from the
 	 * two ends: `keyframeStep`, the increment that ended at the keyframe
 	 * scan (in the keyframe's frame, near enough), and `currentStep`, the
 	 * one that ended at the current scan, rotated by the motion's yaw into
 	 * the keyframe's frame. */
-	/** Covariance (x, y, yaw) of the error of one reading, at the end of
-	 * the step `step` (f D, f uniform in [-1/2, 1/2]). */
-	static mrpt::math::CMatrixDouble33 ofReading(const mrpt::poses::CPose2D& step);
 	static mrpt::math::CMatrixDouble33 covariance(
 		const mrpt::poses::CPose2D& keyframeStep, const mrpt::poses::CPose2D& currentStep,
 		const mrpt::poses::CPose2D& motion);
