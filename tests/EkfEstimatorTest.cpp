@@ -125,6 +125,30 @@ TEST(EkfEstimator, FailedOrGatedMatchKeepsThePredictionAndSaysWhy)
 	EXPECT_NEAR(e.pose().mean.x(), 1.0, 1e-12);
 }
 
+// A match whose guess-gate rejection the scans overruled was tested against
+// the odometry already: the EKF's gate, built on that odometry, does not
+// reject it again; the same match without the mark is gated out.
+TEST(EkfEstimator, AnOverruledGuessGateIsNotAskedAgainByTheEkfGate)
+{
+	EstimationStep step;
+	step.hasOdometry = true;
+	step.odometry = diag(CPose2D(0.5, 0, 0), 0.0001, 1e-6);
+	MatchResult m;
+	m.success = true;
+	m.estimate = diag(CPose2D(0.8, 0, 0), 0.0001, 1e-6);
+	EkfEstimator gated(EkfOptions{});
+	gated.initialize(diag(CPose2D(), 0, 0));
+	EXPECT_FALSE(gated.process(step, &m));
+	m.guessGateOverruled = "the estimate is implausibly far from the initial guess; overruled";
+	EkfEstimator used(EkfOptions{});
+	used.initialize(diag(CPose2D(), 0, 0));
+	EXPECT_TRUE(used.process(step, &m));
+	EXPECT_TRUE(used.lastFallbackReason().empty()) << used.lastFallbackReason();
+	// Fused with equal weights at the next keyframe: half way.
+	used.markKeyframe();
+	EXPECT_NEAR(used.pose().mean.x(), 0.65, 1e-3);
+}
+
 // A loop around the lab's tables with drifting odometry: the matcher's
 // result is thrown away every other step. The filter must
 // still follow the exact ground truth within its own covariance.

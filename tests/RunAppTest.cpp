@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "featloc/eval/TrajectoryFile.h"
+#include "featloc/io/MatchTableFile.h"
 #include "featloc/io/RawlogReader.h"
 #include "featloc/registerClasses.h"
 #include "support/CommandRunner.h"
@@ -482,6 +483,42 @@ TEST(FeatlocRun, FailedMatchesAreCountedByKindInTheSummary)
 	EXPECT_EQ(byKind, sp["counts"]["match_failures"].get<size_t>());
 	EXPECT_EQ(sp["counts"]["ambiguous_matches_used"], 0);  // the coarse search is off by default
 	EXPECT_EQ(sp["counts"]["matcher_fallbacks"], 0);  // ICP has none
+}
+
+// On the bundled log CF-IDC's guess gate rejects good matches where the
+// odometry was read long before the scan; the scans overrule some of them.
+// Each is a success marked "overruled" in matches.txt, with the gate's
+// reason and the evidence, and summary.json counts them.
+TEST(FeatlocRun, OverruledGuessGatesAreMarkedAndCounted)
+{
+	TempDir dir;
+	const CommandResult r = featlocRun(shellQuote(kConfig) + " --out " +
+		shellQuote(dir.file("out")) + " --set ScanMatcher:class=featloc::CfIdcMatcher");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto s = readJson(dir.file("out/summary.json"));
+	const size_t counted = s["counts"]["guess_gate_overruled"];
+	size_t rows = 0;
+	for (const auto& row : featloc::MatchTableFile::read(dir.file("out/matches.txt")))
+	{
+		if (row.status != "overruled") continue;
+		rows++;
+		EXPECT_NE(row.reason.find("guess_gate_chi2"), std::string::npos) << row.reason;
+		EXPECT_NE(row.reason.find("the points favour it over the guess by z ="), std::string::npos)
+			<< row.reason;
+	}
+	EXPECT_GT(counted, 0u);
+	EXPECT_EQ(rows, counted);
+
+	TempDir off;
+	const CommandResult o = featlocRun(shellQuote(kConfig) + " --out " +
+		shellQuote(off.file("out")) + " --set ScanMatcher:class=featloc::CfIdcMatcher" +
+		" --set ScanMatcher.CfIdcMatcher:coarse_overrule_guess_z=0");
+	ASSERT_EQ(o.exitCode, 0) << o.output;
+	const auto so = readJson(off.file("out/summary.json"));
+	EXPECT_EQ(so["counts"]["guess_gate_overruled"], 0);
+	// (The counts differ otherwise: an overruled match keeps its keyframe,
+	// a failed one starts a new one, and the runs part.)
+	EXPECT_GE(so["counts"]["match_failures_by_kind"]["guess_gate"].get<size_t>(), counted);
 }
 
 // Every pair counts: a failed pair with its guess's error, so a matcher

@@ -44,7 +44,15 @@ bool EkfEstimator::process(const EstimationStep& step, const MatchResult* match)
 		// error, so only the latest accepted one is held for fusion.
 		// No gate allowance: the state holds the odometry's sampling error
 		// (EkfLocalizer::predict), which is what the allowance stands for.
-		const auto u = m_filter.testRelativeMotion(z);
+		// A match whose guess-gate rejection the scans overruled has been
+		// tested against the odometry already, by evidence the gate has not
+		// got (ScanMatcher::arbitrateGuessGate): the EKF's gate, whose
+		// prediction is that odometry, is not asked again. Growing the
+		// robot's covariance by the disagreement first was measured worse
+		// (doc/benchmarks.md, "Overruled guess-gate rejections").
+		const bool overruled = !match->guessGateOverruled.empty();
+		const auto u = overruled ? EkfLocalizer::MotionUpdate{true, 0.0, ""}
+								 : m_filter.testRelativeMotion(z);
 		used = u.used;
 		m_reason = u.reason;
 		if (used) m_filter.holdRelativeMotion(z);

@@ -146,11 +146,14 @@ std::string MatchPanel::runMatcher(const std::string& className, const std::stri
 	panel.setMatch(ref.scan, step.scan, r.estimate.mean.asTPose(), std::move(used), caption);
 	std::ostringstream out;
 	out << className << ": "
-		<< (r.success ? "success" : r.rejectedByGuessGate ? "rejected by the guess gate" : "failed")
+		<< (r.success ? (r.guessGateOverruled.empty() ? "success" : "success, guess gate overruled")
+					  : r.rejectedByGuessGate ? "rejected by the guess gate"
+											  : "failed")
 		<< ", " << r.iterations << " iterations, " << r.timeSeconds * 1e3 << " ms\n"
 		<< "estimate: " << describeMotion(r.estimate.mean.asTPose()) << "\n"
 		<< "covariance: " << describeSigmas(r.estimate.cov) << "\n";
 	if (!r.success) out << "reason: " << r.failureReason << "\n";
+	if (!r.guessGateOverruled.empty()) out << "guess gate: " << r.guessGateOverruled << "\n";
 	return out.str() + usedText;
 }
 

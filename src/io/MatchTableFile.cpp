@@ -13,7 +13,7 @@ const char* MatchTableFile::header()
 	return "featloc scan matches: t ref_t status used iterations time_ms goodness "
 		   "ref_points cur_points guess_x guess_y guess_yaw est_x est_y est_yaw c_xx c_xy "
 		   "c_xyaw c_yy c_yyaw c_yawyaw g_xx g_xy g_xyaw g_yy g_yyaw g_yawyaw a_xx a_xy a_xyaw "
-		   "a_yy a_yyaw a_yawyaw reason (s, m, rad; status ok|failed|gate; c: estimate, g: "
+		   "a_yy a_yyaw a_yawyaw reason (s, m, rad; status ok|overruled|failed|gate; c: estimate, g: "
 		   "guess, a: gate allowance covariances)";
 }
 
@@ -34,7 +34,8 @@ std::vector<MatchTableFile::Row> MatchTableFile::read(const std::string& path)
 			r.goodness >> r.referencePoints >> r.currentPoints >> r.guess.x >> r.guess.y >>
 			r.guess.phi >> r.estimate.x >> r.estimate.y >> r.estimate.phi;
 		for (double& v : c) ss >> v;
-		if (!ss || (r.status != "ok" && r.status != "failed" && r.status != "gate"))
+		if (!ss || (r.status != "ok" && r.status != "failed" && r.status != "gate" &&
+						   r.status != "overruled"))
 			throw InputError(
 				path + ":" + std::to_string(lineNo) + ": not a match-table row (" + header() + ")");
 		r.used = used != 0;

@@ -68,6 +68,7 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	read(c, s, "coarse_min_score", minScore);
 	read(c, s, "coarse_contender_ratio", contenderRatio);
 	read(c, s, "coarse_ambiguity_z", ambiguityZ);
+	read(c, s, "coarse_overrule_guess_z", overruleGuessZ);
 	read(c, s, "coarse_sharp_sigma", sharpSigma);
 	readChoice(c, s, "coarse_on_ambiguity", onAmbiguity, {"inflate", "fail"});
 	read(c, s, "coarse_distinct_xy", distinctXY);
@@ -86,6 +87,7 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	require(minScore >= 0 && minScore <= 1, c, s, "coarse_min_score", "in [0, 1]");
 	require(ambiguityZ >= 0, c, s, "coarse_ambiguity_z", ">= 0 (0 disables the check)");
 	require(contenderRatio > 0 && contenderRatio <= 1, c, s, "coarse_contender_ratio", "in (0, 1]");
+	require(overruleGuessZ >= 0, c, s, "coarse_overrule_guess_z", ">= 0 (0 disables it)");
 	require(sharpSigma > 0, c, s, "coarse_sharp_sigma", "> 0");
 	require(distinctXY > 0, c, s, "coarse_distinct_xy", "> 0");
 	require(distinctYaw > 0, c, s, "coarse_distinct_yaw_DEG", "> 0");
@@ -121,6 +123,10 @@ void CorrelativeScanSearch::Options::saveToConfigFile(
 	write(c, s, "coarse_on_ambiguity", onAmbiguity,
 		"inflate (the covariance grows to cover every rival; the match is used, flagged) | "
 		"fail (the match fails)");
+	write(c, s, "coarse_overrule_guess_z", overruleGuessZ,
+		"a guess-gate rejection stands unless a search over the guess and the estimate finds "
+		"the estimate, unambiguous, and the points favour it over the guess by this z "
+		"(0: the gate always decides)");
 	write(c, s, "coarse_sharp_sigma", sharpSigma,
 		"[m] width of the sharp score that compares the estimate with the contenders");
 	write(c, s, "coarse_distinct_xy", distinctXY,
@@ -394,6 +400,15 @@ CorrelativeScanSearch::Ambiguity CorrelativeScanSearch::ambiguity(const Result& 
 		out.reason = buf;
 	}
 	return out;
+}
+
+double CorrelativeScanSearch::evidenceFor(
+	const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const
+{
+	std::vector<double> atA, atB;
+	sharpScores(a, atA);
+	sharpScores(b, atB);
+	return evidence(atA, atB);
 }
 
 bool CorrelativeScanSearch::distinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const

@@ -65,8 +65,12 @@ MatchResult ScanMatcher::match(
 	mrpt::poses::CPosePDFGaussian window = initialGuess;
 	window.cov += gateAllowance;
 
-	MatchResult r = matchInSensorFrames(ScanPoints::fromScan(reference),
-		ScanPoints::fromScan(current), toSensorFrames(initialGuess), toSensorFrames(window));
+	const ScanPoints refPoints = ScanPoints::fromScan(reference);
+	const ScanPoints curPoints = ScanPoints::fromScan(current);
+	const mrpt::poses::CPosePDFGaussian sensorWindow = toSensorFrames(window);
+	MatchResult r =
+		matchInSensorFrames(refPoints, curPoints, toSensorFrames(initialGuess), sensorWindow);
+	const mrpt::poses::CPose2D sensorEstimate = r.estimate.mean;
 
 	r.estimate.changeCoordinatesReference(s1);
 	r.estimate += mrpt::poses::CPose2D() - s2;
@@ -76,10 +80,48 @@ MatchResult ScanMatcher::match(
 	// In the robot frame, where the guess's uncertainty is what its
 	// source (odometry) says; in the sensor frames a lever arm couples it.
 	checkAgainstGuess(initialGuess, r);
+	if (r.rejectedByGuessGate)
+		arbitrateGuessGate(refPoints, curPoints, sensorWindow, sensorEstimate, r);
 	r.timeSeconds =
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
 			.count();
 	return r;
+}
+
+void ScanMatcher::arbitrateGuessGate(const ScanPoints& reference, const ScanPoints& current,
+	const mrpt::poses::CPosePDFGaussian& window, const mrpt::poses::CPose2D& estimate,
+	MatchResult& r)
+{
+	const double minZ = m_coarse.options.overruleGuessZ;
+	if (minZ <= 0 || m_coarse.options.ambiguityZ <= 0) return;
+	// The gate fired: the guess is wrong by more than its covariance says,
+	// or the estimate is, so that covariance cannot bound where the truth
+	// may be. One search over the widest window (coarse_max_window_*)
+	// around the guess scores the guess's solutions and the matcher's on
+	// one table; every pose of it can be a rival. (A window grown only to
+	// take in the estimate missed a corridor's stretch beyond it, where the
+	// truth was.)
+	const double sigmas = m_coarse.options.windowSigmas;
+	const double sxy = m_coarse.options.maxWindowXY / sigmas;
+	const double syaw = m_coarse.options.maxWindowYaw / sigmas;
+	mrpt::poses::CPosePDFGaussian both = window;
+	both.cov = mrpt::math::CMatrixDouble33(
+		Eigen::Vector3d(sxy * sxy, sxy * sxy, syaw * syaw).asDiagonal().toDenseMatrix());
+	const CorrelativeScanSearch::Result coarse = m_coarse.search(reference, current, both);
+	if (!coarse.success || m_coarse.distinct(coarse.best, estimate)) return;
+	if (m_coarse.ambiguity(coarse, estimate, both).ambiguous) return;
+	const double z = m_coarse.evidenceFor(estimate, window.mean);
+	if (z < minZ) return;
+	char buf[200];
+	std::snprintf(buf, sizeof(buf),
+		"; overruled: a correlative search over the guess and the estimate finds the estimate, "
+		"unambiguous, and the points favour it over the guess by z = %.1f",
+		z);
+	r.success = true;
+	r.rejectedByGuessGate = false;
+	r.failureKind.clear();
+	r.guessGateOverruled = r.failureReason + buf;
+	r.failureReason.clear();
 }
 
 MatchResult ScanMatcher::match(
@@ -90,6 +132,8 @@ MatchResult ScanMatcher::match(
 	MatchResult r = matchInSensorFrames(reference, current, initialGuess, initialGuess);
 	r.guess = initialGuess;
 	checkAgainstGuess(initialGuess, r);
+	if (r.rejectedByGuessGate)
+		arbitrateGuessGate(reference, current, initialGuess, r.estimate.mean, r);
 	r.timeSeconds =
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
 			.count();

@@ -19,8 +19,14 @@ void MatchTableWriter::onStep(const StepRecord& r)
 {
 	if (!r.match) return;
 	const MatchResult& m = *r.match;
-	const char* status = m.success ? "ok" : m.rejectedByGuessGate ? "gate" : "failed";
-	const std::string& reason = m.success ? r.fallbackReason : m.failureReason;
+	const bool overruled = !m.guessGateOverruled.empty();
+	const char* status = m.success ? (overruled ? "overruled" : "ok")
+								   : m.rejectedByGuessGate ? "gate" : "failed";
+	// An overruled gate's reason comes first; the estimator's, if it did
+	// not use the match, after it.
+	std::string reason = m.success ? r.fallbackReason : m.failureReason;
+	if (overruled)
+		reason = m.guessGateOverruled + (reason.empty() ? "" : "; not used: " + reason);
 	const auto& g = m.guess.mean;
 	const auto& e = m.estimate.mean;
 	std::string row(4096, '\0');

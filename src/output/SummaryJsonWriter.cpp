@@ -37,6 +37,7 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"match_failures", s.matchFailures},
 		{"match_failures_by_kind", s.matchFailuresByKind},
 		{"ambiguous_matches_used", s.ambiguousMatches},
+		{"guess_gate_overruled", s.guessGateOverruled},
 		{"matcher_fallbacks", s.matcherFallbacks},
 		{"fallbacks_to_odometry", s.fallbacks},
 		{"ignored_observations", s.ignoredObservations}};

@@ -246,6 +246,7 @@ void Pipeline::processStep(
 			stats.matchTimes.push_back(match.timeSeconds);
 			stats.matchIterations.push_back(match.iterations);
 			if (match.ambiguous) stats.ambiguousMatches++;
+			if (!match.guessGateOverruled.empty()) stats.guessGateOverruled++;
 			if (!match.matcherFallback.empty()) stats.matcherFallbacks++;
 			if (!match.success)
 			{

@@ -17,19 +17,23 @@ namespace featloc
  *   reason...
  *
  * t: the current scan's time, ref_t: its reference (keyframe) scan's;
- * status: ok | failed | gate (converged, rejected by the guess gate);
+ * status: ok | overruled (a success whose guess-gate rejection the scans
+ * overruled, ScanMatcher::arbitrateGuessGate) | failed | gate (converged,
+ * rejected by the guess gate);
  * used: 1 if the estimator used it; poses are robot-frame motions from the
  * reference scan (m, rad), c_ the estimate's covariance, g_ the guess's,
  * a_ the gate allowance added to the guess's (ScanMatcher::match); reason: the
- * failure or the estimator's gate reason, to the end of the line ('-':
- * none). */
+ * failure, the overruled gate's and the evidence, or the estimator's gate
+ * reason, to the end of the line ('-': none). */
 class MatchTableFile
 {
    public:
 	struct Row
 	{
 		double t = 0, referenceT = 0;  //!< [s]
-		std::string status;	 //!< "ok", "failed" or "gate"
+		/** "ok", "failed", "gate" (the guess gate rejected it) or "overruled"
+		 * (a success whose guess-gate rejection the scans overruled). */
+		std::string status;
 		bool used = false;
 		unsigned iterations = 0;
 		double timeMs = 0, goodness = 0;

@@ -67,6 +67,11 @@ class CorrelativeScanSearch
 		/** What an ambiguous match becomes: "inflate" (its covariance grows
 		 * to cover every rival, and it is used, flagged) or "fail". */
 		std::string onAmbiguity = "inflate";
+		/** A guess-gate rejection is overruled when a search over the guess
+		 * and the estimate finds the estimate, unambiguous, and the points
+		 * favour it over the guess by this z (ScanMatcher; 0: off; needs
+		 * ambiguityZ > 0). Runs whether or not `enabled`. */
+		double overruleGuessZ = 3.0;
 		double sharpSigma = 0.02;  //!< [m] width of the sharp score, at least (else 2x the scan's scatter)
 		/** Solutions further apart than this in translation or rotation are
 		 * distinct: the silent-gross-error thresholds of featloc-bench. */
@@ -124,6 +129,11 @@ class CorrelativeScanSearch
 	 * paired evidence for the estimate (evidence()) is below ambiguityZ. */
 	Ambiguity ambiguity(const Result& r, const mrpt::poses::CPose2D& estimate,
 		const mrpt::poses::CPosePDFGaussian& guess) const;
+
+	/** The paired evidence for pose a over pose b of the last search's
+	 * current scan (evidence() of their sharp scores; both poses as given,
+	 * no grid neighbour). */
+	double evidenceFor(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const;
 
 	/** Whether two poses are distinct solutions (distinctXY, distinctYaw). */
 	bool distinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const;

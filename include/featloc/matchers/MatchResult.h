@@ -23,6 +23,10 @@ struct MatchResult
 	 * guess for the guess's covariance (guess_gate_chi2): `estimate` is the
 	 * converged motion. */
 	bool rejectedByGuessGate = false;
+	/** Non-empty on a success that the guess gate had rejected and the
+	 * scans overruled (ScanMatcher::arbitrateGuessGate): the gate's reason
+	 * and the evidence against the guess. */
+	std::string guessGateOverruled;
 	/** What kind of failure (empty on success; set on every failure that
 	 * ScanMatcher::match returns), for the counts of
 	 * summary.json and featloc-bench: "too_few_points", "no_overlap" (the

@@ -46,6 +46,9 @@ struct RunStats
 	/** Successful matches flagged ambiguous, used with an inflated
 	 * covariance (MatchResult::ambiguous). */
 	size_t ambiguousMatches = 0;
+	/** Successful matches whose guess-gate rejection the scans overruled
+	 * (MatchResult::guessGateOverruled). */
+	size_t guessGateOverruled = 0;
 	/** Matches where the matcher took its own fallback
 	 * (MatchResult::matcherFallback). */
 	size_t matcherFallbacks = 0;
