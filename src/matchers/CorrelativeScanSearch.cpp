@@ -124,7 +124,7 @@ void CorrelativeScanSearch::Options::saveToConfigFile(
 		"inflate (the covariance grows to cover every rival; the match is used, flagged) | "
 		"fail (the match fails)");
 	write(c, s, "coarse_overrule_guess_z", overruleGuessZ,
-		"a guess-gate rejection stands unless a search over the guess and the estimate finds "
+		"a guess-gate rejection stands unless a search of the widest window around the guess finds "
 		"the estimate, unambiguous, and the points favour it over the guess by this z "
 		"(0: the gate always decides)");
 	write(c, s, "coarse_sharp_sigma", sharpSigma,

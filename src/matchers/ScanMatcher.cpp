@@ -81,7 +81,7 @@ MatchResult ScanMatcher::match(
 	// source (odometry) says; in the sensor frames a lever arm couples it.
 	checkAgainstGuess(initialGuess, r);
 	if (r.rejectedByGuessGate)
-		arbitrateGuessGate(refPoints, curPoints, sensorWindow, sensorEstimate, r);
+		arbitrateGuessGate(refPoints, curPoints, sensorWindow.mean, sensorEstimate, r);
 	r.timeSeconds =
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
 			.count();
@@ -89,8 +89,7 @@ MatchResult ScanMatcher::match(
 }
 
 void ScanMatcher::arbitrateGuessGate(const ScanPoints& reference, const ScanPoints& current,
-	const mrpt::poses::CPosePDFGaussian& window, const mrpt::poses::CPose2D& estimate,
-	MatchResult& r)
+	const mrpt::poses::CPose2D& guess, const mrpt::poses::CPose2D& estimate, MatchResult& r)
 {
 	const double minZ = m_coarse.options.overruleGuessZ;
 	if (minZ <= 0 || m_coarse.options.ambiguityZ <= 0) return;
@@ -104,18 +103,18 @@ void ScanMatcher::arbitrateGuessGate(const ScanPoints& reference, const ScanPoin
 	const double sigmas = m_coarse.options.windowSigmas;
 	const double sxy = m_coarse.options.maxWindowXY / sigmas;
 	const double syaw = m_coarse.options.maxWindowYaw / sigmas;
-	mrpt::poses::CPosePDFGaussian both = window;
-	both.cov = mrpt::math::CMatrixDouble33(
-		Eigen::Vector3d(sxy * sxy, sxy * sxy, syaw * syaw).asDiagonal().toDenseMatrix());
-	const CorrelativeScanSearch::Result coarse = m_coarse.search(reference, current, both);
+	const mrpt::poses::CPosePDFGaussian widest(guess,
+		mrpt::math::CMatrixDouble33(
+			Eigen::Vector3d(sxy * sxy, sxy * sxy, syaw * syaw).asDiagonal().toDenseMatrix()));
+	const CorrelativeScanSearch::Result coarse = m_coarse.search(reference, current, widest);
 	if (!coarse.success || m_coarse.distinct(coarse.best, estimate)) return;
-	if (m_coarse.ambiguity(coarse, estimate, both).ambiguous) return;
-	const double z = m_coarse.evidenceFor(estimate, window.mean);
+	if (m_coarse.ambiguity(coarse, estimate, widest).ambiguous) return;
+	const double z = m_coarse.evidenceFor(estimate, guess);
 	if (z < minZ) return;
 	char buf[200];
 	std::snprintf(buf, sizeof(buf),
-		"; overruled: a correlative search over the guess and the estimate finds the estimate, "
-		"unambiguous, and the points favour it over the guess by z = %.1f",
+		"; overruled: a correlative search of the widest window around the guess finds the "
+		"estimate, unambiguous, and the points favour it over the guess by z = %.1f",
 		z);
 	r.success = true;
 	r.rejectedByGuessGate = false;
@@ -133,7 +132,7 @@ MatchResult ScanMatcher::match(
 	r.guess = initialGuess;
 	checkAgainstGuess(initialGuess, r);
 	if (r.rejectedByGuessGate)
-		arbitrateGuessGate(reference, current, initialGuess, r.estimate.mean, r);
+		arbitrateGuessGate(reference, current, initialGuess.mean, r.estimate.mean, r);
 	r.timeSeconds =
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
 			.count();

@@ -67,10 +67,11 @@ class CorrelativeScanSearch
 		/** What an ambiguous match becomes: "inflate" (its covariance grows
 		 * to cover every rival, and it is used, flagged) or "fail". */
 		std::string onAmbiguity = "inflate";
-		/** A guess-gate rejection is overruled when a search over the guess
-		 * and the estimate finds the estimate, unambiguous, and the points
-		 * favour it over the guess by this z (ScanMatcher; 0: off; needs
-		 * ambiguityZ > 0). Runs whether or not `enabled`. */
+		/** A guess-gate rejection is overruled when a search of the widest
+		 * window around the guess finds the estimate, unambiguous, and the
+		 * points favour it over the guess by this z
+		 * (ScanMatcher::arbitrateGuessGate; 0: off; needs ambiguityZ > 0).
+		 * Runs whether or not `enabled`. */
 		double overruleGuessZ = 3.0;
 		double sharpSigma = 0.02;  //!< [m] width of the sharp score, at least (else 2x the scan's scatter)
 		/** Solutions further apart than this in translation or rotation are

@@ -123,15 +123,14 @@ class ScanMatcher : public mrpt::rtti::CObject
 	 * the odometry can be wrong by more than its covariance (a reading
 	 * taken long before the scan), and then the gate throws a good match
 	 * away. A correlative search over the widest window
-	 * (coarse_max_window_*) around `window`'s mean (the guess, in the
-	 * sensor frames) must find `estimate` as its best, no rival the points
+	 * (coarse_max_window_*) around `guess` (in the sensor frames, as
+	 * `estimate`) must find `estimate` as its best, no rival the points
 	 * do not reject (CorrelativeScanSearch::ambiguity), and paired evidence
 	 * for the estimate over the guess of at least coarse_overrule_guess_z;
 	 * then the match succeeds, marked guessGateOverruled. Otherwise the
 	 * rejection stands. */
 	void arbitrateGuessGate(const ScanPoints& reference, const ScanPoints& current,
-		const mrpt::poses::CPosePDFGaussian& window, const mrpt::poses::CPose2D& estimate,
-		MatchResult& r);
+		const mrpt::poses::CPose2D& guess, const mrpt::poses::CPose2D& estimate, MatchResult& r);
 	CorrelativeScanSearch m_coarse;
 	void checkAgainstGuess(const mrpt::poses::CPosePDFGaussian& guess, MatchResult& r) const;
 };
