@@ -10,26 +10,12 @@ Usage: scripts/carmen-odometry-errors.py LOG POSES_COV
 Prints, over the steps where both moved at least 0.1 m, the angle between the
 odometry's direction of travel and the reference's (median, quartiles), and
 over all steps the error of the odometry's turn (p10, median, p90), in deg."""
-import gzip
 import math
 import sys
 
-from planar_poses import read_poses, relative
+from planar_poses import read_carmen_reference, read_poses, relative
 
-
-def reference(path):
-    opener = gzip.open if path.endswith(".gz") else open
-    out = []
-    with opener(path, "rt", errors="replace") as f:
-        for line in f:
-            t = line.split()
-            if t and t[0] == "FLASER":
-                n = int(t[1])
-                out.append(tuple(float(v) for v in t[2 + n:5 + n]))
-    return out
-
-
-ref = reference(sys.argv[1])
+ref = read_carmen_reference(sys.argv[1])
 odo = [r[1:4] for r in read_poses(sys.argv[2])]
 if len(ref) != len(odo):
     sys.exit("%d FLASER messages but %d poses" % (len(ref), len(odo)))

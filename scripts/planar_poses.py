@@ -1,5 +1,6 @@
 """Planar pose helpers shared by featloc's analysis scripts
-(match-errors.py, odometry-step-errors.py)."""
+(match-errors.py, odometry-step-errors.py, carmen-*.py)."""
+import gzip
 import math
 
 
@@ -31,3 +32,17 @@ def relative(a, b):
     dx, dy = b[0] - a[0], b[1] - a[1]
     c, s = math.cos(a[2]), math.sin(a[2])
     return (c * dx + s * dy, -s * dx + c * dy, wrap(b[2] - a[2]))
+
+
+def read_carmen_reference(path):
+    """(x, y, theta) of every FLASER message of a CARMEN log (.log or
+    .log.gz), in order: a corrected log's reference poses."""
+    opener = gzip.open if path.endswith(".gz") else open
+    out = []
+    with opener(path, "rt", errors="replace") as f:
+        for line in f:
+            t = line.split()
+            if t and t[0] == "FLASER":
+                n = int(t[1])
+                out.append(tuple(float(v) for v in t[2 + n:5 + n]))
+    return out

@@ -60,22 +60,15 @@ TEST(CarmenLogReader, MalformedLinesNameFileAndLine)
 	std::ofstream(dir.file("none.log")) << "ODOM 0 0 0 0 0 0 0 h 0\n";
 	std::ofstream(dir.file("odom.log")) << "ODOM 0 0 0 0 0 0 0 h 0\nODOM 1 nan 0 0 0 0 0 h 0\n";
 	std::ofstream(dir.file("odom2.log")) << "ODOM 1 2\n";
-	EXPECT_NE(errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file("short.log"), {}); })
-				  .find("short.log:1: FLASER with 181 ranges needs 192 fields"),
+	// The message of reading `name` from the folder, which must fail.
+	auto errorOf = [&](const char* name) {
+		return errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file(name), {}); });
+	};
+	EXPECT_NE(errorOf("short.log").find("short.log:1: FLASER with 181 ranges needs 192 fields"),
 		std::string::npos);
-	EXPECT_NE(errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file("bad.log"), {}); })
-				  .find("bad.log:1: "),
-		std::string::npos);
-	EXPECT_NE(errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file("none.log"), {}); })
-				  .find("no FLASER"),
-		std::string::npos);
-	EXPECT_NE(errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file("odom.log"), {}); })
-				  .find("odom.log:2: 'nan' is not a number"),
-		std::string::npos);
-	EXPECT_NE(errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file("odom2.log"), {}); })
-				  .find("odom2.log:1: ODOM needs x y theta"),
-		std::string::npos);
-	EXPECT_NE(errorMessageOf<InputError>([&] { CarmenLogReader::read(dir.file("nope.log"), {}); })
-				  .find("does not exist"),
-		std::string::npos);
+	EXPECT_NE(errorOf("bad.log").find("bad.log:1: "), std::string::npos);
+	EXPECT_NE(errorOf("none.log").find("no FLASER"), std::string::npos);
+	EXPECT_NE(errorOf("odom.log").find("odom.log:2: 'nan' is not a number"), std::string::npos);
+	EXPECT_NE(errorOf("odom2.log").find("odom2.log:1: ODOM needs x y theta"), std::string::npos);
+	EXPECT_NE(errorOf("nope.log").find("does not exist"), std::string::npos);
 }
