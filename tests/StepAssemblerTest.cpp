@@ -94,6 +94,59 @@ TEST(StepAssembler, Format2OdometryIsInterpolatedAtScanTimes)
 	}
 }
 
+TEST(StepAssembler, Format2OdometryIsExtrapolatedWhenAskedSoAScanNeedNotWait)
+{
+	registerClasses();
+	TempDir dir;
+	TestRawlog log;
+	log.scans = 12;
+	log.observationsOnly = true;
+	log.odometryPerScan = 3;  // a reading 1/60 s before each scan, the next 1/60 s after
+	log.write(dir.file("b.rawlog"));
+	for (const double maxAhead : {0.0, 0.02})
+	{
+		OdometryOptions odo;
+		odo.max_extrapolation = maxAhead;
+		StepAssembler a(InputOptions{}, odo, "b");
+		RawlogReader reader(dir.file("b.rawlog"));
+		RawlogEntry e;
+		std::vector<StepSource> sel;
+		std::vector<EstimationStep> steps, ready;
+		size_t releasedAtTheirScan = 0;
+		while (reader.next(e))
+		{
+			ready.clear();
+			a.push(e, sel, ready);
+			for (const auto& s : ready)
+				if (s.source == e.object.get()) releasedAtTheirScan++;
+			steps.insert(steps.end(), ready.begin(), ready.end());
+			sel.clear();
+		}
+		ready.clear();
+		a.finish(ready);
+		steps.insert(steps.end(), ready.begin(), ready.end());
+		ASSERT_EQ(steps.size(), 12u);
+		if (maxAhead == 0)
+		{
+			// Each scan waits for the reading after it, and is interpolated.
+			EXPECT_EQ(releasedAtTheirScan, 0u);
+			EXPECT_EQ(a.stepsWithExtrapolatedOdometry(), 0u);
+			continue;
+		}
+		// Each scan is released with its own entry: the newest reading is
+		// 1/60 s old, within 0.02 s.
+		EXPECT_EQ(releasedAtTheirScan, 12u);
+		EXPECT_EQ(a.stepsWithExtrapolatedOdometry(), 12u);
+		for (size_t k = 1; k < steps.size(); k++)
+		{
+			ASSERT_TRUE(steps[k].hasOdometry);
+			const double t = log.scanPeriod * static_cast<double>(k);
+			// The last 1/30 s continued 1/60 s on a smooth path: ~1e-5 error.
+			expectIncrement(steps[k], log.path(t) - log.path(t - log.scanPeriod), 1e-4);
+		}
+	}
+}
+
 TEST(StepAssembler, ModelCovarianceGrowsWithMotion)
 {
 	registerClasses();

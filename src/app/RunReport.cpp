@@ -70,6 +70,10 @@ void RunReport::printSummary(const RunStats& s)
 	if (s.stepsWithoutOdometry)
 		std::printf(
 			"  %zu steps had no odometry (zero-motion prior used)\n", s.stepsWithoutOdometry);
+	if (s.stepsWithExtrapolatedOdometry)
+		std::printf("  %zu steps extrapolated the odometry past its newest reading "
+					"([Odometry] max_extrapolation)\n",
+			s.stepsWithExtrapolatedOdometry);
 	if (s.odometryCovarianceScale > 1)
 		std::printf(
 			"  odometry covariance: the log's is too small for the motion the matches "

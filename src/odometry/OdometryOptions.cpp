@@ -11,6 +11,7 @@ void OdometryOptions::loadFromConfigFile(
 	readChoice(c, s, "covariance_source", covariance_source, {"rawlog", "model"});
 	model.loadFromConfigFile(c, s);
 	read(c, s, "max_interpolation_gap", max_interpolation_gap);
+	read(c, s, "max_extrapolation", max_extrapolation);
 	read(c, s, "no_odometry_sigma_xy", no_odometry_sigma_xy);
 	readDegrees(c, s, "no_odometry_sigma_yaw_DEG", no_odometry_sigma_yaw);
 	read(c, s, "action_sampling_offset", action_sampling_offset);
@@ -20,6 +21,8 @@ void OdometryOptions::loadFromConfigFile(
 	require(covariance_check_quantile >= 0.5 && covariance_check_quantile <= 0.99, c, s,
 		"covariance_check_quantile", "in [0.5, 0.99]");
 	require(max_interpolation_gap > 0, c, s, "max_interpolation_gap", "> 0");
+	require(max_extrapolation >= 0 && max_extrapolation <= max_interpolation_gap, c, s,
+		"max_extrapolation", "in [0, max_interpolation_gap]");
 	require(covariance_check_window >= 3, c, s, "covariance_check_window", ">= 3");
 	require(no_odometry_sigma_xy > 0, c, s, "no_odometry_sigma_xy", "> 0");
 	require(
@@ -35,6 +38,8 @@ void OdometryOptions::saveToConfigFile(
 	model.saveToConfigFile(c, s);
 	write(c, s, "max_interpolation_gap", max_interpolation_gap,
 		"[s] format #2: max gap between odometry readings to interpolate");
+	write(c, s, "max_extrapolation", max_extrapolation,
+		"[s] format #2: a scan this close after the newest reading extrapolates it rather than wait for the next (live runs; 0: always wait)");
 	write(c, s, "no_odometry_sigma_xy", no_odometry_sigma_xy,
 		"[m] prior sigma of a step without odometry (zero motion)");
 	writeDegrees(c, s, "no_odometry_sigma_yaw_DEG", no_odometry_sigma_yaw,

@@ -13,6 +13,19 @@ double seconds(mrpt::Clock::time_point a, mrpt::Clock::time_point b)
 {
 	return std::chrono::duration<double>(b - a).count();
 }
+
+/** a (+) s * (b (-) a) with s = (t - t_a) / (t_b - t_a): constant velocity
+ * through the readings a and b (s > 1 continues past b). */
+mrpt::poses::CPose2D constantVelocity(
+	const std::pair<mrpt::Clock::time_point, mrpt::poses::CPose2D>& a,
+	const std::pair<mrpt::Clock::time_point, mrpt::poses::CPose2D>& b,
+	mrpt::Clock::time_point t)
+{
+	const double s = seconds(a.first, t) / seconds(a.first, b.first);
+	const mrpt::poses::CPose2D d = b.second - a.second;
+	return a.second +
+		mrpt::poses::CPose2D(s * d.x(), s * d.y(), s * mrpt::math::wrapToPi(d.phi()));
+}
 }  // namespace
 
 void OdometryTimeline::add(
@@ -43,15 +56,7 @@ std::optional<mrpt::poses::CPose2D> OdometryTimeline::poseAt(
 		const auto& a = *std::prev(after);
 		const auto& b = *after;
 		const double span = seconds(a.first, b.first);
-		if (span <= maxGap && span > 0)
-		{
-			// a (+) s * (b (-) a): constant velocity between the readings.
-			const double s = seconds(a.first, t) / span;
-			const mrpt::poses::CPose2D d = b.second - a.second;
-			return a.second +
-				mrpt::poses::CPose2D(
-					   s * d.x(), s * d.y(), s * mrpt::math::wrapToPi(d.phi()));
-		}
+		if (span <= maxGap && span > 0) return constantVelocity(a, b, t);
 	}
 	std::optional<mrpt::poses::CPose2D> best;
 	double bestDt = maxGap;
@@ -72,9 +77,20 @@ std::optional<mrpt::poses::CPose2D> OdometryTimeline::poseAt(
 	return best;
 }
 
+std::optional<mrpt::poses::CPose2D> OdometryTimeline::extrapolatedAt(
+	mrpt::Clock::time_point t, double maxGap, double maxAhead) const
+{
+	if (m_readings.size() < 2 || t <= m_readings.back().first) return std::nullopt;
+	const auto& a = m_readings[m_readings.size() - 2];
+	const auto& b = m_readings.back();
+	const double span = seconds(a.first, b.first);
+	if (span <= 0 || span > maxGap || seconds(b.first, t) > maxAhead) return std::nullopt;
+	return constantVelocity(a, b, t);
+}
+
 void OdometryTimeline::forgetBefore(mrpt::Clock::time_point t)
 {
-	while (m_readings.size() > 1 && m_readings[1].first <= t)
+	while (m_readings.size() > 2 && m_readings[2].first <= t)
 		m_readings.pop_front();
 }
 }  // namespace featloc

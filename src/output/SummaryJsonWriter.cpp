@@ -29,6 +29,7 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"odometry_readings", s.odometryReadings},
 		{"odometry_actions", s.odometryActions},
 		{"steps_without_odometry", s.stepsWithoutOdometry},
+		{"steps_with_extrapolated_odometry", s.stepsWithExtrapolatedOdometry},
 		{"landmark_observations", s.landmarkObservations},
 		{"landmarks_in_map", s.landmarksInMap},
 		{"invalidated_beams", s.invalidatedBeams},

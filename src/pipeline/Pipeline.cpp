@@ -27,6 +27,7 @@ void copyAssemblerStats(const StepAssembler& a, RunStats& s)
 	s.odometryReadings = a.odometryReadings();
 	s.odometryActions = a.odometryActions();
 	s.stepsWithoutOdometry = a.stepsWithoutOdometry();
+	s.stepsWithExtrapolatedOdometry = a.stepsWithExtrapolatedOdometry();
 	s.landmarkObservations = a.landmarkObservations();
 	s.ignoredObservations = a.ignoredObservations();
 }

@@ -92,6 +92,10 @@ void StepAssembler::push(
 	else if (auto o = std::dynamic_pointer_cast<CObservation>(entry.object))
 	{
 		onObservation(o, entry.index, false, used);
+		// A scan that can take extrapolated odometry goes now: what could
+		// still join its frame (another sensor at the very same time) is
+		// rare, and waiting for it is what max_extrapolation is to avoid.
+		if (m_open && m_open->step.scan && canExtrapolateTo(m_open->step.time)) closeFrame();
 	}
 	else if (entry.object)
 	{
@@ -269,7 +273,8 @@ void StepAssembler::release(bool endOfLog, std::vector<EstimationStep>& ready)
 		const auto t = p.step.time;
 		const bool odometryStopped =
 			m_lastStepTime && seconds(t, *m_lastStepTime) > m_odo.max_interpolation_gap;
-		if (!(endOfLog || p.fromActions || m_timeline.covers(t) || odometryStopped))
+		if (!(endOfLog || p.fromActions || m_timeline.covers(t) || odometryStopped ||
+				canExtrapolateTo(t)))
 			break;	// wait for an odometry reading at or after t
 
 		completeFromTimeline(p.step);
@@ -289,9 +294,22 @@ void StepAssembler::release(bool endOfLog, std::vector<EstimationStep>& ready)
 	}
 }
 
+bool StepAssembler::canExtrapolateTo(mrpt::Clock::time_point t) const
+{
+	return m_odo.max_extrapolation > 0 && !m_timeline.covers(t) &&
+		m_timeline.extrapolatedAt(t, m_odo.max_interpolation_gap, m_odo.max_extrapolation);
+}
+
 void StepAssembler::completeFromTimeline(EstimationStep& step)
 {
-	const auto odo = m_timeline.poseAt(step.time, m_odo.max_interpolation_gap);
+	std::optional<mrpt::poses::CPose2D> odo;
+	if (!m_timeline.covers(step.time))
+		odo = m_timeline.extrapolatedAt(
+			step.time, m_odo.max_interpolation_gap, m_odo.max_extrapolation);
+	if (odo)
+		m_stepsExtrapolated++;
+	else
+		odo = m_timeline.poseAt(step.time, m_odo.max_interpolation_gap);
 	if (!step.hasOdometry && odo && m_prevStepOdometry)
 	{
 		step.odometry = m_odo.model.incrementPdf(*odo - *m_prevStepOdometry);

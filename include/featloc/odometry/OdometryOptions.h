@@ -28,6 +28,14 @@ struct OdometryOptions : public mrpt::config::CLoadableOptions
 	 * odometry. */
 	double max_interpolation_gap = 0.5;
 
+	/** Format #2: a scan up to this long [s] after the newest odometry
+	 * reading takes the last two readings' motion continued at constant
+	 * velocity, instead of waiting for a reading after it (0: always wait
+	 * and interpolate). Live runs: the pose does not wait for the next
+	 * reading (one reading period, 10 ms at 100 Hz); decided on the
+	 * sequence of entries alone, so a replay of live.rawlog does the same. */
+	double max_extrapolation = 0;
+
 	/** Prior for a step without odometry: zero motion with these standard
 	 * deviations. */
 	double no_odometry_sigma_xy = 1.0;	//!< [m]

@@ -29,8 +29,16 @@ class OdometryTimeline
 	std::optional<mrpt::poses::CPose2D> poseAt(
 		mrpt::Clock::time_point t, double maxGap) const;
 
-	/** Forgets readings no longer needed for times >= t (keeps the last one
-	 * before t). */
+	/** Odometry pose at `t`, after the newest reading by at most
+	 * `maxAhead` seconds: the last two readings' motion continued at
+	 * constant velocity (they must be at most `maxGap` apart), so a live
+	 * step need not wait for the next reading. Nothing when `t` is not
+	 * after the newest reading or is too far after it. */
+	std::optional<mrpt::poses::CPose2D> extrapolatedAt(
+		mrpt::Clock::time_point t, double maxGap, double maxAhead) const;
+
+	/** Forgets readings no longer needed for times >= t (keeps the last two
+	 * before t: extrapolatedAt needs them). */
 	void forgetBefore(mrpt::Clock::time_point t);
 
    private:

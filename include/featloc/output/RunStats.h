@@ -31,6 +31,7 @@ struct RunStats
 	size_t odometryReadings = 0;  //!< CObservationOdometry (format #2)
 	size_t odometryActions = 0;	 //!< CActionRobotMovement2D (format #1)
 	size_t stepsWithoutOdometry = 0;
+	size_t stepsWithExtrapolatedOdometry = 0;  //!< [Odometry] max_extrapolation
 	size_t landmarkObservations = 0;  //!< CObservationBearingRange read
 	/** Observations (and actions) of classes no handler takes, per class. */
 	std::map<std::string, size_t> ignoredObservations;

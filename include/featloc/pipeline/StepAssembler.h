@@ -77,6 +77,8 @@ class StepAssembler
 	size_t odometryReadings() const { return m_odometryReadings; }
 	size_t odometryActions() const { return m_actions; }
 	size_t stepsWithoutOdometry() const { return m_stepsWithoutOdometry; }
+	/** Steps whose odometry was extrapolated ([Odometry] max_extrapolation). */
+	size_t stepsWithExtrapolatedOdometry() const { return m_stepsExtrapolated; }
 	size_t landmarkObservations() const;
 	/** Observations of classes no handler takes, per class name. */
 	const std::map<std::string, size_t>& ignoredObservations() const { return m_ignored; }
@@ -100,6 +102,8 @@ class StepAssembler
 	void closeFrame();
 	void onAction(const mrpt::serialization::CSerializable::Ptr& action);
 	void release(bool endOfLog, std::vector<EstimationStep>& ready);
+	/** [Odometry] max_extrapolation allows odometry at t from the readings so far. */
+	bool canExtrapolateTo(mrpt::Clock::time_point t) const;
 	void completeFromTimeline(EstimationStep& step);
 	mrpt::poses::CPosePDFGaussian noOdometryPrior() const;
 
@@ -126,7 +130,8 @@ class StepAssembler
 	// Format #2: odometry pose at the previous released step.
 	std::optional<mrpt::poses::CPose2D> m_prevStepOdometry;
 
-	size_t m_odometryReadings = 0, m_actions = 0, m_stepsWithoutOdometry = 0;
+	size_t m_odometryReadings = 0, m_actions = 0, m_stepsWithoutOdometry = 0,
+		m_stepsExtrapolated = 0;
 	std::map<std::string, size_t> m_ignored, m_perClass;
 };
 }  // namespace featloc
