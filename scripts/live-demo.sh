@@ -4,15 +4,17 @@
 # (default 20), then featloc-run replays the recording. Prints the live
 # run's pose latency and ATE and the replay's ATE (doc/benchmarks.md,
 # "Live run against the emulator"). Needs a build (scripts/test.sh).
+# WORLD=FILE serves another world (default worlds/office.ini).
 # LIVE_CPU=N pins featloc-live (all its threads) to core N with taskset,
 # the emulator running on the other cores: "keeps up on one core".
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BIN="$ROOT/build/bin"
 SECS="${1:-20}"
+shift $(( $# > 0 ? 1 : 0 ))  # the rest: featloc-live options (--set ...), for the replay too
 OUT="${OUT:-/tmp/featloc-live-demo}"
 rm -rf "$OUT" && mkdir -p "$OUT"
-"$BIN/featloc-sim" "$ROOT/worlds/office.ini" --out "$OUT/emu" --serve -q \
+"$BIN/featloc-sim" "${WORLD:-$ROOT/worlds/office.ini}" --out "$OUT/emu" --serve -q \
   --set Laser:preset=hokuyo_utm30lx --set Laser:rate=40 --set Odometry:rate=100 \
   --set Simulation:duration=$((SECS + 30)) > "$OUT/emulator.txt" 2>&1 &
 emu=$!
@@ -24,10 +26,10 @@ if [ -n "${LIVE_CPU:-}" ]; then
   taskset -pc "$(( LIVE_CPU == 0 ? 1 : 0 ))" $emu > /dev/null  # the emulator elsewhere
 fi
 "${PIN[@]}" "$BIN/featloc-live" "$ROOT/configs/live-emulator.ini" --out "$OUT/live" --duration "$SECS" \
-  --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" --set Live:status_period=5
+  --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" --set Live:status_period=5 "$@"
 kill -TERM $emu; wait $emu || true; trap - EXIT
 "$BIN/featloc-run" "$ROOT/configs/live-emulator.ini" "$OUT/live/live.rawlog" -q \
-  --out "$OUT/replay" --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" > "$OUT/replay.txt"
+  --out "$OUT/replay" --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" "$@" > "$OUT/replay.txt"
 echo "--- replay of live.rawlog with featloc-run:"
 grep -E "ATE translation|matches:" "$OUT/replay.txt"
 if diff -q <(grep -v '^#' "$OUT/live/trajectory.tum") <(grep -v '^#' "$OUT/replay/trajectory.tum") > /dev/null; then

@@ -3,6 +3,7 @@
 #include <mrpt/core/Clock.h>
 #include <mrpt/obs/CObservation.h>
 
+#include <algorithm>
 #include <thread>
 
 #include "featloc/config/TrackedConfig.h"
@@ -144,20 +145,22 @@ void LiveSource::noteRestartsAndSilences(Clock::time_point now)
 	}
 }
 
-bool LiveSource::releasable(const Pending& p, Clock::time_point now) const
+double LiveSource::waitBeforeRelease(const Pending& p, Clock::time_point now) const
 {
-	if (secondsBetween(p.arrival.arrival, now) >= m_options.max_wait) return true;
+	const double maxWaitLeft = m_options.max_wait - secondsBetween(p.arrival.arrival, now);
+	if (maxWaitLeft <= 0) return 0;
 	const double wallNow = mrpt::Clock::toDouble(mrpt::Clock::now());
+	double wait = 0;
 	for (size_t s = 0; s < m_latest.size(); s++)
 	{
 		if (s == p.arrival.sensor || (m_latest[s] && *m_latest[s] >= p.t)) continue;
 		// Nothing sent later by s yet; but what s sends from now on is
 		// stamped at least wallNow - its largest delay so far (arrival -
 		// stamp), so once that passes p.t nothing older can come.
-		if (m_maxDelay[s] && wallNow - *m_maxDelay[s] - kDelayMargin > p.t) continue;
-		return false;
+		if (!m_maxDelay[s]) return maxWaitLeft;	// s has sent nothing yet
+		wait = std::max(wait, p.t + *m_maxDelay[s] + kDelayMargin - wallNow);
 	}
-	return true;
+	return std::min(wait, maxWaitLeft);
 }
 
 bool LiveSource::stopping()
@@ -230,9 +233,12 @@ bool LiveSource::next(RawlogEntry& entry)
 			continue;
 		}
 		const auto now = Clock::now();
-		if (!m_sensorsStopped && !releasable(m_pending.top(), now))
+		if (const double wait = m_sensorsStopped ? 0 : waitBeforeRelease(m_pending.top(), now);
+			wait > 0)
 		{
-			m_arrived.wait_for(lock, std::chrono::milliseconds(2));
+			// Until it can go, an arrival, or the next look at the drivers.
+			m_arrived.wait_for(lock, std::chrono::duration<double>(
+				std::min(wait, kSupervisionPeriod)));
 			continue;
 		}
 		Pending p = m_pending.top();

@@ -94,7 +94,9 @@ class LiveSource : public EntrySource
 		}
 	};
 	void onArrival(LiveSensor::Arrival a);
-	bool releasable(const Pending& p, std::chrono::steady_clock::time_point now) const;
+	/** 0 when p can be passed on now, else how long [s] until it can be
+	 * unless another observation arrives first. */
+	double waitBeforeRelease(const Pending& p, std::chrono::steady_clock::time_point now) const;
 	bool stopping();
 	void stopSensors();
 	/** Every kSupervisionPeriod: frees or replaces drivers stuck in a call
