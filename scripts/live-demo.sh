@@ -4,7 +4,9 @@
 # (default 20), then featloc-run replays the recording. Prints the live
 # run's pose latency and ATE and the replay's ATE (doc/benchmarks.md,
 # "Live run against the emulator"). Needs a build (scripts/test.sh).
-# WORLD=FILE serves another world (default worlds/office.ini).
+# WORLD=FILE serves another world (default worlds/office.ini); EMULATOR_ARGS
+# adds featloc-sim options (e.g. "--odometry-port 0": a robot without
+# odometry, with --set Live:sensors=LASER).
 # LIVE_CPU=N pins featloc-live (all its threads) to core N with taskset,
 # the emulator running on the other cores: "keeps up on one core".
 set -euo pipefail
@@ -16,7 +18,7 @@ OUT="${OUT:-/tmp/featloc-live-demo}"
 rm -rf "$OUT" && mkdir -p "$OUT"
 "$BIN/featloc-sim" "${WORLD:-$ROOT/worlds/office.ini}" --out "$OUT/emu" --serve -q \
   --set Laser:preset=hokuyo_utm30lx --set Laser:rate=40 --set Odometry:rate=100 \
-  --set Simulation:duration=$((SECS + 30)) > "$OUT/emulator.txt" 2>&1 &
+  --set Simulation:duration=$((SECS + 30)) ${EMULATOR_ARGS:-} > "$OUT/emulator.txt" 2>&1 &
 emu=$!
 trap 'kill -TERM $emu 2>/dev/null || true' EXIT
 sleep 0.5

@@ -4,6 +4,7 @@
 #include <mrpt/obs/CObservationRobotPose.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -26,6 +27,7 @@ using featloc::test::runCommand;
 using featloc::test::shellQuote;
 using featloc::test::TempDir;
 using featloc::test::TestRawlog;
+using mrpt::poses::CPose2D;
 
 namespace
 {
@@ -235,6 +237,49 @@ TEST(FeatlocRun, Format2LogWithExactGroundTruth)
 	EXPECT_FALSE(std::filesystem::exists(dir.file("out/map.3Dscene")));
 	const auto [poses, entries] = countPoses(dir.file("out/estimated.rawlog"), "featloc_estimate");
 	EXPECT_EQ(poses, 40u);
+}
+
+TEST(FeatlocRun, WithoutOdometryTheGuessIsTheEstimatesRecentVelocity)
+{
+	registerClasses();
+	TempDir dir;
+	TestRawlog log;
+	log.scans = 40;
+	log.observationsOnly = true;
+	log.odometry = false;
+	// A wheeled robot on an arc of 2.2 m at 1.32 m/s and 34 deg/s: 13 cm
+	// and 3.4 deg between scans 0.1 s apart.
+	log.path = [](double t) {
+		const double w = 0.6, r = 2.2;
+		return CPose2D(-0.8 + r * std::sin(w * t), 0.3 - r * std::cos(w * t), w * t);
+	};
+	log.write(dir.file("noodo.rawlog"));
+	auto run = [&](const std::string& prior) {
+		const std::string out = dir.file("out-" + prior);
+		const CommandResult r = featlocRun(shellQuote(kConfig) + " " +
+			shellQuote(dir.file("noodo.rawlog")) + " --out " + shellQuote(out) +
+			" --set Odometry:no_odometry_prior=" + prior + " --set Output:write_scene=false");
+		EXPECT_EQ(r.exitCode, 0) << r.output;
+		return out;
+	};
+	// Median distance between the matcher's guess and its estimate.
+	auto guessOff = [](const std::string& out) {
+		std::vector<double> d;
+		for (const auto& row : MatchTableFile::read(out + "/matches.txt"))
+			d.push_back(std::hypot(row.guess.x - row.estimate.x, row.guess.y - row.estimate.y));
+		std::sort(d.begin(), d.end());
+		return d.empty() ? 1e9 : d[d.size() / 2];
+	};
+	const std::string zero = run("zero"), velocity = run("constant_velocity");
+	const auto s = readJson(velocity + "/summary.json");
+	EXPECT_EQ(s["counts"]["steps_without_odometry"], 39);
+	// The window (0.5 s) fills after 5 scans: from then on every step.
+	EXPECT_GE(s["counts"]["steps_with_constant_velocity_prior"].get<int>(), 33);
+	EXPECT_EQ(readJson(zero + "/summary.json")["counts"]["steps_with_constant_velocity_prior"], 0);
+	// Zero motion guesses the 13 cm step wrong by 13 cm; the velocity
+	// guesses it to well under a centimetre (exact scans, constant twist).
+	EXPECT_GT(guessOff(zero), 0.10);
+	EXPECT_LT(guessOff(velocity), 0.01);
 }
 
 TEST(FeatlocRun, BadInputGivesAClearMessageAndNonZeroExit)

@@ -68,8 +68,9 @@ void RunReport::printSummary(const RunStats& s)
 			"  %.1f s of log in %.2f s (%.1fx real time, everything included)\n",
 			s.logSeconds, s.wallTime, s.logSeconds / s.wallTime);
 	if (s.stepsWithoutOdometry)
-		std::printf(
-			"  %zu steps had no odometry (zero-motion prior used)\n", s.stepsWithoutOdometry);
+		std::printf("  %zu steps had no odometry (%zu moved at the estimate's recent velocity, "
+					"the others not at all: [Odometry] no_odometry_prior)\n",
+			s.stepsWithoutOdometry, s.stepsWithVelocityPrior);
 	if (s.stepsWithExtrapolatedOdometry)
 		std::printf("  %zu steps extrapolated the odometry past its newest reading "
 					"([Odometry] max_extrapolation)\n",

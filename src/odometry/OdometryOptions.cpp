@@ -12,6 +12,9 @@ void OdometryOptions::loadFromConfigFile(
 	model.loadFromConfigFile(c, s);
 	read(c, s, "max_interpolation_gap", max_interpolation_gap);
 	read(c, s, "max_extrapolation", max_extrapolation);
+	readChoice(c, s, "no_odometry_prior", no_odometry_prior, {"constant_velocity", "zero"});
+	read(c, s, "no_odometry_velocity_window", no_odometry_velocity_window);
+	require(no_odometry_velocity_window > 0, c, s, "no_odometry_velocity_window", "> 0");
 	read(c, s, "no_odometry_sigma_xy", no_odometry_sigma_xy);
 	readDegrees(c, s, "no_odometry_sigma_yaw_DEG", no_odometry_sigma_yaw);
 	read(c, s, "action_sampling_offset", action_sampling_offset);
@@ -40,8 +43,12 @@ void OdometryOptions::saveToConfigFile(
 		"[s] format #2: max gap between odometry readings to interpolate");
 	write(c, s, "max_extrapolation", max_extrapolation,
 		"[s] format #2: a scan this close after the newest reading extrapolates it rather than wait for the next (live runs; 0: always wait)");
+	write(c, s, "no_odometry_prior", no_odometry_prior,
+		"constant_velocity | zero: motion of a step without odometry (the estimate's recent velocity, or none)");
+	write(c, s, "no_odometry_velocity_window", no_odometry_velocity_window,
+		"[s] constant_velocity: the velocity is the estimate's over this long");
 	write(c, s, "no_odometry_sigma_xy", no_odometry_sigma_xy,
-		"[m] prior sigma of a step without odometry (zero motion)");
+		"[m] prior sigma of a step without odometry");
 	writeDegrees(c, s, "no_odometry_sigma_yaw_DEG", no_odometry_sigma_yaw,
 		"[deg] prior yaw sigma of a step without odometry");
 	write(c, s, "action_sampling_offset", action_sampling_offset,

@@ -30,6 +30,7 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"odometry_actions", s.odometryActions},
 		{"steps_without_odometry", s.stepsWithoutOdometry},
 		{"steps_with_extrapolated_odometry", s.stepsWithExtrapolatedOdometry},
+		{"steps_with_constant_velocity_prior", s.stepsWithVelocityPrior},
 		{"landmark_observations", s.landmarkObservations},
 		{"landmarks_in_map", s.landmarksInMap},
 		{"invalidated_beams", s.invalidatedBeams},

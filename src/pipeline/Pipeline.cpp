@@ -106,6 +106,7 @@ RunStats Pipeline::run(
 	m_keyframeScan.reset();
 	m_odometryCheck = OdometryCovarianceCheck(
 		m_odometry.covariance_check_window, m_odometry.covariance_check_quantile);
+	m_velocityPrior = ConstantVelocityPrior(m_odometry.no_odometry_velocity_window);
 
 	std::unique_ptr<StepAssembler> assembler;
 	const StereoImagesHandler* stereo = nullptr;  // owned by the assembler
@@ -226,7 +227,17 @@ void Pipeline::processStep(
 {
 	// The step as the estimator sees it: the odometry covariance times the
 	// check's factor (1 while the log's covariance agrees with the matches).
-	EstimationStep step = logStep;
+	// A step without odometry moves as the estimate has lately (its
+	// covariance stays the no_odometry_* prior's).
+	EstimationStep withPrior = logStep;
+	if (!logStep.hasOdometry && logStep.index > 0 &&
+		m_odometry.no_odometry_prior == "constant_velocity")
+		if (const auto motion = m_velocityPrior.motionTo(logStep.time))
+		{
+			withPrior.odometry.mean = *motion;
+			stats.stepsWithVelocityPrior++;
+		}
+	EstimationStep step = withPrior;
 	step.odometry.cov *= m_odometryCheck.scale();
 	if (m_odometry.action_sampling_offset && step.odometryFromActions)
 		step.odometrySamplingCovariance = OdometrySamplingOffset::ofReading(step.odometry.mean);
@@ -238,7 +249,7 @@ void Pipeline::processStep(
 		m_estimator->start(m_options.initialPose(), step);
 	else
 	{
-		m_odometrySinceKeyframe += logStep.odometry;
+		m_odometrySinceKeyframe += withPrior.odometry;
 		if (m_estimator->usesScanMatcher() && step.scan && m_keyframeScan)
 		{
 			match = matchToKeyframe(step);
@@ -274,7 +285,11 @@ void Pipeline::processStep(
 	if (m_mapLocalizer)
 	{
 		inMap = localizeInMap(step, stats);
-		if (inMap.event == "found") m_keyframeScan.reset();	 // the estimator restarted
+		if (inMap.event == "found")	 // the estimator restarted
+		{
+			m_keyframeScan.reset();
+			m_velocityPrior.clear();
+		}
 	}
 	const bool keyframe = step.scan && (!m_keyframeScan || isNewKeyframe(matchPtr));
 	if (keyframe)
@@ -293,6 +308,7 @@ void Pipeline::processStep(
 		stats.odometryDirectionOffsetDeg =
 			std::make_pair(mrpt::RAD2DEG(b->first), mrpt::RAD2DEG(b->second));
 	if (stats.steps == 1) m_firstStepTime = step.time;
+	m_velocityPrior.add(step.time, m_estimator->pose().mean);
 	stats.logSeconds = std::chrono::duration<double>(step.time - m_firstStepTime).count();
 	const std::vector<EstimatedLandmark> landmarks = m_estimator->landmarks();
 	stats.landmarksInMap = landmarks.size();

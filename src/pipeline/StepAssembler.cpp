@@ -92,10 +92,13 @@ void StepAssembler::push(
 	else if (auto o = std::dynamic_pointer_cast<CObservation>(entry.object))
 	{
 		onObservation(o, entry.index, false, used);
-		// A scan that can take extrapolated odometry goes now: what could
-		// still join its frame (another sensor at the very same time) is
-		// rare, and waiting for it is what max_extrapolation is to avoid.
-		if (m_open && m_open->step.scan && canExtrapolateTo(m_open->step.time)) closeFrame();
+		// A scan that can go without another reading (extrapolated odometry,
+		// or no odometry at all so far) goes now: what could still join its
+		// frame (another sensor at the very same time) is rare, and a live
+		// pose would wait for the next entry.
+		if (m_open && m_open->step.scan &&
+			(m_odometryReadings == 0 || canExtrapolateTo(m_open->step.time)))
+			closeFrame();
 	}
 	else if (entry.object)
 	{
@@ -273,8 +276,11 @@ void StepAssembler::release(bool endOfLog, std::vector<EstimationStep>& ready)
 		const auto t = p.step.time;
 		const bool odometryStopped =
 			m_lastStepTime && seconds(t, *m_lastStepTime) > m_odo.max_interpolation_gap;
+		// No reading yet: a source without odometry (a live run with only a
+		// laser) must not hold every step max_interpolation_gap.
+		const bool noOdometrySoFar = m_odometryReadings == 0;
 		if (!(endOfLog || p.fromActions || m_timeline.covers(t) || odometryStopped ||
-				canExtrapolateTo(t)))
+				noOdometrySoFar || canExtrapolateTo(t)))
 			break;	// wait for an odometry reading at or after t
 
 		completeFromTimeline(p.step);

@@ -39,7 +39,7 @@ std::vector<double> TestRawlog::write(const std::string& file) const
 
 		if (observationsOnly)
 		{
-			for (; nextOdo <= t; nextOdo += odoPeriod)
+			for (; odometry && nextOdo <= t; nextOdo += odoPeriod)
 			{
 				CObservationOdometry odo;
 				odo.sensorLabel = "ODOMETRY";
@@ -72,7 +72,7 @@ std::vector<double> TestRawlog::write(const std::string& file) const
 	if (observationsOnly && scans > 0)
 	{
 		const double tEnd = scanPeriod * static_cast<double>(scans);
-		for (; nextOdo <= tEnd; nextOdo += odoPeriod)
+		for (; odometry && nextOdo <= tEnd; nextOdo += odoPeriod)
 		{
 			CObservationOdometry odo;
 			odo.sensorLabel = "ODOMETRY";

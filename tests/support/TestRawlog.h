@@ -19,6 +19,8 @@ struct TestRawlog
 	/** Format #2: odometry readings per scan period (not synchronised with
 	 * the scans: they start half a period before the first scan). */
 	size_t odometryPerScan = 3;
+	/** Format #2: false writes the scans alone (a robot without odometry). */
+	bool odometry = true;
 	std::string laserLabel = "LASER";
 	/** Robot pose at time t (seconds after t0). */
 	std::function<mrpt::poses::CPose2D(double)> path = [](double t) {

@@ -37,7 +37,9 @@ struct EstimationStep
 	const mrpt::obs::CObservation* source = nullptr;
 	/** False for the first step, and when no odometry covers this step:
 	 * then `odometry` is zero motion with the [Odometry] no_odometry_*
-	 * sigmas (identity with zero covariance for the first step). */
+	 * sigmas (identity with zero covariance for the first step); the
+	 * Pipeline replaces that motion by the estimate's recent velocity
+	 * (no_odometry_prior = constant_velocity). */
 	bool hasOdometry = false;
 	/** Robot motion from the previous step to this one (robot frame of the
 	 * previous step), with covariance. */

@@ -36,8 +36,12 @@ struct OdometryOptions : public mrpt::config::CLoadableOptions
 	 * sequence of entries alone, so a replay of live.rawlog does the same. */
 	double max_extrapolation = 0;
 
-	/** Prior for a step without odometry: zero motion with these standard
-	 * deviations. */
+	/** Prior for a step without odometry: "constant_velocity", the
+	 * estimate's velocity over the last no_odometry_velocity_window seconds
+	 * continued (ConstantVelocityPrior; zero motion until the window has
+	 * poses), or "zero" motion; with these standard deviations. */
+	std::string no_odometry_prior = "constant_velocity";
+	double no_odometry_velocity_window = 0.5;  //!< [s]
 	double no_odometry_sigma_xy = 1.0;	//!< [m]
 	double no_odometry_sigma_yaw = mrpt::DEG2RAD(30.0);	//!< [rad]
 

@@ -32,6 +32,9 @@ struct RunStats
 	size_t odometryActions = 0;	 //!< CActionRobotMovement2D (format #1)
 	size_t stepsWithoutOdometry = 0;
 	size_t stepsWithExtrapolatedOdometry = 0;  //!< [Odometry] max_extrapolation
+	/** Steps without odometry that moved at the estimate's recent velocity
+	 * ([Odometry] no_odometry_prior = constant_velocity). */
+	size_t stepsWithVelocityPrior = 0;
 	size_t landmarkObservations = 0;  //!< CObservationBearingRange read
 	/** Observations (and actions) of classes no handler takes, per class. */
 	std::map<std::string, size_t> ignoredObservations;

@@ -8,6 +8,7 @@
 #include "featloc/io/InputOptions.h"
 #include "featloc/localization/MapLocalizer.h"
 #include "featloc/matchers/ScanMatcher.h"
+#include "featloc/odometry/ConstantVelocityPrior.h"
 #include "featloc/odometry/OdometryCovarianceCheck.h"
 #include "featloc/odometry/OdometryOptions.h"
 #include "featloc/output/RunOutput.h"
@@ -82,6 +83,8 @@ class Pipeline
 	 * otherwise), for OdometrySamplingOffset. */
 	mrpt::poses::CPose2D m_keyframeActionStep;
 	OdometryCovarianceCheck m_odometryCheck;
+	/** Steps without odometry: the estimates' recent velocity. */
+	ConstantVelocityPrior m_velocityPrior{1.0};
 	mrpt::Clock::time_point m_firstStepTime;
 };
 }  // namespace featloc
