@@ -73,114 +73,28 @@ ScipLaserServer::Device ScipLaserServer::deviceFor(
 }
 
 ScipLaserServer::ScipLaserServer(Device device, unsigned short port, Fault fault)
-	: m_device(std::move(device)),
-	  m_port(port),
-	  m_silent(fault == Fault::Silent),
-	  m_listener(std::make_unique<LoopbackTcpServer>(port))
+	: EmulatedLaser(port, fault == Fault::Silent), m_device(std::move(device))
 {
-	m_thread = std::thread([this] { serve(); });
+	startServing();
 }
 
-ScipLaserServer::~ScipLaserServer()
-{
-	m_stop = true;
-	if (m_thread.joinable()) m_thread.join();
-}
+ScipLaserServer::~ScipLaserServer() { stopServing(); }
 
-void ScipLaserServer::setReachable(bool reachable)
-{
-	m_reachable = reachable;
-	if (reachable) return;
-	std::lock_guard<std::mutex> lock(m_mutex);
-	closeClient();	// now: nothing more is delivered (the listener follows)
-}
+void ScipLaserServer::onConnectionChange() { m_sessionScans = m_quitScans = 0; }
 
-void ScipLaserServer::closeClient()
+void ScipLaserServer::onBytes(std::string& pending)
 {
-	LoopbackTcpServer::close(m_client);
-	m_client = -1;
-	m_streaming = false;
-	m_sessionScans = m_quitScans = 0;
-}
-
-bool ScipLaserServer::send(const std::string& bytes)
-{
-	if (m_client < 0) return false;
-	if (LoopbackTcpServer::sendAll(m_client, bytes, 1000)) return true;
-	closeClient();	// a driver that is gone or does not read
-	return false;
-}
-
-void ScipLaserServer::serve()
-{
-	std::string pending;
-	while (!m_stop)
+	for (size_t lf; (lf = pending.find('\n')) != std::string::npos;)
 	{
-		bool connected = false;
-		{
-			std::lock_guard<std::mutex> lock(m_mutex);
-			connected = m_client >= 0;
-		}
-		if (!m_reachable)
-		{
-			std::lock_guard<std::mutex> lock(m_mutex);
-			closeClient();
-			m_listener.reset();	 // connections are refused
-		}
-		if (!m_listener)
-		{
-			if (m_reachable)
-			{
-				try
-				{
-					m_listener = std::make_unique<LoopbackTcpServer>(m_port);
-				}
-				catch (const std::runtime_error&)
-				{
-					// the port is not free again yet: retry
-				}
-			}
-			std::this_thread::sleep_for(std::chrono::milliseconds(10));
-			continue;
-		}
-		if (!connected)
-		{
-			const int client = m_listener->accept(50);
-			if (client < 0) continue;
-			std::lock_guard<std::mutex> lock(m_mutex);
-			m_client = client;
-			m_streaming = false;
-			m_connections++;
-			pending.clear();
-		}
-		char buf[512];
-		long n = 0;
-		{
-			std::lock_guard<std::mutex> lock(m_mutex);
-			if (m_client >= 0) n = LoopbackTcpServer::receive(m_client, buf, sizeof(buf));
-			if (n < 0)
-			{
-				closeClient();	// the driver hung up
-				continue;
-			}
-		}
-		pending.append(buf, static_cast<size_t>(n));
-		for (size_t lf; (lf = pending.find('\n')) != std::string::npos;)
-		{
-			std::string command = pending.substr(0, lf);
-			pending.erase(0, lf + 1);
-			if (!command.empty() && command.back() == '\r') command.pop_back();
-			if (!m_silent) handleCommand(command);
-		}
-		if (n == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+		std::string command = pending.substr(0, lf);
+		pending.erase(0, lf + 1);
+		if (!command.empty() && command.back() == '\r') command.pop_back();
+		handleCommand(command);
 	}
-	std::lock_guard<std::mutex> lock(m_mutex);
-	closeClient();
 }
 
 void ScipLaserServer::handleCommand(const std::string& cmd)
 {
-	std::lock_guard<std::mutex> lock(m_mutex);
 	const Device& d = m_device;
 	const std::string name = cmd.substr(0, 2);
 	if (cmd.empty())

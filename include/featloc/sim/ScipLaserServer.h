@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-#include "featloc/sim/LoopbackTcpServer.h"
+#include "featloc/sim/EmulatedLaser.h"
 
 namespace featloc
 {
@@ -28,9 +28,9 @@ namespace featloc
  * second handshake's QT are skipped by the driver while it looks for the
  * QT echo, so they are counted apart (scansDiscardedByReinit()).
  *
- * One driver at a time; a new connection replaces the old one. Faults for
- * tests: a device that accepts connections and never answers (Silent). */
-class ScipLaserServer
+ * Faults for tests: a device that accepts connections and never answers
+ * (Silent); the connection itself is EmulatedLaser's. */
+class ScipLaserServer : public EmulatedLaser
 {
    public:
 	/** What PP reports: the scanner's geometry. Beam i (AMIN..AMAX) points
@@ -51,9 +51,7 @@ class ScipLaserServer
 	/** Listens on 127.0.0.1:port. Throws std::runtime_error naming the
 	 * port when it cannot. */
 	ScipLaserServer(Device device, unsigned short port, Fault fault = Fault::None);
-	~ScipLaserServer();
-	ScipLaserServer(const ScipLaserServer&) = delete;
-	ScipLaserServer& operator=(const ScipLaserServer&) = delete;
+	~ScipLaserServer() override;
 
 	/** A Hokuyo-like device for a scan of `beams` beams over `aperture`
 	 * [rad] centred on the front (ARES = 2 pi / step, rounded; throws
@@ -61,47 +59,31 @@ class ScipLaserServer
 	 * 0.1%, since SCIP cannot describe such a scanner). */
 	static Device deviceFor(size_t beams, double aperture, double maxRange, int rate);
 
+	std::string protocol() const override { return "Hokuyo SCIP 2.0"; }
 	/** Sends one scan to the driver if it asked for data (MD); ranges in
 	 * metres, beam AMIN first; a range <= 0 or not finite is sent as
 	 * "no return" (error code 1, which the driver marks invalid).
 	 * `deviceTimeMs`: the scanner's clock. False when no driver streams. */
-	bool publish(const std::vector<float>& ranges, uint32_t deviceTimeMs);
-
-	unsigned short port() const { return m_port; }
-	size_t scansSent() const { return m_scansSent; }
+	bool publish(const std::vector<float>& ranges, uint32_t deviceTimeMs) override;
+	/** Sends, in place of a scan, a malformed one: the MD echo and status
+	 * 99, then a data block of the wrong length (CHokuyoURG reports a
+	 * hardware error). False when no driver streams. */
+	bool publishGarbage(uint32_t deviceTimeMs) override;
 	/** Scans sent in a streaming session that the driver then ended with
 	 * QT and restarted with MD on the same connection (a re-initialisation):
 	 * the driver never reads them, since it skips everything before the QT
 	 * echo. */
 	size_t scansDiscardedByReinit() const { return m_scansDiscardedByReinit; }
-	size_t connections() const { return m_connections; }
-	bool streaming() const { return m_streaming; }
-	/** Sends, in place of a scan, a malformed one: the MD echo and status
-	 * 99, then a data block of the wrong length (CHokuyoURG reports a
-	 * hardware error). False when no driver streams. */
-	bool publishGarbage(uint32_t deviceTimeMs);
-	/** false: the link drops and connections are refused (the device is
-	 * unplugged or off); true: it listens again on the same port. */
-	void setReachable(bool reachable);
-	/** true: the device hangs, link up: it sends and answers nothing. */
-	void setSilent(bool silent) { m_silent = silent; }
 
    private:
-	void serve();
-	void handleCommand(const std::string& command);
-	bool send(const std::string& bytes);  //!< under m_mutex
-	void closeClient();	 //!< under m_mutex
+	void onBytes(std::string& pending) override;
+	void onConnectionChange() override;
+	void handleCommand(const std::string& command);	 //!< with m_mutex held
 
 	Device m_device;
-	unsigned short m_port;
-	std::atomic<bool> m_stop{false}, m_streaming{false}, m_reachable{true}, m_silent{false};
-	std::atomic<size_t> m_scansSent{0}, m_connections{0}, m_scansDiscardedByReinit{0};
+	std::atomic<size_t> m_scansDiscardedByReinit{0};
 	size_t m_sessionScans = 0;	//!< sent since the last MD (under m_mutex)
 	size_t m_quitScans = 0;	 //!< sent in the session the last QT ended (under m_mutex)
-	std::mutex m_mutex;	 //!< guards m_client, m_mdEcho and writes
-	std::string m_mdEcho;  //!< the MD command being served
-	int m_client = -1;	//!< the driver's connection
-	std::unique_ptr<LoopbackTcpServer> m_listener;	//!< null while unreachable
-	std::thread m_thread;
+	std::string m_mdEcho;  //!< the MD command being served (under m_mutex)
 };
 }  // namespace featloc
