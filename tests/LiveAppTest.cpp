@@ -4,6 +4,7 @@
 // in-process.
 #include <gtest/gtest.h>
 #include <mrpt/hwdrivers/CHokuyoURG.h>
+#include <mrpt/hwdrivers/CLMS100eth.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <netinet/in.h>
@@ -24,6 +25,7 @@
 #include "featloc/live/LiveOptions.h"
 #include "featloc/sim/DeviceFault.h"
 #include "featloc/sim/ScipLaserServer.h"
+#include "featloc/sim/SickLaserServer.h"
 #include "support/LiveEmulator.h"
 #include "support/CommandRunner.h"
 #include "support/JsonFile.h"
@@ -78,13 +80,14 @@ struct Delivered
 };
 Delivered emulatorDelivered(const std::string& emulatorOutput)
 {
-	std::smatch m;
-	if (!std::regex_search(emulatorOutput, m,
-			std::regex("(\\d+) of \\d+ scans delivered \\((\\d+) of them skipped by the "
-					   "driver while it re-initialised the device\\), (\\d+) of \\d+ odometry "
-					   "readings delivered")))
-		throw std::runtime_error("no delivery line in:\n" + emulatorOutput);
-	return {std::stoul(m[1]) - std::stoul(m[2]), std::stoul(m[3])};
+	std::smatch odo, laser;
+	if (!std::regex_search(emulatorOutput, odo,
+			std::regex("(\\d+) of \\d+ odometry readings delivered")) ||
+		!std::regex_search(emulatorOutput, laser,
+			std::regex("Hokuyo: (\\d+) of them delivered \\((\\d+) skipped by the driver while "
+					   "it re-initialised the device\\)")))
+		throw std::runtime_error("no delivery lines in:\n" + emulatorOutput);
+	return {std::stoul(laser[1]) - std::stoul(laser[2]), std::stoul(odo[1])};
 }
 
 std::string readText(const std::string& file)
@@ -163,6 +166,56 @@ TEST(ScipLaserServer, MrptsHokuyoDriverReadsTheScansSent)
 	// MRPT 2.5.8 takes the aperture as beams x (2 pi / ARES): 270.25 deg
 	// for the 270 deg of 1081 beams 0.25 deg apart (doc/live.md).
 	EXPECT_NEAR(scan.aperture, 1081 * 2 * M_PI / 1440, 1e-5);
+	EXPECT_EQ(server.connections(), 1u);
+}
+
+TEST(SickLaserServer, MrptsLms100DriverReadsTheScansSent)
+{
+	const unsigned short port = freePort();
+	// What MRPT 2.5.8's CLMS100Eth asks for: 25 Hz, 0.25 deg over 270 deg.
+	const auto device = SickLaserServer::deviceFor(1081, 1.5 * M_PI, 25);
+	EXPECT_EQ(device.resolution, 2500);
+	EXPECT_EQ(device.startAngle, -450000);
+	EXPECT_EQ(device.stopAngle, 2250000);
+	SickLaserServer server(device, port);
+	mrpt::hwdrivers::CLMS100Eth driver("127.0.0.1", port);
+	const auto t0 = std::chrono::steady_clock::now();
+	driver.initialize();  // login, scan configuration, start, ready (~15 s)
+	const double initSeconds =
+		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	EXPECT_TRUE(server.configurationMismatch().empty()) << server.configurationMismatch();
+
+	std::vector<float> ranges(1081);
+	for (size_t i = 0; i < ranges.size(); i++) ranges[i] = 0.5f + 0.01f * static_cast<float>(i);
+	ranges[7] = 0;	// no return
+	mrpt::obs::CObservation2DRangeScan scan;
+	bool got = false, hwError = false;
+	server.publish(ranges, 40);
+	driver.doProcessSimple(got, scan, hwError);
+	ASSERT_TRUE(got);
+	ASSERT_FALSE(hwError);
+	EXPECT_TRUE(server.streaming());
+	ASSERT_EQ(scan.getScanSize(), 1081u);
+	for (size_t i = 0; i < ranges.size(); i++)
+		if (i != 7) EXPECT_NEAR(scan.getScanRange(i), ranges[i], 0.0006) << i;	// mm on the wire
+	// The device sends 0 for no return; MRPT 2.5.8 keeps it as a valid 0 m.
+	EXPECT_EQ(scan.getScanRange(7), 0.0f);
+	// MRPT 2.5.8 fixes the aperture at 270 deg and says the beams go left
+	// to right; the LMS1xx turns counter-clockwise, from its right
+	// (featloc-live corrects it: doc/live.md).
+	EXPECT_NEAR(scan.aperture, 1.5 * M_PI, 1e-5);
+	EXPECT_FALSE(scan.rightToLeft);
+	// The same scan again when polled before the next one, as the device.
+	driver.doProcessSimple(got, scan, hwError);
+	EXPECT_TRUE(got);
+	EXPECT_EQ(server.scansSent(), 1u);
+	EXPECT_EQ(server.scansResent(), 1u);
+	// A damaged telegram: the driver reports a hardware error.
+	server.publishGarbage(80);
+	driver.doProcessSimple(got, scan, hwError);
+	EXPECT_FALSE(got);
+	EXPECT_TRUE(hwError);
+	EXPECT_GT(initSeconds, 10.0);  // the driver's own sleeps
 	EXPECT_EQ(server.connections(), 1u);
 }
 

@@ -27,6 +27,7 @@
 #include "featloc/sim/OdometryLineServer.h"
 #include "featloc/sim/RealTimeLogPlayer.h"
 #include "featloc/sim/ScipLaserServer.h"
+#include "featloc/sim/SickLaserServer.h"
 #include "featloc/sim/Simulator.h"
 #include "featloc/sim/WorldPlot.h"
 #include "featloc/sim/WorldSceneWriter.h"
@@ -44,7 +45,7 @@ unsigned short tcpPort(unsigned value, const char* option)
 /** What --serve is told on the command line. */
 struct ServeOptions
 {
-	unsigned laserPort = 10940, odometryPort = 10950;
+	unsigned laserPort = 10940, sickPort = 0, odometryPort = 10950;
 	std::vector<DeviceFault> laserFaults;
 };
 
@@ -53,41 +54,70 @@ void serve(const SimConfiguration& sc, const std::string& rawlog,
 	const std::vector<mrpt::poses::CPose2D>& truths, const std::string& gtPath,
 	const ServeOptions& options, bool quiet)
 {
-	const unsigned laserPort = options.laserPort, odometryPort = options.odometryPort;
+	if (!options.laserPort && !options.sickPort)
+		throw UsageError("--serve needs a laser: --laser-port and --sick-port are both 0");
 	// A driver that hangs up must not kill the emulator (SIGPIPE).
 	std::signal(SIGPIPE, SIG_IGN);
 	const auto items = RealTimeLogPlayer::load(rawlog, truths);
-	const auto device = ScipLaserServer::deviceFor(sc.laser.beams, sc.laser.aperture,
-		sc.laser.max_range, static_cast<int>(std::lround(sc.laser.rate)));
-	ScipLaserServer laser(device, tcpPort(laserPort, "--laser-port"));
+	std::printf("serving %s in real time:\n", rawlog.c_str());
+	std::unique_ptr<ScipLaserServer> hokuyo;
+	std::unique_ptr<SickLaserServer> sick;
+	std::vector<EmulatedLaser*> lasers;
+	if (options.laserPort)
+	{
+		const auto device = ScipLaserServer::deviceFor(sc.laser.beams, sc.laser.aperture,
+			sc.laser.max_range, static_cast<int>(std::lround(sc.laser.rate)));
+		hokuyo = std::make_unique<ScipLaserServer>(device, tcpPort(options.laserPort, "--laser-port"));
+		lasers.push_back(hokuyo.get());
+		std::printf("  laser: Hokuyo %s, SCIP 2.0 on 127.0.0.1:%u (%d beams, ARES %d, %d rpm)\n",
+			device.model.c_str(), options.laserPort, device.amax - device.amin + 1, device.ares,
+			device.scanRpm);
+	}
+	if (options.sickPort)
+	{
+		const auto device =
+			SickLaserServer::deviceFor(sc.laser.beams, sc.laser.aperture, sc.laser.rate);
+		sick = std::make_unique<SickLaserServer>(device, tcpPort(options.sickPort, "--sick-port"));
+		lasers.push_back(sick.get());
+		std::printf("  laser: SICK LMS1xx, CoLa-A on 127.0.0.1:%u (%d beams, %.2f deg, %.0f Hz; "
+					"MRPT's CLMS100Eth takes about 15 s to set it up)\n",
+			options.sickPort, device.beams(), device.resolution / 1e4, device.frequency / 100.0);
+	}
 	std::unique_ptr<OdometryLineServer> odometry;
-	if (odometryPort)
-		odometry = std::make_unique<OdometryLineServer>(tcpPort(odometryPort, "--odometry-port"));
-	std::printf(
-		"serving %s in real time:\n  laser: Hokuyo %s, SCIP 2.0 on 127.0.0.1:%u (%d beams, "
-		"ARES %d, %d rpm)\n  odometry: %s\nwaiting for the drivers to connect...\n",
-		rawlog.c_str(), device.model.c_str(), laserPort, device.amax - device.amin + 1,
-		device.ares, device.scanRpm,
-		odometry ? ("featloc line protocol on 127.0.0.1:" + std::to_string(odometryPort)).c_str()
+	if (options.odometryPort)
+		odometry = std::make_unique<OdometryLineServer>(
+			tcpPort(options.odometryPort, "--odometry-port"));
+	std::printf("  odometry: %s\nwaiting for the drivers to connect...\n",
+		odometry ? ("featloc line protocol on 127.0.0.1:" + std::to_string(options.odometryPort)).c_str()
 				 : "none");
 	std::fflush(stdout);
 	InterruptSignals signals;
-	RealTimeLogPlayer player(laser, odometry.get(), gtPath);
+	RealTimeLogPlayer player(lasers, odometry.get(), gtPath);
 	player.setLaserFaults(options.laserFaults);
 	for (const auto& f : options.laserFaults)
 		std::printf("  laser fault to inject: %s\n", f.describe().c_str());
 	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
 	const auto r = player.play(items, &signals.flag(), [&](double f) {
-		if (!quiet) progress.update(f, laser.scansSent());
+		if (!quiet) progress.update(f, lasers.front()->scansSent());
 	});
-	if (!quiet) progress.done(laser.scansSent());
-	std::printf(
-		"%s after %.1f s: %zu of %zu scans delivered (%zu of them skipped by the driver "
-		"while it re-initialised the device), %zu of %zu odometry readings delivered; %zu "
-		"laser connections, %zu faults injected\n  truth: %s\n",
-		r.stopped ? "stopped" : "log served", r.seconds, r.scansDelivered, r.scans,
-		laser.scansDiscardedByReinit(), r.readingsDelivered, r.readings, laser.connections(),
-		r.faultsInjected, gtPath.c_str());
+	if (!quiet) progress.done(lasers.front()->scansSent());
+	std::printf("%s after %.1f s: %zu scans, %zu of %zu odometry readings delivered; %zu faults "
+				"injected\n",
+		r.stopped ? "stopped" : "log served", r.seconds, r.scans, r.readingsDelivered, r.readings,
+		r.faultsInjected);
+	if (hokuyo)
+		std::printf("  Hokuyo: %zu of them delivered (%zu skipped by the driver while it "
+					"re-initialised the device), %zu connections\n",
+			hokuyo->scansSent(), hokuyo->scansDiscardedByReinit(), hokuyo->connections());
+	if (sick)
+	{
+		std::printf("  SICK: %zu of them polled by the driver, %zu polls answered with a scan "
+					"sent already, %zu connections\n",
+			sick->scansSent(), sick->scansResent(), sick->connections());
+		if (!sick->configurationMismatch().empty())
+			std::printf("  SICK: %s\n", sick->configurationMismatch().c_str());
+	}
+	std::printf("  truth: %s\n", gtPath.c_str());
 }
 }  // namespace
 
@@ -116,8 +146,14 @@ int SimApp::main(int argc, char** argv)
 		"writes PREFIX.served.gt.txt, the truth on this computer's clock. Forces "
 		"[Simulation] format = 2. Ctrl-C stops.",
 		cmd);
-	TCLAP::ValueArg<unsigned> argLaserPort(
-		"", "laser-port", "--serve: the laser's TCP port", false, 10940, "PORT", cmd);
+	TCLAP::ValueArg<unsigned> argLaserPort("", "laser-port",
+		"--serve: the Hokuyo's TCP port (0: no Hokuyo, with --sick-port)", false, 10940, "PORT",
+		cmd);
+	TCLAP::ValueArg<unsigned> argSickPort("", "sick-port",
+		"--serve: also serve the laser as a SICK LMS1xx in CoLa-A on this TCP port (MRPT's "
+		"CLMS100Eth with ip_address/TCP_port; it asks for 1081 beams over 270 deg at 25 Hz); "
+		"0: none",
+		false, 0, "PORT", cmd);
 	TCLAP::ValueArg<unsigned> argOdometryPort("", "odometry-port",
 		"--serve: the odometry's TCP port (0: a robot without odometry)", false, 10950,
 		"PORT", cmd);
@@ -148,6 +184,7 @@ int SimApp::main(int argc, char** argv)
 	ServeOptions serveOptions;
 	serveOptions.laserPort = argLaserPort.getValue();
 	serveOptions.odometryPort = argOdometryPort.getValue();
+	serveOptions.sickPort = argSickPort.getValue();
 	for (const auto& spec : argLaserFault.getValue())
 	{
 		try

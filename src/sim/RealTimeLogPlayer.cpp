@@ -61,9 +61,9 @@ std::vector<RealTimeLogPlayer::Item> RealTimeLogPlayer::load(
 	return items;
 }
 
-RealTimeLogPlayer::RealTimeLogPlayer(
-	ScipLaserServer& laser, OdometryLineServer* odometry, std::string groundTruthPath)
-	: m_laser(laser), m_odometry(odometry), m_gtPath(std::move(groundTruthPath))
+RealTimeLogPlayer::RealTimeLogPlayer(std::vector<EmulatedLaser*> lasers,
+	OdometryLineServer* odometry, std::string groundTruthPath)
+	: m_lasers(std::move(lasers)), m_odometry(odometry), m_gtPath(std::move(groundTruthPath))
 {
 }
 
@@ -75,7 +75,12 @@ RealTimeLogPlayer::Result RealTimeLogPlayer::play(
 	auto stopped = [&] { return stop && stop->load(); };
 	// The device starts when its driver asks for data (and the base when
 	// its client is there), so the whole log reaches the drivers.
-	while (!stopped() && !(m_laser.streaming() && (!m_odometry || m_odometry->clients() > 0)))
+	auto allStream = [&] {
+		for (const auto* l : m_lasers)
+			if (!l->streaming()) return false;
+		return true;
+	};
+	while (!stopped() && !(allStream() && (!m_odometry || m_odometry->clients() > 0)))
 		std::this_thread::sleep_for(std::chrono::milliseconds(5));
 	std::ofstream gt(m_gtPath);
 	if (!gt) throw std::runtime_error("cannot write '" + m_gtPath + "'");
@@ -115,27 +120,30 @@ RealTimeLogPlayer::Result RealTimeLogPlayer::play(
 				{
 					begun[f] = true;
 					r.faultsInjected++;
-					if (fault.kind == DeviceFault::Kind::Outage)
-						m_laser.setReachable(false);
-					else if (fault.kind == DeviceFault::Kind::Stall)
-						m_laser.setSilent(true);
-					else
-						garbage = true;
+					for (auto* l : m_lasers)
+						if (fault.kind == DeviceFault::Kind::Outage)
+							l->setReachable(false);
+						else if (fault.kind == DeviceFault::Kind::Stall)
+							l->setSilent(true);
+					garbage = garbage || fault.kind == DeviceFault::Kind::Garbage;
 				}
 				if (begun[f] && !ended[f] && fault.kind != DeviceFault::Kind::Garbage &&
 					rel >= fault.at + fault.duration)
 				{
 					ended[f] = true;
-					if (fault.kind == DeviceFault::Kind::Outage)
-						m_laser.setReachable(true);
-					else
-						m_laser.setSilent(false);
+					for (auto* l : m_lasers)
+						if (fault.kind == DeviceFault::Kind::Outage)
+							l->setReachable(true);
+						else
+							l->setSilent(false);
 				}
 			}
-			if (garbage)
-				m_laser.publishGarbage(deviceMs);
-			else if (m_laser.publish(item.ranges, deviceMs))
-				r.scansDelivered++;
+			for (size_t l = 0; l < m_lasers.size(); l++)
+			{
+				const bool taken = garbage ? m_lasers[l]->publishGarbage(deviceMs)
+										   : m_lasers[l]->publish(item.ranges, deviceMs);
+				if (l == 0 && taken && !garbage) r.scansDelivered++;
+			}
 			gt << tumRow(wallT, item.truth) << std::flush;
 		}
 		else

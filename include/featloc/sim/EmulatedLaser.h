@@ -63,7 +63,7 @@ class EmulatedLaser
 	bool send(const std::string& bytes);  //!< with m_mutex held
 	void closeClient();	 //!< with m_mutex held
 
-	std::mutex m_mutex;	 //!< guards m_client, the subclass's session and writes
+	mutable std::mutex m_mutex;	 //!< guards m_client, the subclass's session and writes
 	int m_client = -1;	//!< the driver's connection
 	std::atomic<bool> m_streaming{false}, m_silent{false};
 	std::atomic<size_t> m_scansSent{0}, m_connections{0};

@@ -9,7 +9,7 @@
 #include "featloc/io/OdometryLine.h"
 #include "featloc/sim/DeviceFault.h"
 #include "featloc/sim/OdometryLineServer.h"
-#include "featloc/sim/ScipLaserServer.h"
+#include "featloc/sim/EmulatedLaser.h"
 
 namespace featloc
 {
@@ -35,7 +35,8 @@ class RealTimeLogPlayer
 	};
 	struct Result
 	{
-		size_t scans = 0, scansDelivered = 0;
+		size_t scans = 0;
+		size_t scansDelivered = 0;	//!< to the first laser's driver, streaming then
 		size_t readings = 0, readingsDelivered = 0;
 		size_t faultsInjected = 0;	//!< laser faults that came due
 		double seconds = 0;	 //!< wall time played
@@ -49,12 +50,14 @@ class RealTimeLogPlayer
 	static std::vector<Item> load(
 		const std::string& rawlogPath, const std::vector<mrpt::poses::CPose2D>& truths);
 
-	/** `odometry` may be null (a robot without odometry). `groundTruthPath`
-	 * is written as the scans go (TUM rows, flushed per row). */
-	RealTimeLogPlayer(
-		ScipLaserServer& laser, OdometryLineServer* odometry, std::string groundTruthPath);
+	/** Every scan goes to each of `lasers` (the same simulated scanner in
+	 * several protocols); `odometry` may be null (a robot without
+	 * odometry). `groundTruthPath` is written as the scans go (TUM rows,
+	 * flushed per row). */
+	RealTimeLogPlayer(std::vector<EmulatedLaser*> lasers, OdometryLineServer* odometry,
+		std::string groundTruthPath);
 
-	/** Faults to inject into the laser as the log plays (DeviceFault). */
+	/** Faults to inject into the lasers as the log plays (DeviceFault). */
 	void setLaserFaults(std::vector<DeviceFault> faults) { m_faults = std::move(faults); }
 
 	/** Waits until the drivers are connected and the laser streams, then
@@ -65,7 +68,7 @@ class RealTimeLogPlayer
 		const std::function<void(double)>& onProgress = {});
 
    private:
-	ScipLaserServer& m_laser;
+	std::vector<EmulatedLaser*> m_lasers;
 	OdometryLineServer* m_odometry;
 	std::string m_gtPath;
 	std::vector<DeviceFault> m_faults;
