@@ -4,6 +4,9 @@
 # (default 20), then featloc-run replays the recording. Prints the live
 # run's pose latency and ATE and the replay's ATE (doc/benchmarks.md,
 # "Live run against the emulator"). Needs a build (scripts/test.sh).
+# LIDAR=hokuyo (default) | sick | both: the laser(s) served and run (the SICK
+# LMS1xx at 25 Hz, MRPT's CLMS100Eth taking ~15 s to set it up; with both,
+# featloc matches the Hokuyo's scans and records both).
 # WORLD=FILE serves another world (default worlds/office.ini); EMULATOR_ARGS
 # adds featloc-sim options (e.g. "--odometry-port 0": a robot without
 # odometry, with --set Live:sensors=LASER).
@@ -16,8 +19,16 @@ SECS="${1:-20}"
 shift $(( $# > 0 ? 1 : 0 ))  # the rest: featloc-live options (--set ...), for the replay too
 OUT="${OUT:-/tmp/featloc-live-demo}"
 rm -rf "$OUT" && mkdir -p "$OUT"
+case "${LIDAR:-hokuyo}" in
+  hokuyo) EMU_LIDAR=(--set Laser:rate=40); LIVE_LIDAR=() ;;
+  sick) EMU_LIDAR=(--laser-port 0 --sick-port 2111 --set Laser:rate=25)
+        LIVE_LIDAR=(--set "Live:sensors=SICK ODOMETRY" --set Input:laser_label=SICK) ;;
+  both) EMU_LIDAR=(--sick-port 2111 --set Laser:rate=25)
+        LIVE_LIDAR=(--set "Live:sensors=LASER SICK ODOMETRY") ;;
+  *) echo "LIDAR must be hokuyo, sick or both" >&2; exit 2 ;;
+esac
 "$BIN/featloc-sim" "${WORLD:-$ROOT/worlds/office.ini}" --out "$OUT/emu" --serve -q \
-  --set Laser:preset=hokuyo_utm30lx --set Laser:rate=40 --set Odometry:rate=100 \
+  --set Laser:preset=hokuyo_utm30lx "${EMU_LIDAR[@]}" --set Odometry:rate=100 \
   --set Simulation:duration=$((SECS + 30)) ${EMULATOR_ARGS:-} > "$OUT/emulator.txt" 2>&1 &
 emu=$!
 trap 'kill -TERM $emu 2>/dev/null || true' EXIT
@@ -28,10 +39,12 @@ if [ -n "${LIVE_CPU:-}" ]; then
   taskset -pc "$(( LIVE_CPU == 0 ? 1 : 0 ))" $emu > /dev/null  # the emulator elsewhere
 fi
 "${PIN[@]}" "$BIN/featloc-live" "$ROOT/configs/live-emulator.ini" --out "$OUT/live" --duration "$SECS" \
-  --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" --set Live:status_period=5 "$@"
+  --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" --set Live:status_period=5 \
+  "${LIVE_LIDAR[@]}" "$@"
 kill -TERM $emu; wait $emu || true; trap - EXIT
 "$BIN/featloc-run" "$ROOT/configs/live-emulator.ini" "$OUT/live/live.rawlog" -q \
-  --out "$OUT/replay" --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" "$@" > "$OUT/replay.txt"
+  --out "$OUT/replay" --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" "${LIVE_LIDAR[@]}" "$@" \
+  > "$OUT/replay.txt"
 echo "--- replay of live.rawlog with featloc-run:"
 grep -E "ATE translation|matches:" "$OUT/replay.txt"
 if diff -q <(grep -v '^#' "$OUT/live/trajectory.tum") <(grep -v '^#' "$OUT/replay/trajectory.tum") > /dev/null; then

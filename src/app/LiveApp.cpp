@@ -19,6 +19,7 @@
 #include "featloc/app/UsageError.h"
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/eval/ErrorStats.h"
+#include "featloc/live/DriverQuirks.h"
 #include "featloc/live/LiveSource.h"
 #include "featloc/live/TcpOdometrySensor.h"
 #include "featloc/output/ResultsFolder.h"
@@ -178,6 +179,10 @@ int LiveApp::main(int argc, char** argv)
 	RunReport::printAbandoned(folder);
 	for (const auto& section : notStarted)
 		std::printf("  not started: [%s] (not in [Live] sensors)\n", section.c_str());
+	for (const auto& section : liveOptions.sensors)
+		if (const std::string q = DriverQuirks::describe(cfg.read_string(section, "driver", ""));
+			!q.empty())
+			std::printf("  [%s] %s\n", section.c_str(), q.c_str());
 	std::printf("starting the drivers (each must answer within %.0f s)...\n",
 		liveOptions.startup_timeout);
 	std::fflush(stdout);

@@ -13,6 +13,7 @@
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/ConfigError.h"
 #include "featloc/live/DeadConnectionRescue.h"
+#include "featloc/live/DriverQuirks.h"
 
 namespace featloc
 {
@@ -151,6 +152,7 @@ struct LiveSensor::Worker
 		std::lock_guard<std::mutex> lock(deliverMutex);
 		if (abandoned) return false;
 		const auto now = Clock::now();
+		DriverQuirks::correct(driverName, *obs);
 		sink({index, obs, now});
 		board->delivered(now);
 		return true;
@@ -235,6 +237,11 @@ std::shared_ptr<mrpt::hwdrivers::CGenericSensor> LiveSensor::makeSensorDriver(
 				b->status.lastDriverError = text;
 			});
 	d->loadConfig(cfg, section);
+	// CLMS100Eth (2.5.8) logs at DEBUG from its constructor: a console
+	// line per scan. Information and above, as the other drivers.
+	if (auto* logger = dynamic_cast<mrpt::system::COutputLogger*>(d.get()))
+		if (logger->getMinLoggingLevel() < mrpt::system::LVL_INFO)
+			logger->setMinLoggingLevel(mrpt::system::LVL_INFO);
 	return d;
 }
 
