@@ -22,6 +22,7 @@
 #include "featloc/core/InputError.h"
 #include "featloc/io/OdometryLine.h"
 #include "featloc/io/RawlogReader.h"
+#include "featloc/live/DriverQuirks.h"
 #include "featloc/live/LiveOptions.h"
 #include "featloc/sim/DeviceFault.h"
 #include "featloc/sim/ScipLaserServer.h"
@@ -197,7 +198,12 @@ TEST(SickLaserServer, MrptsLms100DriverReadsTheScansSent)
 	EXPECT_TRUE(server.streaming());
 	ASSERT_EQ(scan.getScanSize(), 1081u);
 	for (size_t i = 0; i < ranges.size(); i++)
-		if (i != 7) EXPECT_NEAR(scan.getScanRange(i), ranges[i], 0.0006) << i;	// mm on the wire
+	{
+		if (i != 7)
+		{
+			EXPECT_NEAR(scan.getScanRange(i), ranges[i], 0.0006) << i;	// mm on the wire
+		}
+	}
 	// The device sends 0 for no return; MRPT 2.5.8 keeps it as a valid 0 m.
 	EXPECT_EQ(scan.getScanRange(7), 0.0f);
 	// MRPT 2.5.8 fixes the aperture at 270 deg and says the beams go left
@@ -217,6 +223,34 @@ TEST(SickLaserServer, MrptsLms100DriverReadsTheScansSent)
 	EXPECT_TRUE(hwError);
 	EXPECT_GT(initSeconds, 10.0);  // the driver's own sleeps
 	EXPECT_EQ(server.connections(), 1u);
+}
+
+TEST(DriverQuirks, ClmsScansTurnRightToLeftAndTheirZeroBeamsAreInvalid)
+{
+	auto scanAsClmsGivesIt = [] {
+		mrpt::obs::CObservation2DRangeScan scan;
+		scan.resizeScan(3);
+		for (size_t i = 0; i < 3; i++)
+		{
+			scan.setScanRange(i, i == 1 ? 0.0f : 2.0f);
+			scan.setScanRangeValidity(i, true);	 // CLMS100Eth: 0 <= maxRange
+		}
+		scan.rightToLeft = false;
+		return scan;
+	};
+	auto clms = scanAsClmsGivesIt();
+	DriverQuirks::correct("CLMS100Eth", clms);
+	EXPECT_TRUE(clms.rightToLeft);
+	EXPECT_TRUE(clms.getScanRangeValidity(0));
+	EXPECT_FALSE(clms.getScanRangeValidity(1));
+	EXPECT_TRUE(clms.getScanRangeValidity(2));
+	EXPECT_FALSE(DriverQuirks::describe("CLMS100Eth").empty());
+	// Other drivers' observations are left as they come.
+	auto other = scanAsClmsGivesIt();
+	DriverQuirks::correct("CHokuyoURG", other);
+	EXPECT_FALSE(other.rightToLeft);
+	EXPECT_TRUE(other.getScanRangeValidity(1));
+	EXPECT_TRUE(DriverQuirks::describe("CHokuyoURG").empty());
 }
 
 TEST(Live, EmulatedHokuyoAndOdometryRunAndReplayToTheSamePoses)

@@ -70,7 +70,8 @@ Pipeline::Pipeline(
 	  m_options(std::move(options)),
 	  m_estimator(std::move(estimator)),
 	  m_matcher(std::move(matcher)),
-	  m_odometryCheck(m_odometry.covariance_check_window, m_odometry.covariance_check_quantile)
+	  m_odometryCheck(m_odometry.covariance_check_window, m_odometry.covariance_check_quantile),
+	  m_velocityPrior(m_odometry.no_odometry_velocity_window)
 {
 	if (!m_estimator) throw std::invalid_argument("Pipeline: no estimator");
 	if (m_estimator->usesScanMatcher() && !m_matcher)

@@ -96,9 +96,7 @@ void StepAssembler::push(
 		// or no odometry at all so far) goes now: what could still join its
 		// frame (another sensor at the very same time) is rare, and a live
 		// pose would wait for the next entry.
-		if (m_open && m_open->step.scan &&
-			(m_odometryReadings == 0 || canExtrapolateTo(m_open->step.time)))
-			closeFrame();
+		if (m_open && m_open->step.scan && needsNoLaterReading(m_open->step.time)) closeFrame();
 	}
 	else if (entry.object)
 	{
@@ -276,11 +274,8 @@ void StepAssembler::release(bool endOfLog, std::vector<EstimationStep>& ready)
 		const auto t = p.step.time;
 		const bool odometryStopped =
 			m_lastStepTime && seconds(t, *m_lastStepTime) > m_odo.max_interpolation_gap;
-		// No reading yet: a source without odometry (a live run with only a
-		// laser) must not hold every step max_interpolation_gap.
-		const bool noOdometrySoFar = m_odometryReadings == 0;
 		if (!(endOfLog || p.fromActions || m_timeline.covers(t) || odometryStopped ||
-				noOdometrySoFar || canExtrapolateTo(t)))
+				needsNoLaterReading(t)))
 			break;	// wait for an odometry reading at or after t
 
 		completeFromTimeline(p.step);
@@ -300,18 +295,19 @@ void StepAssembler::release(bool endOfLog, std::vector<EstimationStep>& ready)
 	}
 }
 
-bool StepAssembler::canExtrapolateTo(mrpt::Clock::time_point t) const
+bool StepAssembler::needsNoLaterReading(mrpt::Clock::time_point t) const
 {
-	return m_odo.max_extrapolation > 0 && !m_timeline.covers(t) &&
+	// No reading yet: a source without odometry (a live run with only a
+	// laser) must not hold every step max_interpolation_gap.
+	return m_odometryReadings == 0 ||
 		m_timeline.extrapolatedAt(t, m_odo.max_interpolation_gap, m_odo.max_extrapolation);
 }
 
 void StepAssembler::completeFromTimeline(EstimationStep& step)
 {
-	std::optional<mrpt::poses::CPose2D> odo;
-	if (!m_timeline.covers(step.time))
-		odo = m_timeline.extrapolatedAt(
-			step.time, m_odo.max_interpolation_gap, m_odo.max_extrapolation);
+	// Past the newest reading (max_extrapolation), else interpolated.
+	auto odo =
+		m_timeline.extrapolatedAt(step.time, m_odo.max_interpolation_gap, m_odo.max_extrapolation);
 	if (odo)
 		m_stepsExtrapolated++;
 	else

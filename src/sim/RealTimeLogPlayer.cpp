@@ -138,12 +138,11 @@ RealTimeLogPlayer::Result RealTimeLogPlayer::play(
 							l->setSilent(false);
 				}
 			}
-			for (size_t l = 0; l < m_lasers.size(); l++)
-			{
-				const bool taken = garbage ? m_lasers[l]->publishGarbage(deviceMs)
-										   : m_lasers[l]->publish(item.ranges, deviceMs);
-				if (l == 0 && taken && !garbage) r.scansDelivered++;
-			}
+			for (auto* l : m_lasers)
+				if (garbage)
+					l->publishGarbage(deviceMs);
+				else
+					l->publish(item.ranges, deviceMs);
 			gt << tumRow(wallT, item.truth) << std::flush;
 		}
 		else

@@ -84,7 +84,7 @@ class Pipeline
 	mrpt::poses::CPose2D m_keyframeActionStep;
 	OdometryCovarianceCheck m_odometryCheck;
 	/** Steps without odometry: the estimates' recent velocity. */
-	ConstantVelocityPrior m_velocityPrior{1.0};
+	ConstantVelocityPrior m_velocityPrior;
 	mrpt::Clock::time_point m_firstStepTime;
 };
 }  // namespace featloc

@@ -102,8 +102,9 @@ class StepAssembler
 	void closeFrame();
 	void onAction(const mrpt::serialization::CSerializable::Ptr& action);
 	void release(bool endOfLog, std::vector<EstimationStep>& ready);
-	/** [Odometry] max_extrapolation allows odometry at t from the readings so far. */
-	bool canExtrapolateTo(mrpt::Clock::time_point t) const;
+	/** A step at t can go without a reading after it: none has come yet,
+	 * or [Odometry] max_extrapolation allows t from the readings so far. */
+	bool needsNoLaterReading(mrpt::Clock::time_point t) const;
 	void completeFromTimeline(EstimationStep& step);
 	mrpt::poses::CPosePDFGaussian noOdometryPrior() const;
 

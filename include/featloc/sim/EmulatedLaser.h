@@ -24,8 +24,6 @@ class EmulatedLaser
 	EmulatedLaser(const EmulatedLaser&) = delete;
 	EmulatedLaser& operator=(const EmulatedLaser&) = delete;
 
-	/** The device's protocol, for messages ("Hokuyo SCIP 2.0"...). */
-	virtual std::string protocol() const = 0;
 	/** A new scan from the device, ranges in metres in the device's beam
 	 * order; a range <= 0 or not finite is "no return". deviceTimeMs: the
 	 * scanner's clock. False when no driver takes scans now. */

@@ -35,8 +35,7 @@ class RealTimeLogPlayer
 	};
 	struct Result
 	{
-		size_t scans = 0;
-		size_t scansDelivered = 0;	//!< to the first laser's driver, streaming then
+		size_t scans = 0;  //!< served (each laser counts what reached its driver)
 		size_t readings = 0, readingsDelivered = 0;
 		size_t faultsInjected = 0;	//!< laser faults that came due
 		double seconds = 0;	 //!< wall time played

@@ -1,10 +1,7 @@
 #pragma once
 #include <atomic>
 #include <cstdint>
-#include <memory>
-#include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "featloc/sim/EmulatedLaser.h"
@@ -59,7 +56,6 @@ class ScipLaserServer : public EmulatedLaser
 	 * 0.1%, since SCIP cannot describe such a scanner). */
 	static Device deviceFor(size_t beams, double aperture, double maxRange, int rate);
 
-	std::string protocol() const override { return "Hokuyo SCIP 2.0"; }
 	/** Sends one scan to the driver if it asked for data (MD); ranges in
 	 * metres, beam AMIN first; a range <= 0 or not finite is sent as
 	 * "no return" (error code 1, which the driver marks invalid).

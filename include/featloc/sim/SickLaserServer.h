@@ -50,7 +50,6 @@ class SickLaserServer : public EmulatedLaser
 	SickLaserServer(Device device, unsigned short port);
 	~SickLaserServer() override;
 
-	std::string protocol() const override { return "SICK LMS1xx CoLa-A"; }
 	/** The device has measured a new scan (beam at the start angle first);
 	 * a poll waiting for the first one is answered now. */
 	bool publish(const std::vector<float>& ranges, uint32_t deviceTimeMs) override;
@@ -77,7 +76,8 @@ class SickLaserServer : public EmulatedLaser
 	bool m_pollWaiting = false;	 //!< a poll came before the first scan
 	bool m_measuring = false;  //!< LMCstartmeas received on this connection
 	bool m_garbageNext = false;
-	uint32_t m_telegrams = 0, m_scans = 0;
+	uint32_t m_telegrams = 0;
 	std::string m_mismatch;
+	uint32_t m_scans = 0;  //!< scan counter (publish()'s thread only)
 };
 }  // namespace featloc
