@@ -266,7 +266,10 @@ TEST(EkfLocalizer, LandmarkSeenOnceIsRemovedAfterProbation)
 		f.updateLandmarks({observation(2, 0, 0.05)});  // only the first again
 	}
 	EXPECT_EQ(f.landmarkCount(), 2u);
-	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	// Predictions alone do not end it: probation counts the sensor's frames.
+	for (int k = 0; k < 20; k++) f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-6, 1e-8));
+	EXPECT_EQ(f.landmarkCount(), 2u);
+	f.updateLandmarks({});	// the fourth frame without it
 	ASSERT_EQ(f.landmarkCount(), 1u);
 	EXPECT_NEAR(f.landmarks()[0].mean.x(), 2, 1e-3);
 	EXPECT_EQ(f.state().size(), EkfLocalizer::kLandmarks + 2);
@@ -379,11 +382,11 @@ TEST(EkfLocalizer, RemovingALandmarkInTheMiddleKeepsTheOthersCovariances)
 	// Landmarks 0 and 2 seen again (correlated through the robot), 1 not.
 	f.predict(gaussian(CPose2D(0.1, 0, 0), 1e-4, 1e-4, 1e-5));
 	f.updateLandmarks({observation(1.9, 0, 0.05, 0), observation(-2.1, 1, 0.05, 2)});
-	f.predict(gaussian(CPose2D(0, 0, 0), 0, 0, 0));
+	f.updateLandmarks({});
 	ASSERT_EQ(f.landmarkCount(), 3u);
 	const Eigen::MatrixXd before = f.covariance();
 	const Eigen::VectorXd xBefore = f.state();
-	f.predict(gaussian(CPose2D(0, 0, 0), 0, 0, 0));  // probation of landmark 1 ends
+	f.updateLandmarks({});	// probation of landmark 1 ends (its third frame after)
 	ASSERT_EQ(f.landmarkCount(), 2u);
 	const Eigen::MatrixXd after = f.covariance();
 	// Old indices of the kept rows: robot, clones, landmark 0, landmark 2.

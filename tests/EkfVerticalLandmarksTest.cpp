@@ -234,13 +234,38 @@ TEST(EkfVerticalLandmarks, RemovalBesidePointLandmarksKeepsEveryBlock)
 	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-8));
 	f.updateVerticalLandmarks({seen(X, l, 0.02, 0.01)});  // seen twice: kept
 	const Eigen::VectorXd before = f.state().segment<4>(f.landmarkIndex(1));
-	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-8));
-	f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-8));
+	// Two range-bearing frames without the point: its probation is over.
+	f.updateLandmarks({});
+	f.updateLandmarks({});
 	ASSERT_EQ(f.landmarkCount(), 1u);
 	EXPECT_EQ(f.landmarkIndex(0), EkfLocalizer::kLandmarks);
 	EXPECT_EQ(f.state().size(), EkfLocalizer::kLandmarks + 4);
 	EXPECT_LT((f.state().segment<4>(EkfLocalizer::kLandmarks) - before).norm(), 1e-15);
 	EXPECT_TRUE(f.landmarks()[0].vertical);
+}
+
+// A 40 Hz laser predicts 16 times between two 2.5 Hz stereo pairs: a
+// landmark's probation counts the pairs, or no stereo landmark would live to
+// be seen twice (the bug: 176 started, none observed again).
+TEST(EkfVerticalLandmarks, ProbationCountsTheStereoPairsNotThePredictions)
+{
+	EkfLocalizer f;
+	f.options.landmark_probation_steps = 2;
+	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.01, 0.001));
+	const Eigen::Vector3d X(0, 0, M_PI / 2);
+	const Eigen::Vector4d l(0.5, 4.0, 0.2, 1.5), other(-1.0, 4.0, 0.2, 1.5);
+	f.updateVerticalLandmarks({startable(X, l, 0.03)});
+	for (int k = 0; k < 16; k++) f.predict(gaussian(CPose2D(0, 0, 0), 1e-6, 1e-8));
+	auto u = f.updateVerticalLandmarks({seen(X, l, 0.02, 0.01)});
+	EXPECT_EQ(u.used, 1u);
+	EXPECT_EQ(f.landmarkCount(), 1u);
+	// Seen once and then missing from 3 pairs (probation 2): removed; the
+	// one seen twice stays.
+	f.updateVerticalLandmarks({startable(X, other, 0.03)});
+	ASSERT_EQ(f.landmarkCount(), 2u);
+	for (int pair = 0; pair < 3; pair++) f.updateVerticalLandmarks({});
+	ASSERT_EQ(f.landmarkCount(), 1u);
+	EXPECT_NEAR(f.state()[f.landmarkIndex(0)], 0.5, 0.05);
 }
 
 // The robot drives 2 m along a wall with landmarks started on-line from the

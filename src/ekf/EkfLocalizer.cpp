@@ -50,7 +50,7 @@ void EkfLocalizer::reset(const mrpt::poses::CPosePDFGaussian& initial)
 	P()(kOdometryDirection, kOdometryDirection) = mrpt::square(options.odometry_direction_sigma);
 	m_info.clear();
 	m_held.reset();
-	m_step = 0;
+	m_pointFrames = m_verticalFrames = 0;
 	clonePose(kClone);
 	clonePose(kMatchClone);
 }
@@ -114,8 +114,6 @@ void EkfLocalizer::predict(
 	Pn.block<3, 3>(E, kRobot) = Sigma * G.transpose();
 	Pn.block<3, 3>(kRobot, E) = G * Sigma;
 	m_x.segment<3>(E).setZero();
-	m_step++;
-	pruneLandmarks();
 }
 
 void EkfLocalizer::clonePose(Eigen::Index to)
@@ -314,6 +312,8 @@ double EkfLocalizer::individualDistance2(const LandmarkObservation& o, size_t j)
 EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 	const std::vector<LandmarkObservation>& obs)
 {
+	m_pointFrames++;
+	pruneLandmarks(false);
 	LandmarkUpdate out;
 	out.observed = obs.size();
 	const size_t n = obs.size(), L = m_info.size();
@@ -456,7 +456,7 @@ void EkfLocalizer::addLandmark(const LandmarkObservation& o)
 	LandmarkInfo info;
 	info.id = o.id;
 	info.observations = 1;
-	info.firstStep = m_step;
+	info.firstFrame = m_pointFrames;
 	appendLandmark(l, Pll, Gr * P().block(kRobot, 0, 3, n), info);
 }
 
@@ -490,10 +490,11 @@ void EkfLocalizer::removeLandmark(size_t j)
 	for (size_t i = j; i < m_info.size(); i++) m_info[i].index -= m;
 }
 
-void EkfLocalizer::pruneLandmarks()
+void EkfLocalizer::pruneLandmarks(bool vertical)
 {
 	for (size_t j = m_info.size(); j-- > 0;)
-		if (m_info[j].observations <= 1 && m_step - m_info[j].firstStep > options.landmark_probation_steps)
+		if (m_info[j].vertical() == vertical && m_info[j].observations <= 1 &&
+			frames(vertical) - m_info[j].firstFrame > options.landmark_probation_steps)
 			removeLandmark(j);
 }
 

@@ -86,6 +86,8 @@ EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(
 EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 	const std::vector<VerticalLandmarkObservation>& obs)
 {
+	m_verticalFrames++;
+	pruneLandmarks(true);
 	VerticalUpdate out;
 	out.observed = obs.size();
 	out.landmarkOf.assign(obs.size(), -1);
@@ -211,7 +213,7 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 		cov(3, 3) = z.sigmaHigh > 0 ? z.sigmaHigh * z.sigmaHigh : kUnobservedEndVariance;
 		LandmarkInfo info;
 		info.observations = 1;
-		info.firstStep = m_step;
+		info.firstFrame = m_verticalFrames;
 		info.wall = z.wall;
 		info.polarity = z.polarity;
 		// Relative to the map's edge: uncorrelated with the robot (eq. 17).

@@ -48,6 +48,7 @@ void EkfOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::s
 	write(c, s, "stereo_landmarks_per_frame", stereo_landmarks_per_frame,
 		"vertical-line (stereo) landmarks used per frame: the least uncertain of those paired");
 	write(c, s, "landmark_probation_steps", landmark_probation_steps,
-		"a landmark seen only once is removed after this many steps");
+		"a landmark seen only once is removed after this many frames of its sensor "
+		"(range-bearing frames or stereo pairs; not EKF steps)");
 }
 }  // namespace featloc

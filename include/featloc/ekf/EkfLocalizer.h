@@ -204,7 +204,8 @@ class EkfLocalizer
 	{
 		int64_t id = -1;
 		unsigned int observations = 0;
-		uint64_t firstStep = 0;
+		/** Its sensor's frame (frames(vertical())) that started it. */
+		uint64_t firstFrame = 0;
 		Eigen::Index index = 0;	 //!< of its x in the state
 		Eigen::Index size = 2;	//!< 2: point (x, y); 4: vertical line (x, y, l_low, l_high)
 		/** Vertical lines: the map wall it lies on, its edge's polarity. */
@@ -260,7 +261,8 @@ class EkfLocalizer
 		const std::vector<VerticalLandmarkObservation>& obs, const std::vector<int>& pairing,
 		const std::vector<std::pair<double, size_t>>& paired) const;
 	void removeLandmark(size_t j);
-	void pruneLandmarks();
+	/** Removes the landmarks of that kind seen once and past their probation. */
+	void pruneLandmarks(bool vertical);
 	void clonePose(Eigen::Index to);
 
 	Eigen::VectorXd m_x;
@@ -272,7 +274,12 @@ class EkfLocalizer
 	void reserve(Eigen::Index n);
 	std::vector<LandmarkInfo> m_info;
 	std::optional<mrpt::poses::CPosePDFGaussian> m_held;
-	uint64_t m_step = 0;  //!< predictions so far
+	/** Landmark frames so far (updateLandmarks, updateVerticalLandmarks
+	 * calls): a landmark's probation counts its own sensor's frames, not
+	 * predictions (a 40 Hz laser between 2.5 Hz stereo pairs would end it
+	 * before the next pair). */
+	uint64_t m_pointFrames = 0, m_verticalFrames = 0;
+	uint64_t frames(bool vertical) const { return vertical ? m_verticalFrames : m_pointFrames; }
 
 	friend class LandmarkJointInnovation;
 };

@@ -43,7 +43,9 @@ struct EkfOptions : public mrpt::config::CLoadableOptions
 	/** Vertical-line (stereo) landmarks used per frame: the least
 	 * uncertain of those paired (Moon, Miura & Shirai, section 4). */
 	unsigned int stereo_landmarks_per_frame = 10;
-	/** A landmark seen only once is removed after this many steps. */
+	/** A landmark seen only once is removed after this many frames of its
+	 * own sensor (range-bearing frames or stereo pairs), whatever the EKF
+	 * steps between them (a 40 Hz laser between 2.5 Hz pairs). */
 	unsigned int landmark_probation_steps = 10;
 
 	void loadFromConfigFile(
