@@ -10,6 +10,11 @@
 # WORLD=FILE serves another world (default worlds/office.ini); EMULATOR_ARGS
 # adds featloc-sim options (e.g. "--odometry-port 0": a robot without
 # odometry, with --set Live:sensors=LASER).
+# STEREO=1: Moon et al.'s stereo landmarks live (configs/live-stereo-emulator.ini,
+# default world worlds/moon-lab.ini: 2 m in about 6 s, so SECONDS <= 6): the
+# emulator also writes its stereo camera's recording, MRPT's CCameraSensor
+# (grabber_type = rawlog) replays it, the EKF fuses laser, odometry and the
+# vertical-line landmarks.
 # LIVE_CPU=N pins featloc-live (all its threads) to core N with taskset,
 # the emulator running on the other cores: "keeps up on one core".
 set -euo pipefail
@@ -27,7 +32,15 @@ case "${LIDAR:-hokuyo}" in
         LIVE_LIDAR=(--set "Live:sensors=LASER SICK ODOMETRY") ;;
   *) echo "LIDAR must be hokuyo, sick or both" >&2; exit 2 ;;
 esac
-"$BIN/featloc-sim" "${WORLD:-$ROOT/worlds/office.ini}" --out "$OUT/emu" --serve -q \
+CONFIG="$ROOT/configs/live-emulator.ini"
+DEFAULT_WORLD="$ROOT/worlds/office.ini"
+LIVE_CAMERA=()
+if [ -n "${STEREO:-}" ]; then
+  CONFIG="$ROOT/configs/live-stereo-emulator.ini"
+  DEFAULT_WORLD="$ROOT/worlds/moon-lab.ini"
+  LIVE_CAMERA=(--set CAMERA:rawlog_file="$OUT/emu.camera.rawlog")
+fi
+"$BIN/featloc-sim" "${WORLD:-$DEFAULT_WORLD}" --out "$OUT/emu" --serve -q \
   --set Laser:preset=hokuyo_utm30lx "${EMU_LIDAR[@]}" --set Odometry:rate=100 \
   --set Simulation:duration=$((SECS + 30)) ${EMULATOR_ARGS:-} > "$OUT/emulator.txt" 2>&1 &
 emu=$!
@@ -38,12 +51,13 @@ if [ -n "${LIVE_CPU:-}" ]; then
   PIN=(taskset -c "$LIVE_CPU")
   taskset -pc "$(( LIVE_CPU == 0 ? 1 : 0 ))" $emu > /dev/null  # the emulator elsewhere
 fi
-"${PIN[@]}" "$BIN/featloc-live" "$ROOT/configs/live-emulator.ini" --out "$OUT/live" --duration "$SECS" \
+"${PIN[@]}" "$BIN/featloc-live" "$CONFIG" --out "$OUT/live" --duration "$SECS" \
   --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" --set Live:status_period=5 \
-  "${LIVE_LIDAR[@]}" "$@"
+  "${LIVE_LIDAR[@]}" "${LIVE_CAMERA[@]}" "$@"
 kill -TERM $emu; wait $emu || true; trap - EXIT
-"$BIN/featloc-run" "$ROOT/configs/live-emulator.ini" "$OUT/live/live.rawlog" -q \
-  --out "$OUT/replay" --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" "${LIVE_LIDAR[@]}" "$@" \
+"$BIN/featloc-run" "$CONFIG" "$OUT/live/live.rawlog" -q \
+  --out "$OUT/replay" --set Evaluation:ground_truth="$OUT/emu.served.gt.txt" "${LIVE_LIDAR[@]}" \
+  "${LIVE_CAMERA[@]}" "$@" \
   > "$OUT/replay.txt"
 echo "--- replay of live.rawlog with featloc-run:"
 grep -E "ATE translation|matches:" "$OUT/replay.txt"

@@ -67,7 +67,8 @@ std::string liveJson(const LiveSource& source, const std::vector<double>& latenc
 			{"restarts", st.failures}, {"rate_hz", s.rate}, {"last_error", st.lastError},
 			{"driver_errors", st.driverErrors}, {"last_driver_error", st.lastDriverError},
 			{"longest_gap_s", st.longestGap}, {"longest_gap_start_s", st.longestGapStart},
-			{"stuck_drivers_left_behind", st.stuckDrivers}});
+			{"stuck_drivers_left_behind", st.stuckDrivers}, {"replay_skipped", st.skipped},
+			{"ended", st.ended}});
 	}
 	const ErrorStats l = ErrorStats::of(latencies);
 	j["pose_latency_s"] = {
@@ -92,6 +93,9 @@ void printLiveReport(const LiveSource& source, const std::vector<double>& latenc
 		if (st.driverErrors)
 			std::printf(", %zu errors logged by the driver (last: %s)", st.driverErrors,
 				st.lastDriverError.c_str());
+		if (st.skipped)
+			std::printf(", %zu frames of the recording skipped (overdue when read)", st.skipped);
+		if (!st.ended.empty()) std::printf(", ended: %s", st.ended.c_str());
 		std::printf("\n");
 	}
 	if (!latencies.empty())
@@ -180,9 +184,17 @@ int LiveApp::main(int argc, char** argv)
 	for (const auto& section : notStarted)
 		std::printf("  not started: [%s] (not in [Live] sensors)\n", section.c_str());
 	for (const auto& section : liveOptions.sensors)
-		if (const std::string q = DriverQuirks::describe(cfg.read_string(section, "driver", ""));
-			!q.empty())
+	{
+		const std::string driver = cfg.read_string(section, "driver", "");
+		if (const std::string q = DriverQuirks::describe(driver); !q.empty())
 			std::printf("  [%s] %s\n", section.c_str(), q.c_str());
+		if (DriverQuirks::replaysRecording(driver, cfg, section))
+			std::printf("  [%s] %s replays %s: each frame is delivered when it comes due "
+						"([Live] replay_clock = %s)\n",
+				section.c_str(), driver.c_str(),
+				cfg.read_string(section, "rawlog_file", "").c_str(),
+				liveOptions.replay_clock.c_str());
+	}
 	std::printf("starting the drivers (each must answer within %.0f s)...\n",
 		liveOptions.startup_timeout);
 	std::fflush(stdout);

@@ -47,6 +47,8 @@ struct ServeOptions
 {
 	unsigned laserPort = 10940, sickPort = 0, odometryPort = 10950;
 	std::vector<DeviceFault> laserFaults;
+	/** The stereo camera's recording for CCameraSensor (empty: no camera). */
+	std::string cameraRawlog;
 };
 
 /** --serve: the simulated log, in real time, through emulated devices. */
@@ -87,6 +89,11 @@ void serve(const SimConfiguration& sc, const std::string& rawlog,
 	if (options.odometryPort)
 		odometry = std::make_unique<OdometryLineServer>(
 			tcpPort(options.odometryPort, "--odometry-port"));
+	if (!options.cameraRawlog.empty())
+		std::printf("  stereo camera: %s, written when the drivers are connected, each pair "
+					"stamped on this computer's clock (MRPT's CCameraSensor with grabber_type = "
+					"rawlog replays it)\n",
+			options.cameraRawlog.c_str());
 	std::printf("  odometry: %s\nwaiting for the drivers to connect...\n",
 		odometry ? ("featloc line protocol on 127.0.0.1:" + std::to_string(options.odometryPort)).c_str()
 				 : "none");
@@ -94,6 +101,7 @@ void serve(const SimConfiguration& sc, const std::string& rawlog,
 	InterruptSignals signals;
 	RealTimeLogPlayer player(lasers, odometry.get(), gtPath);
 	player.setLaserFaults(options.laserFaults);
+	if (!options.cameraRawlog.empty()) player.setCameraRecording(options.cameraRawlog);
 	for (const auto& f : options.laserFaults)
 		std::printf("  laser fault to inject: %s\n", f.describe().c_str());
 	ProgressBar progress(std::cerr, isatty(STDERR_FILENO) != 0);
@@ -105,6 +113,8 @@ void serve(const SimConfiguration& sc, const std::string& rawlog,
 				"injected\n",
 		r.stopped ? "stopped" : "log served", r.seconds, r.scans, r.readingsDelivered, r.readings,
 		r.faultsInjected);
+	if (!options.cameraRawlog.empty())
+		std::printf("  stereo camera: %zu pairs in %s\n", r.stereoPairs, options.cameraRawlog.c_str());
 	if (hokuyo)
 		std::printf("  Hokuyo: %zu of them delivered (%zu skipped by the driver while it "
 					"re-initialised the device), %zu connections\n",
@@ -143,8 +153,9 @@ int SimApp::main(int argc, char** argv)
 		"After simulating, serve the log in real time as devices on 127.0.0.1: the "
 		"laser as a Hokuyo in SCIP 2.0 (MRPT's CHokuyoURG with IP_DIR/PORT_DIR) and "
 		"the odometry in featloc's line protocol (featloc-live's TcpOdometrySensor); "
-		"writes PREFIX.served.gt.txt, the truth on this computer's clock. Forces "
-		"[Simulation] format = 2. Ctrl-C stops.",
+		"writes PREFIX.served.gt.txt, the truth on this computer's clock, and, when the "
+		"world has a stereo camera, PREFIX.camera.rawlog for MRPT's CCameraSensor "
+		"(grabber_type = rawlog). Forces [Simulation] format = 2. Ctrl-C stops.",
 		cmd);
 	TCLAP::ValueArg<unsigned> argLaserPort("", "laser-port",
 		"--serve: the Hokuyo's TCP port (0: no Hokuyo, with --sick-port)", false, 10940, "PORT",
@@ -282,6 +293,7 @@ int SimApp::main(int argc, char** argv)
 			sc.stereo.rate, (dir / (stem + "_Images")).string().c_str(), prefix.c_str(),
 			prefix.c_str(), prefix.c_str());
 	}
+	if (argServe.getValue() && sc.stereo.enabled) serveOptions.cameraRawlog = prefix + ".camera.rawlog";
 	if (argServe.getValue())
 		serve(sc, rawlog, truths, prefix + ".served.gt.txt", serveOptions, config.quiet());
 	return 0;

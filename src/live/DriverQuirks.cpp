@@ -1,6 +1,7 @@
 #include "featloc/live/DriverQuirks.h"
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/system/string_utils.h>
 
 namespace featloc
 {
@@ -26,5 +27,17 @@ void DriverQuirks::correct(const std::string& driver, mrpt::obs::CObservation& o
 	// No echo is 0 mm on the wire; CLMS100Eth keeps it valid (<= maxRange).
 	for (size_t i = 0; i < scan->getScanSize(); i++)
 		if (scan->getScanRange(i) <= 0) scan->setScanRangeValidity(i, false);
+}
+}  // namespace featloc
+
+namespace featloc
+{
+bool DriverQuirks::replaysRecording(
+	const std::string& driver, const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+	// As CCameraSensor::initialize() reads it: trimmed, lower case.
+	return driver == "CCameraSensor" &&
+		mrpt::system::trim(mrpt::system::lowerCase(
+			cfg.read_string_first_word(section, "grabber_type", "opencv"))) == "rawlog";
 }
 }  // namespace featloc

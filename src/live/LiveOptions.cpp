@@ -36,12 +36,15 @@ void LiveOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
 	read(c, s, "restart_pause", restart_pause);
 	read(c, s, "restart_after_silence", restart_after_silence);
 	read(c, s, "driver_stuck_timeout", driver_stuck_timeout);
+	read(c, s, "replay_clock", replay_clock);
 	require(max_wait >= 0, c, s, "max_wait", ">= 0");
 	require(startup_timeout > 0, c, s, "startup_timeout", "> 0");
 	require(status_period >= 0, c, s, "status_period", ">= 0");
 	require(restart_pause >= 0, c, s, "restart_pause", ">= 0");
 	require(restart_after_silence >= 0, c, s, "restart_after_silence", ">= 0 (0: never)");
 	require(driver_stuck_timeout > 0, c, s, "driver_stuck_timeout", "> 0");
+	require(replay_clock == "now" || replay_clock == "recorded", c, s, "replay_clock",
+		"now | recorded");
 }
 
 void LiveOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -63,5 +66,9 @@ void LiveOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::
 		"[s] a driver silent this long after delivering is restarted (0: never)");
 	write(c, s, "driver_stuck_timeout", driver_stuck_timeout,
 		"[s] a driver call lasting this long is stuck: left behind, a new driver started");
+	write(c, s, "replay_clock", replay_clock,
+		"a recording replayed as a sensor (CCameraSensor, grabber_type = rawlog): now (first "
+		"frame at once, then its intervals, re-stamped) | recorded (at its stamps, this "
+		"computer's clock)");
 }
 }  // namespace featloc

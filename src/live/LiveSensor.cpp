@@ -2,7 +2,9 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/hwdrivers/CGenericSensor.h>
+#include <mrpt/core/Clock.h>
 #include <mrpt/obs/CObservation.h>
+#include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/COutputLogger.h>
 
 #include <unistd.h>
@@ -22,14 +24,27 @@ namespace
 /** The message of an MRPT exception without its call stack. */
 std::string driverMessage(const std::exception& e)
 {
-	std::string text = e.what();
+	const std::string what = e.what();
+	auto trimmed = [](std::string t) {
+		t.erase(0, std::min(t.size(), t.find_first_not_of(" \n\t")));
+		while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.pop_back();
+		return t;
+	};
+	std::string text = what;
 	const auto m = text.find("Message:");
 	if (m != std::string::npos) text = text.substr(m + 8);
 	const auto end = text.find("\nLocation:");
 	if (end != std::string::npos) text = text.substr(0, end);
-	text.erase(0, text.find_first_not_of(" \n\t"));
-	while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-	return text;
+	text = trimmed(text);
+	// A standard exception caught by MRPT_END has an empty message and its
+	// text after "Location:" (e.g. a std::filesystem error).
+	if (text.empty())
+	{
+		const auto at = what.find("Location:");
+		if (at != std::string::npos)
+			text = trimmed(what.substr(at + 9, what.find('\n', at) - at - 9));
+	}
+	return text.empty() ? trimmed(what) : text;
 }
 
 /** Keys that say where a device is: addresses, ports, serial devices. */
@@ -106,6 +121,7 @@ struct LiveSensor::Worker
 	std::shared_ptr<mrpt::config::CConfigFileMemory> config;
 	std::shared_ptr<Board> board;
 	Sink sink;
+	std::optional<RecordingReplayClock> replay;	 //!< a driver replaying a recording
 	std::shared_ptr<mrpt::hwdrivers::CGenericSensor> driver;
 	std::atomic<bool> stop{false}, done{false};
 	/** steady-clock ticks when the current driver call began; 0: none. */
@@ -147,8 +163,30 @@ struct LiveSensor::Worker
 		callSince = 0;
 	}
 
+	/** A replayed recording's frame waits until it is due (false: skipped,
+	 * or stopped while waiting); its stamp becomes the clock's. */
+	bool replayWhenDue(mrpt::obs::CObservation& obs)
+	{
+		const auto due =
+			replay->schedule(mrpt::Clock::toDouble(obs.timestamp), mrpt::Clock::nowDouble());
+		if (!due)
+		{
+			std::lock_guard<std::mutex> lock(board->mutex);
+			board->status.skipped++;
+			return false;
+		}
+		const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+											   std::chrono::duration<double>(due->wait));
+		while (!stop && Clock::now() < until)
+			std::this_thread::sleep_until(
+				std::min(until, Clock::now() + std::chrono::milliseconds(20)));
+		obs.timestamp = mrpt::Clock::fromDouble(due->stamp);
+		return !stop;
+	}
+
 	bool deliver(const std::shared_ptr<mrpt::obs::CObservation>& obs)
 	{
+		if (replay && !replayWhenDue(*obs)) return true;
 		std::lock_guard<std::mutex> lock(deliverMutex);
 		if (abandoned) return false;
 		const auto now = Clock::now();
@@ -191,6 +229,14 @@ struct LiveSensor::Worker
 						throw std::runtime_error(why);
 					}
 				}
+			}
+			catch (const mrpt::serialization::CExceptionEOF& e)
+			{
+				if (!replay) throw;	// not expected from a device: as any error
+				// The recording is over: nothing more will come; no restart.
+				std::lock_guard<std::mutex> lock(board->mutex);
+				board->status.ended = "end of the recording";
+				break;
 			}
 			catch (const std::exception& e)
 			{
@@ -246,11 +292,11 @@ std::shared_ptr<mrpt::hwdrivers::CGenericSensor> LiveSensor::makeSensorDriver(
 }
 
 LiveSensor::LiveSensor(const TrackedConfig& cfg, std::string section, size_t index,
-	double restartPause, double restartAfterSilence, Sink sink)
+	const LiveOptions& options, Sink sink)
 	: m_section(std::move(section)),
 	  m_index(index),
-	  m_restartPause(restartPause),
-	  m_restartAfterSilence(restartAfterSilence),
+	  m_restartPause(options.restart_pause),
+	  m_restartAfterSilence(options.restart_after_silence),
 	  m_sink(std::move(sink)),
 	  m_config(std::make_shared<mrpt::config::CConfigFileMemory>(cfg.content())),
 	  m_board(std::make_shared<Board>())
@@ -260,6 +306,9 @@ LiveSensor::LiveSensor(const TrackedConfig& cfg, std::string section, size_t ind
 	if (m_driverName.empty())
 		throw ConfigError(where + ": no 'driver' key (e.g. driver = CHokuyoURG)");
 	m_address = addressKeys(*m_config, m_section);
+	if (DriverQuirks::replaysRecording(m_driverName, cfg, m_section))
+		m_replay = options.replay_clock == "recorded" ? RecordingReplayClock::Mode::Recorded
+													   : RecordingReplayClock::Mode::Now;
 	try
 	{
 		// Through the tracked config: the keys the driver reads are known.
@@ -289,6 +338,7 @@ void LiveSensor::launch(std::shared_ptr<mrpt::hwdrivers::CGenericSensor> driver)
 	w->board = m_board;
 	w->sink = m_sink;
 	w->driver = std::move(driver);
+	if (m_replay) w->replay.emplace(*m_replay);
 	m_worker = w;
 	m_thread = std::thread([w] {
 		w->run();

@@ -38,8 +38,8 @@ LiveSource::LiveSource(const TrackedConfig& cfg, const LiveOptions& options,
 	  m_late(std::move(lateRecordingPath))
 {
 	for (size_t i = 0; i < m_options.sensors.size(); i++)
-		m_sensors.push_back(std::make_unique<LiveSensor>(cfg, m_options.sensors[i], i,
-			m_options.restart_pause, m_options.restart_after_silence, [this](LiveSensor::Arrival a) { onArrival(std::move(a)); }));
+		m_sensors.push_back(std::make_unique<LiveSensor>(cfg, m_options.sensors[i], i, m_options,
+			[this](LiveSensor::Arrival a) { onArrival(std::move(a)); }));
 	m_latest.resize(m_sensors.size());
 	m_maxDelay.resize(m_sensors.size());
 	m_passedOn.assign(m_sensors.size(), 0);
@@ -135,6 +135,15 @@ void LiveSource::noteRestartsAndSilences(Clock::time_point now)
 			m_lastNoticedError[i] = st.lastError;
 		}
 		m_restartsNoticed[i] = st.failures;
+		if (!st.ended.empty())
+		{
+			// A replayed recording that ended is not a device falling silent.
+			if (!m_silent[i])
+				m_notices.push_back(m_sensors[i]->label() + ": " + st.ended + " (" +
+					std::to_string(st.received) + " observations); nothing more from it");
+			m_silent[i] = true;
+			continue;
+		}
 		if (m_silent[i] || !m_lastArrival[i] || secondsBetween(*m_lastArrival[i], now) < kSilence)
 			continue;
 		m_silent[i] = true;

@@ -3,14 +3,17 @@
 #include <mrpt/core/Clock.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationStereoImages.h>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <thread>
 
 #include "featloc/core/InputError.h"
-#include "featloc/io/RawlogReader.h"
+#include "featloc/io/RawlogFileSource.h"
 #include "featloc/io/TumRow.h"
+#include "featloc/sim/StereoCameraRecording.h"
 
 namespace featloc
 {
@@ -18,10 +21,16 @@ std::vector<RealTimeLogPlayer::Item> RealTimeLogPlayer::load(
 	const std::string& rawlogPath, const std::vector<mrpt::poses::CPose2D>& truths)
 {
 	using namespace mrpt::obs;
-	RawlogReader reader(rawlogPath);
+	RawlogFileSource reader(rawlogPath);
 	std::vector<Item> items;
 	RawlogEntry entry;
 	size_t scans = 0;
+	auto absoluteImage = [&](mrpt::img::CImage& img) {
+		if (!img.isExternallyStored()) return;
+		std::filesystem::path file(img.getExternalStorageFile());
+		if (file.is_relative()) file = std::filesystem::path(reader.imagesDirectory()) / file;
+		img.setExternalStorage(std::filesystem::absolute(file).string());
+	};
 	while (reader.next(entry))
 	{
 		Item item;
@@ -47,11 +56,18 @@ std::vector<RealTimeLogPlayer::Item> RealTimeLogPlayer::load(
 			item.odometry.v = odo->velocityLocal.vx;
 			item.odometry.w = odo->velocityLocal.omega;
 		}
+		else if (auto pair = std::dynamic_pointer_cast<CObservationStereoImages>(entry.object))
+		{
+			item.t = mrpt::Clock::toDouble(pair->timestamp);
+			absoluteImage(pair->imageLeft);
+			if (pair->hasImageRight) absoluteImage(pair->imageRight);
+			item.stereo = pair;
+		}
 		else
 			throw InputError(
 				"rawlog '" + rawlogPath + "': entry #" + std::to_string(entry.index) +
-				" is not a 2-D scan or an odometry reading; the device emulator plays "
-				"format-#2 logs of those two");
+				" is not a 2-D scan, an odometry reading or a stereo pair; the device "
+				"emulator plays format-#2 logs of those");
 		items.push_back(std::move(item));
 	}
 	if (scans != truths.size())
@@ -94,6 +110,13 @@ RealTimeLogPlayer::Result RealTimeLogPlayer::play(
 	const double tFirst = items.front().t;
 	const double wall0 = mrpt::Clock::toDouble(mrpt::Clock::now());
 	const auto steady0 = std::chrono::steady_clock::now();
+	if (!m_cameraPath.empty())
+	{
+		std::vector<std::shared_ptr<mrpt::obs::CObservationStereoImages>> pairs;
+		for (const Item& item : items)
+			if (item.stereo) pairs.push_back(item.stereo);
+		r.stereoPairs = StereoCameraRecording::write(m_cameraPath, pairs, tFirst, wall0);
+	}
 	size_t k = 0;
 	std::vector<bool> begun(m_faults.size(), false), ended(m_faults.size(), false);
 	for (const Item& item : items)
@@ -145,7 +168,7 @@ RealTimeLogPlayer::Result RealTimeLogPlayer::play(
 					l->publish(item.ranges, deviceMs);
 			gt << tumRow(wallT, item.truth) << std::flush;
 		}
-		else
+		else if (!item.stereo)
 		{
 			r.readings++;
 			OdometryLine line = item.odometry;

@@ -1,4 +1,5 @@
 #pragma once
+#include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/obs/CObservation.h>
 
 #include <string>
@@ -16,5 +17,11 @@ class DriverQuirks
 	static std::string describe(const std::string& driver);
 	/** Corrects an observation of `driver` in place. */
 	static void correct(const std::string& driver, mrpt::obs::CObservation& obs);
+	/** Whether the driver of `[section]` replays a recording rather than
+	 * a device (CCameraSensor with grabber_type = rawlog): it reads as
+	 * fast as it is called and keeps the recorded stamps, so featloc-live
+	 * paces it (RecordingReplayClock). */
+	static bool replaysRecording(const std::string& driver,
+		const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 }  // namespace featloc

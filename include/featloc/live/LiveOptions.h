@@ -40,6 +40,13 @@ struct LiveOptions : public mrpt::config::CLoadableOptions
 	 * loop forever in CClientTCPSocket::writeAsync once a device has reset
 	 * the connection. At stop, drivers get this long to finish. */
 	double driver_stuck_timeout = 10;
+	/** When a sensor that replays a recording (CCameraSensor with
+	 * grabber_type = rawlog) delivers each observation
+	 * (RecordingReplayClock): "now" (the first at once, the others at
+	 * their recorded intervals, re-stamped) or "recorded" (at its own
+	 * stamp, read as this computer's clock: featloc-sim --serve's camera
+	 * recording). */
+	std::string replay_clock = "now";
 
 	/** Every section with a `driver` key: the sensors a configuration
 	 * describes, run or not. */

@@ -6,8 +6,12 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
+
+#include "featloc/live/LiveOptions.h"
+#include "featloc/live/RecordingReplayClock.h"
 
 namespace mrpt::hwdrivers
 {
@@ -56,6 +60,10 @@ class LiveSensor
 		/** [s] the longest time without an observation since the first
 		 * one, and when it began (seconds after the first observation). */
 		double longestGap = 0, longestGapStart = 0;
+		/** A replayed recording (RecordingReplayClock): frames skipped,
+		 * already overdue when read; and "" or why it ended (its end). */
+		size_t skipped = 0;
+		std::string ended;
 	};
 	struct Arrival
 	{
@@ -69,10 +77,9 @@ class LiveSensor
 	 * them through `cfg`, so keys no driver reads are reported as
 	 * unknown). Throws ConfigError naming the file and section for an
 	 * unknown driver or keys the driver rejects. Nothing runs yet.
-	 * `restartPause`, `restartAfterSilence`: [Live] restart_pause,
-	 * restart_after_silence. */
+	 * `options`: restart_pause, restart_after_silence, replay_clock. */
 	LiveSensor(const TrackedConfig& cfg, std::string section, size_t index,
-		double restartPause, double restartAfterSilence, Sink sink);
+		const LiveOptions& options, Sink sink);
 	~LiveSensor();	//!< stop(0)
 	LiveSensor(const LiveSensor&) = delete;
 	LiveSensor& operator=(const LiveSensor&) = delete;
@@ -118,6 +125,8 @@ class LiveSensor
 	std::string m_section, m_driverName, m_address;
 	size_t m_index;
 	double m_restartPause, m_restartAfterSilence;
+	/** Set for a driver that replays a recording (DriverQuirks). */
+	std::optional<RecordingReplayClock::Mode> m_replay;
 	Sink m_sink;
 	std::shared_ptr<mrpt::config::CConfigFileMemory> m_config;	//!< for restarts
 	std::shared_ptr<mrpt::hwdrivers::CGenericSensor> m_firstDriver;	 //!< made by the constructor

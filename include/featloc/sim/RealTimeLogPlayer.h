@@ -1,4 +1,5 @@
 #pragma once
+#include <mrpt/obs/obs_frwds.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <atomic>
@@ -32,20 +33,24 @@ class RealTimeLogPlayer
 		std::vector<float> ranges;	//!< scan: metres, 0 = no return
 		mrpt::poses::CPose2D truth;	 //!< scan: the true robot pose
 		OdometryLine odometry;	//!< odometry reading (time = log time)
+		/** A stereo pair (neither scan nor odometry): not played by the
+		 * devices; its images' paths are absolute. */
+		std::shared_ptr<mrpt::obs::CObservationStereoImages> stereo;
 	};
 	struct Result
 	{
 		size_t scans = 0;  //!< served (each laser counts what reached its driver)
 		size_t readings = 0, readingsDelivered = 0;
 		size_t faultsInjected = 0;	//!< laser faults that came due
+		size_t stereoPairs = 0;	 //!< written to the camera recording
 		double seconds = 0;	 //!< wall time played
 		bool stopped = false;  //!< `stop` ended it early
 	};
 
-	/** The scans and odometry readings of a format-#2 rawlog in time
-	 * order; `truths` is the robot's true pose at each scan, in order.
-	 * Throws InputError when the log holds something else or the counts
-	 * differ. */
+	/** The scans, odometry readings and stereo pairs of a format-#2 rawlog
+	 * in time order; `truths` is the robot's true pose at each scan, in
+	 * order. Throws InputError when the log holds something else or the
+	 * counts differ. */
 	static std::vector<Item> load(
 		const std::string& rawlogPath, const std::vector<mrpt::poses::CPose2D>& truths);
 
@@ -55,6 +60,10 @@ class RealTimeLogPlayer
 	 * flushed per row). */
 	RealTimeLogPlayer(std::vector<EmulatedLaser*> lasers, OdometryLineServer* odometry,
 		std::string groundTruthPath);
+
+	/** Writes the log's stereo pairs to `path` when play starts
+	 * (StereoCameraRecording), stamped on this computer's clock. */
+	void setCameraRecording(std::string path) { m_cameraPath = std::move(path); }
 
 	/** Faults to inject into the lasers as the log plays (DeviceFault). */
 	void setLaserFaults(std::vector<DeviceFault> faults) { m_faults = std::move(faults); }
@@ -70,6 +79,7 @@ class RealTimeLogPlayer
 	std::vector<EmulatedLaser*> m_lasers;
 	OdometryLineServer* m_odometry;
 	std::string m_gtPath;
+	std::string m_cameraPath;
 	std::vector<DeviceFault> m_faults;
 };
 }  // namespace featloc
