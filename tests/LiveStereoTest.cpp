@@ -69,10 +69,11 @@ TEST(RecordingReplayClock, RecordedDeliversAtTheStampsAndSkipsFramesFromBeforeTh
 {
 	RecordingReplayClock clock(RecordingReplayClock::Mode::Recorded);
 	EXPECT_FALSE(clock.schedule(1000.0, 1000.5));  // 0.5 s overdue: before it opened
-	const auto slightly = clock.schedule(1000.49, 1000.5);
-	ASSERT_TRUE(slightly);	// 10 ms overdue: at once, its own stamp
+	EXPECT_FALSE(clock.schedule(1000.49, 1000.5));	// 10 ms: it would hold the others back
+	const auto slightly = clock.schedule(1000.498, 1000.5);
+	ASSERT_TRUE(slightly);	// 2 ms overdue: at once, its own stamp
 	EXPECT_EQ(slightly->wait, 0.0);
-	EXPECT_DOUBLE_EQ(slightly->stamp, 1000.49);
+	EXPECT_DOUBLE_EQ(slightly->stamp, 1000.498);
 	const auto ahead = clock.schedule(1000.9, 1000.5);
 	ASSERT_TRUE(ahead);
 	EXPECT_NEAR(ahead->wait, 0.4, 1e-9);

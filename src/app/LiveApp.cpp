@@ -53,7 +53,7 @@ void openViewer(const std::string& dir)
 constexpr const char* kRecording = "live.rawlog";
 constexpr const char* kLateRecording = "live-late.rawlog";
 
-std::string liveJson(const LiveSource& source, const std::vector<double>& latencies)
+std::string liveJson(const LiveSource& source, const LiveStatusLine& status)
 {
 	nlohmann::json j;
 	j["stopped_by"] = source.stopReason();
@@ -70,13 +70,15 @@ std::string liveJson(const LiveSource& source, const std::vector<double>& latenc
 			{"stuck_drivers_left_behind", st.stuckDrivers}, {"replay_skipped", st.skipped},
 			{"ended", st.ended}});
 	}
-	const ErrorStats l = ErrorStats::of(latencies);
+	const ErrorStats l = ErrorStats::of(status.latencies());
 	j["pose_latency_s"] = {
 		{"count", l.count}, {"median", l.median}, {"p95", l.p95}, {"max", l.max}};
+	const ErrorStats st = ErrorStats::of(status.startupLatencies());
+	j["startup_pose_latency_s"] = {{"count", st.count}, {"max", st.max}};
 	return j.dump();
 }
 
-void printLiveReport(const LiveSource& source, const std::vector<double>& latencies)
+void printLiveReport(const LiveSource& source, const LiveStatusLine& status)
 {
 	std::printf("live run stopped (%s) after %.1f s:\n", source.stopReason().c_str(),
 		source.secondsRunning());
@@ -98,12 +100,17 @@ void printLiveReport(const LiveSource& source, const std::vector<double>& latenc
 		if (!st.ended.empty()) std::printf(", ended: %s", st.ended.c_str());
 		std::printf("\n");
 	}
-	if (!latencies.empty())
+	if (!status.latencies().empty())
 	{
-		const ErrorStats l = ErrorStats::of(latencies);
-		std::printf("  pose latency (scan arrival to pose): median %.1f ms, p95 %.1f ms, max %.1f ms\n",
+		const ErrorStats l = ErrorStats::of(status.latencies());
+		std::printf("  pose latency (scan arrival to pose, every sensor up): median %.1f ms, p95 "
+					"%.1f ms, max %.1f ms\n",
 			l.median * 1e3, l.p95 * 1e3, l.max * 1e3);
 	}
+	if (!status.startupLatencies().empty())
+		std::printf("  %zu scans arrived while the other sensors started; they waited up to %.0f "
+					"ms for the slowest one's first observation\n",
+			status.startupLatencies().size(), ErrorStats::of(status.startupLatencies()).max * 1e3);
 }
 }  // namespace
 
@@ -223,9 +230,9 @@ int LiveApp::main(int argc, char** argv)
 		Pipeline pipeline(rc.input, rc.odometry, rc.pipeline, rc.estimator, rc.matcher);
 		if (rc.mapLocalizer) pipeline.setMapLocalizer(rc.mapLocalizer);
 		stats = pipeline.run(source, all);
-		printLiveReport(source, status.latencies());
+		printLiveReport(source, status);
 		RunReport::printSummary(stats);
-		outputs.summary->addMember("live", liveJson(source, status.latencies()));
+		outputs.summary->addMember("live", liveJson(source, status));
 		outputs.summary->finish(stats);
 		// The ground truth is read after the run: the emulator writes it
 		// while the run goes.

@@ -17,7 +17,11 @@ void LiveStatusLine::onStep(const StepRecord& record)
 	const auto now = std::chrono::steady_clock::now();
 	if (record.step.scan)
 		if (const auto arrival = m_source.arrivalOf(record.step.source))
-			m_latencies.push_back(std::chrono::duration<double>(now - *arrival).count());
+		{
+			const auto running = m_source.runningSince();
+			(running && *arrival >= *running ? m_latencies : m_startupLatencies)
+				.push_back(std::chrono::duration<double>(now - *arrival).count());
+		}
 	if (m_period <= 0 || std::chrono::duration<double>(now - m_lastLine).count() < m_period)
 		return;
 	m_lastLine = now;

@@ -99,7 +99,12 @@ void LiveSource::start()
 							: !st.lastDriverError.empty() ? "; the driver logged: " + st.lastDriverError
 														  : ": the device does not answer"));
 		}
-		if (all) return;
+		if (all)
+		{
+			std::lock_guard<std::mutex> lock(m_mutex);
+			m_runningSince = Clock::now();
+			return;
+		}
 		std::this_thread::sleep_for(std::chrono::milliseconds(10));
 	}
 }
@@ -322,6 +327,12 @@ size_t LiveSource::lateObservations() const
 	size_t n = 0;
 	for (auto c : m_lateCount) n += c;
 	return n;
+}
+
+std::optional<Clock::time_point> LiveSource::runningSince() const
+{
+	std::lock_guard<std::mutex> lock(m_mutex);
+	return m_runningSince;
 }
 
 std::optional<Clock::time_point> LiveSource::arrivalOf(const void* observation) const

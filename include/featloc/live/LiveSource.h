@@ -79,6 +79,9 @@ class LiveSource : public EntrySource
 	/** When the observation passed on as `observation` arrived from its
 	 * driver (for the latency of a pose); nullopt when unknown. */
 	std::optional<std::chrono::steady_clock::time_point> arrivalOf(const void* observation) const;
+	/** When start() returned: every sensor had delivered. What arrived
+	 * before waited for the slowest device's first observation. */
+	std::optional<std::chrono::steady_clock::time_point> runningSince() const;
 	/** Seconds since the first observation. */
 	double secondsRunning() const;
 
@@ -123,7 +126,7 @@ class LiveSource : public EntrySource
 	std::vector<size_t> m_passedOn, m_lateCount;
 	size_t m_arrivals = 0, m_released = 0;
 	std::optional<double> m_lastReleased;
-	std::optional<std::chrono::steady_clock::time_point> m_firstArrival;
+	std::optional<std::chrono::steady_clock::time_point> m_firstArrival, m_runningSince;
 	std::string m_stopReason;
 	bool m_sensorsStopped = false;
 	std::deque<std::pair<const void*, std::chrono::steady_clock::time_point>> m_recentArrivals;

@@ -28,9 +28,10 @@ class RecordingReplayClock
 	/** [s] how overdue a frame may be in Recorded mode and still be sent.
 	 * Frames are read well ahead of their time (the driver is called again
 	 * as soon as one is delivered), so only frames from before the camera
-	 * was opened are overdue; a late one would make every other sensor's
-	 * observations wait that long in the time-order merge. */
-	static constexpr double kSkipAfter = 0.02;
+	 * was opened are overdue; one delivered late would make every other
+	 * sensor's observations wait that long in the time-order merge for
+	 * the rest of the run (it bounds a sensor's delay by the largest seen). */
+	static constexpr double kSkipAfter = 0.005;
 
 	explicit RecordingReplayClock(Mode mode) : m_mode(mode) {}
 
