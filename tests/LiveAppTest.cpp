@@ -29,6 +29,7 @@
 #include "featloc/sim/SickLaserServer.h"
 #include "support/LiveEmulator.h"
 #include "support/CommandRunner.h"
+#include "support/DataRows.h"
 #include "support/JsonFile.h"
 #include "support/FreePort.h"
 #include "support/DocumentedKeys.h"
@@ -45,15 +46,6 @@ const std::string kRun = FEATLOC_RUN_EXE;
 const std::string kSim = FEATLOC_SIM_EXE;
 const std::string kConfig = std::string(FEATLOC_SOURCE_DIR) + "/configs/live-emulator.ini";
 const std::string kWorld = std::string(FEATLOC_SOURCE_DIR) + "/worlds/office.ini";
-
-std::vector<std::string> poseRows(const std::string& tum)
-{
-	std::ifstream f(tum);
-	std::vector<std::string> rows;
-	for (std::string line; std::getline(f, line);)
-		if (!line.empty() && line[0] != '#') rows.push_back(line);
-	return rows;
-}
 
 struct Recorded
 {
@@ -296,7 +288,7 @@ TEST(Live, EmulatedHokuyoAndOdometryRunAndReplayToTheSamePoses)
 	const CommandResult rr = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
 		shellQuote(out + "/live.rawlog") + " -q --out " + shellQuote(replay));
 	ASSERT_EQ(rr.exitCode, 0) << rr.output;
-	const auto a = poseRows(out + "/trajectory.tum"), b = poseRows(replay + "/trajectory.tum");
+	const auto a = dataRows(out + "/trajectory.tum"), b = dataRows(replay + "/trajectory.tum");
 	ASSERT_FALSE(a.empty());
 	EXPECT_EQ(a, b);
 }
@@ -357,7 +349,7 @@ TEST(Live, AHokuyoAndASickTogetherWithOdometryAreRecordedAndReplayed)
 	const CommandResult rr = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
 		shellQuote(out + "/live.rawlog") + " -q --out " + shellQuote(replay) + both);
 	ASSERT_EQ(rr.exitCode, 0) << rr.output;
-	const auto a = poseRows(out + "/trajectory.tum"), b = poseRows(replay + "/trajectory.tum");
+	const auto a = dataRows(out + "/trajectory.tum"), b = dataRows(replay + "/trajectory.tum");
 	ASSERT_FALSE(a.empty());
 	EXPECT_EQ(a, b);
 }

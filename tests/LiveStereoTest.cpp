@@ -7,12 +7,12 @@
 #include <mrpt/core/Clock.h>
 #include <mrpt/obs/CObservationStereoImages.h>
 
-#include <fstream>
 #include <map>
 
 #include "featloc/io/RawlogReader.h"
 #include "featloc/live/RecordingReplayClock.h"
 #include "support/CommandRunner.h"
+#include "support/DataRows.h"
 #include "support/FreePort.h"
 #include "support/JsonFile.h"
 #include "support/TempDir.h"
@@ -22,15 +22,6 @@ using namespace featloc::test;
 
 namespace
 {
-std::vector<std::string> poseRows(const std::string& tum)
-{
-	std::ifstream f(tum);
-	std::vector<std::string> rows;
-	for (std::string line; std::getline(f, line);)
-		if (!line.empty() && line[0] != '#') rows.push_back(line);
-	return rows;
-}
-
 /** The stereo pairs of a rawlog: stamp -> whether both images are held in
  * memory (not files). */
 std::map<double, bool> stereoPairs(const std::string& rawlog)
@@ -133,7 +124,7 @@ TEST(Live, AStereoCameraReplayedByCCameraSensorFeedsTheStereoLandmarksLive)
 	const CommandResult rr = runCommand(shellQuote(FEATLOC_RUN_EXE) + " " + shellQuote(config) +
 		" " + shellQuote(out + "/live.rawlog") + " -q --out " + shellQuote(replay) + devices);
 	ASSERT_EQ(rr.exitCode, 0) << rr.output;
-	const auto a = poseRows(out + "/trajectory.tum"), b = poseRows(replay + "/trajectory.tum");
+	const auto a = dataRows(out + "/trajectory.tum"), b = dataRows(replay + "/trajectory.tum");
 	ASSERT_FALSE(a.empty());
 	EXPECT_EQ(a, b);
 }

@@ -14,6 +14,7 @@
 
 #include "featloc/registerClasses.h"
 #include "support/CommandRunner.h"
+#include "support/DataRows.h"
 #include "support/TempDir.h"
 
 using featloc::test::runCommand;
@@ -74,14 +75,6 @@ std::vector<mrpt::obs::CObservationStereoImages::Ptr> readStereo(const std::stri
 	return out;
 }
 
-std::vector<std::string> dataRows(const std::string& path)
-{
-	std::ifstream f(path);
-	std::vector<std::string> rows;
-	for (std::string line; std::getline(f, line);)
-		if (!line.empty() && line[0] != '#') rows.push_back(line);
-	return rows;
-}
 }  // namespace
 
 TEST(StereoImport, EurocMav0LayoutTakesTimesFromDataCsvAndPicksTheGroundTruthRows)
@@ -121,7 +114,7 @@ TEST(StereoImport, EurocMav0LayoutTakesTimesFromDataCsvAndPicksTheGroundTruthRow
 	EXPECT_NEAR(obs[0]->cameraPose.x(), -0.0216401454975, 1e-9);
 	EXPECT_NEAR(obs[0]->cameraPose.y(), -0.064676986768, 1e-9);
 
-	const auto rows = dataRows(d.file("out/v1.gt.txt"));
+	const auto rows = featloc::test::dataRows(d.file("out/v1.gt.txt"));
 	ASSERT_EQ(rows.size(), 4u);
 	for (size_t i = 0; i < rows.size(); i++)
 		EXPECT_NEAR(std::stod(rows[i]), static_cast<double>(kTimesNs[i]) * 1e-9, 0.003) << rows[i];

@@ -230,7 +230,7 @@ struct LiveSensor::Worker
 					}
 				}
 			}
-			catch (const mrpt::serialization::CExceptionEOF& e)
+			catch (const mrpt::serialization::CExceptionEOF&)
 			{
 				if (!replay) throw;	// not expected from a device: as any error
 				// The recording is over: nothing more will come; no restart.
