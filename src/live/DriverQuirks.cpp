@@ -28,10 +28,7 @@ void DriverQuirks::correct(const std::string& driver, mrpt::obs::CObservation& o
 	for (size_t i = 0; i < scan->getScanSize(); i++)
 		if (scan->getScanRange(i) <= 0) scan->setScanRangeValidity(i, false);
 }
-}  // namespace featloc
 
-namespace featloc
-{
 bool DriverQuirks::replaysRecording(
 	const std::string& driver, const mrpt::config::CConfigFileBase& cfg, const std::string& section)
 {

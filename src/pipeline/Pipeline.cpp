@@ -230,15 +230,15 @@ void Pipeline::processStep(
 	// check's factor (1 while the log's covariance agrees with the matches).
 	// A step without odometry moves as the estimate has lately (its
 	// covariance stays the no_odometry_* prior's).
-	EstimationStep withPrior = logStep;
+	EstimationStep step = logStep;
 	if (!logStep.hasOdometry && logStep.index > 0 &&
 		m_odometry.no_odometry_prior == "constant_velocity")
 		if (const auto motion = m_velocityPrior.motionTo(logStep.time))
 		{
-			withPrior.odometry.mean = *motion;
+			step.odometry.mean = *motion;
 			stats.stepsWithVelocityPrior++;
 		}
-	EstimationStep step = withPrior;
+	const mrpt::poses::CPosePDFGaussian unscaledOdometry = step.odometry;
 	step.odometry.cov *= m_odometryCheck.scale();
 	if (m_odometry.action_sampling_offset && step.odometryFromActions)
 		step.odometrySamplingCovariance = OdometrySamplingOffset::ofReading(step.odometry.mean);
@@ -250,7 +250,7 @@ void Pipeline::processStep(
 		m_estimator->start(m_options.initialPose(), step);
 	else
 	{
-		m_odometrySinceKeyframe += withPrior.odometry;
+		m_odometrySinceKeyframe += unscaledOdometry;
 		if (m_estimator->usesScanMatcher() && step.scan && m_keyframeScan)
 		{
 			match = matchToKeyframe(step);
