@@ -484,6 +484,10 @@ TEST(EkfLocalizer, IncrementalJointDistanceEqualsTheStackedOne)
 	f.updateLandmarks(first);
 	ASSERT_EQ(f.landmarkCount(), 5u);
 	f.predict(gaussian(CPose2D(0.3, 0.1, 0.05), 0.01, 0.01, 0.001));
+	// A held match: the distances are against the belief, not the state.
+	f.holdRelativeMotion(gaussian(CPose2D(0.27, 0.12, 0.04), 0.005, 0.005, 0.001));
+	const EkfLocalizer::Belief b = f.belief();
+	ASSERT_GT((b.x - f.state()).norm(), 0.01);
 	std::vector<LandmarkObservation> obs;
 	for (int k = 0; k < 5; k++) obs.push_back(observation(0.75 + k, 0.5 * k - 1.1, 0.05));
 	// The stacked distance, computed densely.
@@ -496,17 +500,17 @@ TEST(EkfLocalizer, IncrementalJointDistanceEqualsTheStackedOne)
 		{
 			Eigen::Matrix<double, 2, 3> Hr;
 			Eigen::Matrix2d Hl;
-			const auto h = f.predictObservation(pairs[a].second, &Hr, &Hl);
+			const auto h = f.predictObservation(b.x, pairs[a].second, &Hr, &Hl);
 			const Eigen::Index r = 2 * static_cast<Eigen::Index>(a);
 			H.block<2, 3>(r, 0) = Hr;
 			H.block<2, 2>(r, f.landmarkIndex(pairs[a].second)) = Hl;
 			nu.segment<2>(r) = obs[pairs[a].first].position - h;
 			R.block<2, 2>(r, r) = obs[pairs[a].first].covariance;
 		}
-		const Eigen::MatrixXd S = H * f.covariance() * H.transpose() + R;
+		const Eigen::MatrixXd S = H * b.P * H.transpose() + R;
 		return nu.dot(S.ldlt().solve(nu));
 	};
-	LandmarkJointInnovation joint(f, obs);
+	LandmarkJointInnovation joint(f, b, obs);
 	std::vector<std::pair<size_t, size_t>> pairs;
 	const std::vector<std::pair<size_t, size_t>> order{{0, 0}, {1, 1}, {2, 3}, {3, 3}, {4, 4}};
 	for (const auto& [i, j] : order)

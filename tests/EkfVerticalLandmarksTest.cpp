@@ -113,6 +113,15 @@ TEST(EkfVerticalLandmarks, UpdateEqualsDenseEkfWithNumericJacobians)
 	std::vector<VerticalLandmarkObservation> z{
 		seen({0.52, 0.1, 0.16}, l1, 0.03, 0.02), seen({0.52, 0.1, 0.16}, l2, 0.03, 0.02, 0, -1)};
 	z[1].sigmaHigh = 0;	 // top end cut by the image border
+	// Both on wall 0: one plane fit moves both (its error in R's cross terms).
+	const Eigen::Matrix2d planeCov = Eigen::Vector2d(2e-4, 4e-5).asDiagonal();
+	z[0].planeJacobian << 0.9, 0.4, 0.1, -0.2;
+	z[1].planeJacobian << 0.8, 1.3, -0.1, 0.3;
+	for (auto& o : z)
+	{
+		o.planeCovariance = planeCov;
+		o.covariance += o.planeJacobian * planeCov * o.planeJacobian.transpose();
+	}
 	const auto u = f.updateVerticalLandmarks(z);
 	ASSERT_EQ(u.used, 2u);
 
@@ -135,6 +144,8 @@ TEST(EkfVerticalLandmarks, UpdateEqualsDenseEkfWithNumericJacobians)
 	Eigen::MatrixXd R = Eigen::MatrixXd::Zero(7, 7);
 	R.block(0, 0, 4, 4) = VerticalLandmarkConstraint(z[0]).noise();
 	R.block(4, 4, 3, 3) = VerticalLandmarkConstraint(z[1]).noise();
+	R.block(0, 4, 2, 2) = z[0].planeJacobian * planeCov * z[1].planeJacobian.transpose();
+	R.block(4, 0, 2, 2) = R.block(0, 4, 2, 2).transpose();
 	const Eigen::MatrixXd S = H * P0 * H.transpose() + R;
 	const Eigen::MatrixXd K = P0 * H.transpose() * S.inverse();
 	const Eigen::VectorXd x1 = x0 - K * G(x0);
@@ -173,6 +184,69 @@ TEST(EkfVerticalLandmarks, StartsOnTheWallUncorrelatedWithTheRobotAndConstrainsI
 	EXPECT_LT(std::sqrt(r.cov(1, 1)), 0.03);  // across the wall: was 0.3 m
 	EXPECT_LT(std::sqrt(r.cov(2, 2)), 0.02);  // heading: was 0.2 rad
 	EXPECT_LT(std::sqrt(r.cov(0, 0)), 0.06);  // along: bounded by the landmarks' 3 cm
+}
+
+// Landmarks started in one frame from one boundary share its error:
+// their cross-covariance is that boundary's part (section 3.3), not zero;
+// another wall's boundary is another error.
+TEST(EkfVerticalLandmarks, LandmarksStartedFromOneBoundaryShareItsError)
+{
+	EkfLocalizer f;
+	f.reset(gaussian(CPose2D(0, 0, M_PI / 2), 0.01, 0.001));
+	const Eigen::Vector3d X(0, 0, M_PI / 2);
+	const Eigen::Matrix2d shared = Eigen::Vector2d(0.02 * 0.02, 0).asDiagonal();
+	std::vector<VerticalLandmarkObservation> z{startable(X, {-1.0, 4.0, 0.2, 1.5}, 0.03),
+		startable(X, {0.5, 4.0, 0.2, 1.5}, 0.03), startable(X, {2.0, 4.0, 0.2, 1.5}, 0.03, 1)};
+	for (auto& o : z) o.startSharedCovariance = shared;
+	f.updateVerticalLandmarks(z);
+	ASSERT_EQ(f.landmarkCount(), 3u);
+	const auto& P = f.covariance();
+	const Eigen::Index k0 = f.landmarkIndex(0), k1 = f.landmarkIndex(1), k2 = f.landmarkIndex(2);
+	EXPECT_LT((P.block<2, 2>(k0, k1) - shared).cwiseAbs().maxCoeff(), 1e-15);
+	const double other02 = P.block<2, 2>(k0, k2).cwiseAbs().maxCoeff();
+	const double other12 = P.block<2, 2>(k1, k2).cwiseAbs().maxCoeff();
+	EXPECT_EQ(other02, 0.0);
+	EXPECT_EQ(other12, 0.0);
+	EXPECT_NEAR(P(k0, k0), 0.03 * 0.03, 1e-12);
+	EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(P).eigenvalues().minCoeff(), -1e-15);
+}
+
+// With a match held (the keyframe's), the filter's belief lies the match's
+// correction away from its state. A stereo pair is paired and linearized at
+// the belief: fused then, it gives the posterior of committing the match
+// first. The bug it fixes: the state was 10 cm and 2 deg off on moon-lab,
+// and a line 30 cm from the one seen was paired.
+TEST(EkfVerticalLandmarks, PairsAndLinearizesAtTheBeliefWhileAMatchIsHeld)
+{
+	const Eigen::Vector3d X0(0, 0, M_PI / 2);
+	const Eigen::Vector4d l1(0.0, 4.0, 0.2, 1.5), l2(0.3, 4.0, 0.2, 1.5);
+	auto build = [&]() {
+		EkfLocalizer f;
+		f.reset(gaussian(CPose2D(X0.x(), X0.y(), X0.z()), 1e-6, 1e-8));
+		f.updateVerticalLandmarks({startable(X0, l1, 0.01), startable(X0, l2, 0.01)});
+		// Odometry says 0.5 m ahead and 0.3 m to the left (world -x); the
+		// robot went 0.5 m ahead: the state is 0.3 m off, the match exact.
+		f.predict(gaussian(CPose2D(0.5, 0.3, 0), 0.04, 0.003));
+		f.holdRelativeMotion(gaussian(CPose2D(0.5, 0.0, 0), 1e-4, 1e-5));
+		return f;
+	};
+	const Eigen::Vector3d X(0, 0.5, M_PI / 2);
+	// l2 seen from where the robot is; from the state it is where l1 is.
+	const std::vector<VerticalLandmarkObservation> z{seen(X, l2, 0.01, 0.01)};
+	EkfLocalizer held = build();
+	ASSERT_GT((held.belief().x - held.state()).head<2>().norm(), 0.25);
+	const auto u = held.updateVerticalLandmarks(z);
+	EXPECT_EQ(u.landmarkOf, (std::vector<int>{1}));
+	EkfLocalizer committed = build();
+	committed.commitHeldMotion();
+	const auto v = committed.updateVerticalLandmarks(z);
+	EXPECT_EQ(v.landmarkOf, (std::vector<int>{1}));
+	EXPECT_NEAR(u.jointMahalanobis2, v.jointMahalanobis2, 1e-3);
+	const auto a = held.robotPose(), b = committed.robotPose();
+	EXPECT_LT(std::hypot(a.mean.x() - b.mean.x(), a.mean.y() - b.mean.y()), 1e-4);
+	EXPECT_LT(std::abs(a.mean.phi() - b.mean.phi()), 1e-5);
+	EXPECT_LT((a.cov.asEigen() - b.cov.asEigen()).cwiseAbs().maxCoeff(), 1e-8);
+	EXPECT_LT(std::hypot(a.mean.x() - X.x(), a.mean.y() - X.y()), 0.01);
 }
 
 TEST(EkfVerticalLandmarks, PairsOnlyOnItsWallWithItsPolarity)
@@ -268,11 +342,18 @@ TEST(EkfVerticalLandmarks, ProbationCountsTheStereoPairsNotThePredictions)
 	EXPECT_NEAR(f.state()[f.landmarkIndex(0)], 0.5, 0.05);
 }
 
-// The robot drives 2 m along a wall with landmarks started on-line from the
-// first frame, odometry noise and observation noise drawn from the models
-// the filter is given: the robot's NEES averaged over runs lies inside the
-// chi-square 95% band (3 dof), at the end of the run.
-TEST(EkfVerticalLandmarks, MonteCarloNeesIsConsistent)
+namespace
+{
+/** The robot drives 2 m along a wall with landmarks started on-line from
+ * the first frame, odometry noise and observation noise drawn from the
+ * models the filter is given; returns the robot's NEES at the end of the
+ * run averaged over runs. With `shared`, the errors are those of the
+ * extractor: the landmarks started in one frame share their boundary's
+ * error along the wall (section 3.3), and the observations of one frame
+ * share their plane fit's error (eq. 11), each declared to the filter
+ * (startSharedCovariance, planeJacobian/planeCovariance); `declared`
+ * false draws the same errors but declares them as independent. */
+double monteCarloNees(bool shared, bool declared)
 {
 	// Its own generator: MRPT's global one carries state (a cached Gaussian
 	// draw) from earlier tests in the process past randomize(), which made
@@ -280,6 +361,10 @@ TEST(EkfVerticalLandmarks, MonteCarloNeesIsConsistent)
 	mrpt::random::CRandomGenerator rng(7);
 	const int runs = 200, steps = 20;
 	const double sOdo = 0.02, sYaw = 0.01, sObs = 0.02, sEnd = 0.02, sAlong = 0.03;
+	// Shared parts: the boundary's along the wall, the plane fit's depth
+	// offset a [m] and slope b of w = a + b s.
+	const double sBoundary = shared ? 0.025 : 0, sPlaneA = shared ? 0.015 : 0, sPlaneB = shared ? 0.01 : 0;
+	const Eigen::Matrix2d planeCov = Eigen::Vector2d(sPlaneA * sPlaneA, sPlaneB * sPlaneB).asDiagonal();
 	std::vector<Eigen::Vector4d> truth;
 	for (int k = 0; k < 5; k++) truth.emplace_back(-1.0 + 0.8 * k, 4.0, 0.1 * k, 1.5 + 0.1 * k);
 	double nees = 0;
@@ -290,18 +375,36 @@ TEST(EkfVerticalLandmarks, MonteCarloNeesIsConsistent)
 		f.reset(gaussian(CPose2D(X.x(), X.y(), X.z()), 1e-8, 1e-10));
 		auto observe = [&](bool start) {
 			std::vector<VerticalLandmarkObservation> z;
+			const Eigen::Vector2d planeErr(rng.drawGaussian1D(0, sPlaneA), rng.drawGaussian1D(0, sPlaneB));
+			const double boundaryErr = rng.drawGaussian1D(0, sBoundary);
 			for (const auto& l : truth)
 			{
 				// The start position's error along the wall is common to the
 				// landmark's life: drawn once per run (a landmark's start is
 				// its eq. 15 estimate).
 				auto o = start ? startable(X, l, sAlong) : seen(X, l, sObs, sEnd);
-				o.position += Eigen::Vector2d(rng.drawGaussian1D(0, sObs), rng.drawGaussian1D(0, sObs));
-				o.covariance = Eigen::Matrix2d::Identity() * sObs * sObs;
+				// The plane fit moves the point across the wall (robot x,
+				// facing it) by a + b s, s along the wall (robot y).
+				Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+				J(0, 0) = 1;
+				J(0, 1) = o.position.y();
+				o.position += Eigen::Vector2d(rng.drawGaussian1D(0, sObs), rng.drawGaussian1D(0, sObs)) + J * planeErr;
+				o.covariance = Eigen::Matrix2d::Identity() * sObs * sObs + J * planeCov * J.transpose();
+				if (declared)
+				{
+					o.planeJacobian = J;
+					o.planeCovariance = planeCov;
+				}
 				o.lLow += rng.drawGaussian1D(0, sEnd);
 				o.lHigh += rng.drawGaussian1D(0, sEnd);
 				o.sigmaLow = o.sigmaHigh = sEnd;
-				if (start) o.start.x() += rng.drawGaussian1D(0, sAlong);
+				if (start)
+				{
+					o.start.x() += rng.drawGaussian1D(0, sAlong) + boundaryErr;
+					const double v = sAlong * sAlong + sBoundary * sBoundary;
+					o.startCovariance = Eigen::Vector2d(v, 0).asDiagonal();
+					if (declared) o.startSharedCovariance = Eigen::Vector2d(sBoundary * sBoundary, 0).asDiagonal();
+				}
 				z.push_back(o);
 			}
 			return z;
@@ -324,9 +427,33 @@ TEST(EkfVerticalLandmarks, MonteCarloNeesIsConsistent)
 		Eigen::Vector3d e(r.mean.x() - X.x(), r.mean.y() - X.y(), mrpt::math::wrapToPi(r.mean.phi() - X.z()));
 		nees += e.dot(r.cov.asEigen().ldlt().solve(e));
 	}
-	nees /= runs;
-	// 95% band of the mean of `runs` chi-square(3) draws.
-	const double lo = mrpt::math::chi2inv(0.025, 3 * runs) / runs, hi = mrpt::math::chi2inv(0.975, 3 * runs) / runs;
+	return nees / runs;
+}
+
+// 95% band of the mean of `runs` chi-square(3) draws.
+std::pair<double, double> neesBand(int runs)
+{
+	return {mrpt::math::chi2inv(0.025, 3 * runs) / runs, mrpt::math::chi2inv(0.975, 3 * runs) / runs};
+}
+}  // namespace
+
+TEST(EkfVerticalLandmarks, MonteCarloNeesIsConsistent)
+{
+	const auto [lo, hi] = neesBand(200);
+	const double nees = monteCarloNees(false, false);
 	EXPECT_GT(nees, lo);
 	EXPECT_LT(nees, hi);
+}
+
+// The boundary error shared by the landmarks started in one frame and the
+// plane fit shared by the observations of one frame: declared, the filter
+// stays consistent; declared as independent (eq. 17 and eq. 14 alone), it
+// counts each shared error once per feature and is overconfident.
+TEST(EkfVerticalLandmarks, MonteCarloNeesIsConsistentWithSharedBoundaryAndPlaneErrors)
+{
+	const auto [lo, hi] = neesBand(200);
+	const double nees = monteCarloNees(true, true);
+	EXPECT_GT(nees, lo);
+	EXPECT_LT(nees, hi);
+	EXPECT_GT(monteCarloNees(true, false), hi);
 }

@@ -242,6 +242,25 @@ TEST(StableVerticalLandmarks, PlaneConstraintIsTheExactLinearGaussianPosterior)
 	// The posterior lies on the line within its own uncertainty.
 	const Eigen::Vector2d sw = f.toPlane(post);
 	EXPECT_LT(std::abs(sw.y() - f.line.x() - f.line.y() * sw.x()), 3 * std::sqrt(var));
+	// d(point)/d(a, b), the share every point on this fit has in its error:
+	// against central differences of the line, for a point on the line
+	// (G = 0: the first order Pout is built on).
+	const Eigen::Vector2d onLine = f.fromPlane({L.x(), f.line.x() + f.line.y() * L.x()});
+	Eigen::Matrix2d dLine, unused;
+	f.constrain(onLine, P, unused, nullptr, &dLine);
+	// Pout holds that share (Joseph form: (I - KH) P (I - KH)^T + K Sigma_V
+	// K^T): what is left is a covariance, or the joint covariance of two
+	// points on the fit would not be one.
+	const Eigen::Matrix2d own = Pout - dLine * f.lineCovariance * dLine.transpose();
+	EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(own).eigenvalues().minCoeff(), -1e-15);
+	for (int k = 0; k < 2; k++)
+	{
+		PlaneFit hi = f, lo = f;
+		hi.line[k] += 1e-6;
+		lo.line[k] -= 1e-6;
+		const Eigen::Vector2d fd = (hi.constrain(onLine, P, unused) - lo.constrain(onLine, P, unused)) / 2e-6;
+		EXPECT_LT((fd - dLine.col(k)).norm(), 1e-7) << "line parameter " << k;
+	}
 }
 
 TEST(StableVerticalLandmarks, PaperSceneFeaturesAreWithinTwoSigmaOfTheTruth)

@@ -154,6 +154,22 @@ double EkfLocalizer::update(
 	return nu.dot(Sinvnu);
 }
 
+double EkfLocalizer::updateAtBelief(const Belief& b, const std::vector<Eigen::Index>& cols,
+	const Eigen::MatrixXd& Hc, const Eigen::VectorXd& nuAtBelief, const Eigen::MatrixXd& R)
+{
+	Eigen::VectorXd d(static_cast<Eigen::Index>(cols.size()));
+	for (size_t a = 0; a < cols.size(); a++)
+	{
+		const Eigen::Index i = cols[a];
+		d[static_cast<Eigen::Index>(a)] = b.x[i] - m_x[i];
+		if (i == kRobot + 2 || i == kClone + 2 || i == kMatchClone + 2)
+			d[static_cast<Eigen::Index>(a)] = mrpt::math::wrapToPi(d[static_cast<Eigen::Index>(a)]);
+	}
+	update(cols, Hc, nuAtBelief + Hc * d, R);
+	const Eigen::MatrixXd S = Hc * b.P(cols, cols) * Hc.transpose() + R;
+	return nuAtBelief.dot(S.ldlt().solve(nuAtBelief));
+}
+
 Eigen::Vector3d EkfLocalizer::predictRelativeMotion(
 	Eigen::Index from, Eigen::Matrix3d* Ha, Eigen::Matrix3d* Hc) const
 {
@@ -223,14 +239,15 @@ EkfLocalizer::MotionUpdate EkfLocalizer::gate(const Eigen::VectorXd& nu, const E
 EkfLocalizer::MotionUpdate EkfLocalizer::updateAbsolutePose(
 	const mrpt::poses::CPosePDFGaussian& z, double gateChi2)
 {
+	const Belief b = belief();
 	const std::vector<Eigen::Index> cols = {kRobot, kRobot + 1, kRobot + 2};
 	const Eigen::MatrixXd H = Eigen::Matrix3d::Identity();
 	Eigen::VectorXd nu(3);
-	nu << z.mean.x() - m_x[kRobot], z.mean.y() - m_x[kRobot + 1],
-		mrpt::math::wrapToPi(z.mean.phi() - m_x[kRobot + 2]);
-	const Eigen::MatrixXd S = P()(cols, cols) + z.cov.asEigen();
+	nu << z.mean.x() - b.x[kRobot], z.mean.y() - b.x[kRobot + 1],
+		mrpt::math::wrapToPi(z.mean.phi() - b.x[kRobot + 2]);
+	const Eigen::MatrixXd S = b.P(cols, cols) + z.cov.asEigen();
 	const MotionUpdate out = gate(nu, S, gateChi2, "the map match", "gate_chi2");
-	if (out.used) update(cols, H, nu, z.cov.asEigen());
+	if (out.used) updateAtBelief(b, cols, H, nu, z.cov.asEigen());
 	return out;
 }
 
@@ -283,9 +300,15 @@ std::optional<EkfLocalizer::HeldCorrection> EkfLocalizer::heldCorrection() const
 Eigen::Vector2d EkfLocalizer::predictObservation(
 	size_t j, Eigen::Matrix<double, 2, 3>* Hr, Eigen::Matrix2d* Hl) const
 {
+	return predictObservation(m_x, j, Hr, Hl);
+}
+
+Eigen::Vector2d EkfLocalizer::predictObservation(
+	const Eigen::VectorXd& x, size_t j, Eigen::Matrix<double, 2, 3>* Hr, Eigen::Matrix2d* Hl) const
+{
 	const Eigen::Index k = landmarkIndex(j);
-	const double th = m_x[kRobot + 2];
-	const Eigen::Vector2d d = m_x.segment<2>(k) - m_x.segment<2>(kRobot);
+	const double th = x[kRobot + 2];
+	const Eigen::Vector2d d = x.segment<2>(k) - x.segment<2>(kRobot);
 	const Eigen::Matrix2d Rt = rotation(th).transpose();
 	if (Hr)
 	{
@@ -296,16 +319,16 @@ Eigen::Vector2d EkfLocalizer::predictObservation(
 	return Rt * d;
 }
 
-double EkfLocalizer::individualDistance2(const LandmarkObservation& o, size_t j) const
+double EkfLocalizer::individualDistance2(const Belief& b, const LandmarkObservation& o, size_t j) const
 {
 	Eigen::Matrix<double, 2, 3> Hr;
 	Eigen::Matrix2d Hl;
-	const Eigen::Vector2d nu = o.position - predictObservation(j, &Hr, &Hl);
+	const Eigen::Vector2d nu = o.position - predictObservation(b.x, j, &Hr, &Hl);
 	const Eigen::Index k = landmarkIndex(j);
 	const std::array<Eigen::Index, 5> idx{kRobot, kRobot + 1, kRobot + 2, k, k + 1};
 	Eigen::Matrix<double, 2, 5> H;
 	H << Hr, Hl;
-	const Eigen::Matrix2d S = H * P()(idx, idx) * H.transpose() + o.covariance;
+	const Eigen::Matrix2d S = H * b.P(idx, idx) * H.transpose() + o.covariance;
 	return nu.dot(S.ldlt().solve(nu));
 }
 
@@ -314,6 +337,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 {
 	m_pointFrames++;
 	pruneLandmarks(false);
+	const Belief b = belief();
 	LandmarkUpdate out;
 	out.observed = obs.size();
 	const size_t n = obs.size(), L = m_info.size();
@@ -339,7 +363,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 			for (size_t j = 0; j < L; j++)
 				if (!m_info[j].vertical() && m_info[j].id == obs[i].id)
 				{
-					if (individualDistance2(obs[i], j) <= gate2)
+					if (individualDistance2(b, obs[i], j) <= gate2)
 					{
 						pairing[i] = static_cast<int>(j);
 						knownPairs.emplace_back(i, j);
@@ -358,7 +382,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 		for (size_t j = 0; j < L; j++)
 		{
 			if (m_info[j].id >= 0 || m_info[j].vertical()) continue;  // identified landmarks pair by id only
-			const double d2 = individualDistance2(obs[i], j);
+			const double d2 = individualDistance2(b, obs[i], j);
 			if (d2 <= gate2) scored[i].emplace_back(d2, j);
 			if (d2 <= newGate2) nearSome[i] = 1;
 		}
@@ -371,7 +395,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 	if (options.data_association == "jcbb")
 	{
 		// The known identities are the base every hypothesis extends.
-		LandmarkJointInnovation joint(*this, obs);
+		LandmarkJointInnovation joint(*this, b, obs);
 		for (const auto& [i, j] : knownPairs) joint.push(i, j);
 		const auto best = JointCompatibilityBranchAndBound::solve(
 			candidates, joint,
@@ -411,7 +435,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 			const auto [i, j] = pairs[a];
 			Eigen::Matrix<double, 2, 3> Hr;
 			Eigen::Matrix2d Hl;
-			const Eigen::Vector2d h = predictObservation(j, &Hr, &Hl);
+			const Eigen::Vector2d h = predictObservation(b.x, j, &Hr, &Hl);
 			const Eigen::Index row = 2 * static_cast<Eigen::Index>(a);
 			H.block<2, 3>(row, 0) = Hr;
 			H.block<2, 2>(row, 3 + row) = Hl;
@@ -420,7 +444,7 @@ EkfLocalizer::LandmarkUpdate EkfLocalizer::updateLandmarks(
 			nu.segment<2>(row) = obs[i].position - h;
 			R.block<2, 2>(row, row) = obs[i].covariance;
 		}
-		out.jointMahalanobis2 = update(cols, H, nu, R);
+		out.jointMahalanobis2 = updateAtBelief(b, cols, H, nu, R);
 		for (const auto& [i, j] : pairs) m_info[j].observations++;
 		out.associated = pairs.size();
 	}
@@ -515,6 +539,18 @@ mrpt::poses::CPosePDFGaussian EkfLocalizer::robotPose() const
 	auto p = poseAt(m_x, covariance().block<3, 3>(kRobot, kRobot), kRobot);
 	if (const auto c = heldCorrection()) applyCorrection(*c, kRobot, p);
 	return p;
+}
+
+EkfLocalizer::Belief EkfLocalizer::belief() const
+{
+	Belief b{m_x, covariance()};
+	if (const auto c = heldCorrection())
+	{
+		b.x += c->K * c->nu;
+		for (const Eigen::Index k : {kRobot, kClone, kMatchClone}) b.x[k + 2] = mrpt::math::wrapToPi(b.x[k + 2]);
+		b.P -= c->K * c->S * c->K.transpose();
+	}
+	return b;
 }
 
 mrpt::poses::CPosePDFGaussian EkfLocalizer::keyframePose() const

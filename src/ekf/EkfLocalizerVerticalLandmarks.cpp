@@ -24,20 +24,20 @@ constexpr double kAcrossWallVariance = 1e-6;
 constexpr double kUnobservedEndVariance = 1.0;
 }  // namespace
 
-double EkfLocalizer::verticalDistance2(const VerticalLandmarkObservation& z, size_t j) const
+double EkfLocalizer::verticalDistance2(const Belief& b, const VerticalLandmarkObservation& z, size_t j) const
 {
 	const VerticalLandmarkConstraint g(z);
 	const Eigen::Index k = m_info[j].index;
 	Eigen::MatrixXd GX, Gl;
-	const Eigen::VectorXd nu = -g.evaluate(m_x.segment<3>(kRobot), m_x.segment<4>(k), &GX, &Gl);
+	const Eigen::VectorXd nu = -g.evaluate(b.x.segment<3>(kRobot), b.x.segment<4>(k), &GX, &Gl);
 	const std::vector<Eigen::Index> idx{kRobot, kRobot + 1, kRobot + 2, k, k + 1, k + 2, k + 3};
 	Eigen::MatrixXd H(g.size(), 7);
 	H << GX, Gl;
-	const Eigen::MatrixXd S = H * P()(idx, idx) * H.transpose() + g.noise();
+	const Eigen::MatrixXd S = H * b.P(idx, idx) * H.transpose() + g.noise();
 	return nu.dot(S.ldlt().solve(nu));
 }
 
-EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(
+EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(const Belief& b,
 	const std::vector<VerticalLandmarkObservation>& obs, const std::vector<int>& pairing,
 	const std::vector<std::pair<double, size_t>>& paired) const
 {
@@ -51,8 +51,8 @@ EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(
 		VerticalLandmarkObservation z = obs[pr.second];
 		const Eigen::Index k = m_info[static_cast<size_t>(pairing[pr.second])].index;
 		auto check = [&](double measured, double& sigma, Eigen::Index e) {
-			const double d = measured - m_x[e];
-			if (sigma > 0 && d * d > endGate2 * (sigma * sigma + P()(e, e))) sigma = 0;
+			const double d = measured - b.x[e];
+			if (sigma > 0 && d * d > endGate2 * (sigma * sigma + b.P(e, e))) sigma = 0;
 		};
 		check(z.lLow, z.sigmaLow, k + 2);
 		check(z.lHigh, z.sigmaHigh, k + 3);
@@ -72,11 +72,26 @@ EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(
 		const VerticalLandmarkConstraint g(used[a]);
 		const Eigen::Index k = m_info[j].index, r = g.size();
 		Eigen::MatrixXd GX, Gl;
-		st.nu.segment(row, r) = -g.evaluate(m_x.segment<3>(kRobot), m_x.segment<4>(k), &GX, &Gl);
+		st.nu.segment(row, r) = -g.evaluate(b.x.segment<3>(kRobot), b.x.segment<4>(k), &GX, &Gl);
 		st.H.block(row, 0, r, 3) = GX;
 		st.H.block(row, col, r, 4) = Gl;
 		st.R.block(row, row, r, r) = g.noise();
 		for (Eigen::Index c = 0; c < 4; c++) st.cols.push_back(k + c);
+		// The observations of one wall share its plane fit: their
+		// positions' (rows 0-1) cross-covariance.
+		Eigen::Index rowB = 0;
+		for (size_t b2 = 0; b2 < a; b2++)
+		{
+			const auto& zb = used[b2];
+			if (zb.wall == used[a].wall)
+			{
+				const Eigen::Matrix2d C =
+					used[a].planeJacobian * used[a].planeCovariance * zb.planeJacobian.transpose();
+				st.R.block<2, 2>(row, rowB) = C;
+				st.R.block<2, 2>(rowB, row) = C.transpose();
+			}
+			rowB += VerticalLandmarkConstraint(zb).size();
+		}
 		row += r;
 		col += 4;
 	}
@@ -88,6 +103,7 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 {
 	m_verticalFrames++;
 	pruneLandmarks(true);
+	const Belief b = belief();
 	VerticalUpdate out;
 	out.observed = obs.size();
 	out.landmarkOf.assign(obs.size(), -1);
@@ -105,10 +121,10 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 		if (!info.vertical() || info.wall != z.wall || info.polarity != z.polarity)
 			return std::numeric_limits<double>::infinity();
 		const Eigen::Index k = info.index;
-		if (z.lHigh < m_x[k + 2] || z.lLow > m_x[k + 3]) return std::numeric_limits<double>::infinity();
+		if (z.lHigh < b.x[k + 2] || z.lLow > b.x[k + 3]) return std::numeric_limits<double>::infinity();
 		VerticalLandmarkObservation position = z;
 		position.sigmaLow = position.sigmaHigh = 0;
-		return verticalDistance2(position, j);
+		return verticalDistance2(b, position, j);
 	};
 	for (size_t i = 0; i < obs.size(); i++)
 		for (size_t j = 0; j < L; j++)
@@ -132,7 +148,7 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 		if (pairing[i] >= 0)
 		{
 			const Eigen::Index k = m_info[static_cast<size_t>(pairing[i])].index;
-			paired.emplace_back(P()(k, k) + P()(k + 1, k + 1), i);
+			paired.emplace_back(b.P(k, k) + b.P(k + 1, k + 1), i);
 		}
 	out.associated = paired.size();
 	std::sort(paired.begin(), paired.end());
@@ -145,16 +161,16 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 	VerticalStack joint;  // of the pairs left: the update's terms
 	while (!paired.empty())
 	{
-		joint = stackVertical(obs, pairing, paired);
+		joint = stackVertical(b, obs, pairing, paired);
 		const double limit = mrpt::math::chi2inv(p, static_cast<unsigned>(joint.nu.size()));
 		const double d2 = joint.nu.dot(
-			(joint.H * P()(joint.cols, joint.cols) * joint.H.transpose() + joint.R).ldlt().solve(joint.nu));
+			(joint.H * b.P(joint.cols, joint.cols) * joint.H.transpose() + joint.R).ldlt().solve(joint.nu));
 		if (d2 <= limit) break;
 		size_t worst = 0;
 		double worstD2 = -1;
 		for (size_t a = 0; a < paired.size(); a++)
 		{
-			const double da = verticalDistance2(obs[paired[a].second], static_cast<size_t>(pairing[paired[a].second]));
+			const double da = verticalDistance2(b, obs[paired[a].second], static_cast<size_t>(pairing[paired[a].second]));
 			if (da > worstD2) worstD2 = da, worst = a;
 		}
 		pairing[paired[worst].second] = -1;
@@ -163,7 +179,7 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 	}
 	if (!paired.empty())
 	{
-		out.jointMahalanobis2 = update(joint.cols, joint.H, joint.nu, joint.R);
+		out.jointMahalanobis2 = updateAtBelief(b, joint.cols, joint.H, joint.nu, joint.R);
 		for (const auto& pr : paired)
 		{
 			const size_t j = static_cast<size_t>(pairing[pr.second]);
@@ -192,8 +208,11 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 			if (nearSome || o.wall != obs[i].wall || o.polarity != obs[i].polarity ||
 				o.lHigh < obs[i].lLow || o.lLow > obs[i].lHigh)
 				continue;
+			// Their common boundary error cancels in the difference.
 			const Eigen::Vector2d d = o.start - obs[i].start;
-			const double var = (o.startCovariance + obs[i].startCovariance).trace() + 2 * kAcrossWallVariance;
+			const double var =
+				(o.startCovariance + obs[i].startCovariance - 2 * o.startSharedCovariance).trace() +
+				2 * kAcrossWallVariance;
 			nearSome = d.squaredNorm() <= mrpt::math::chi2inv(options.landmark_new_probability, 1) * var;
 		}
 		if (nearSome)
@@ -217,7 +236,15 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 		info.wall = z.wall;
 		info.polarity = z.polarity;
 		// Relative to the map's edge: uncorrelated with the robot (eq. 17).
-		appendLandmark(mean, cov, Eigen::MatrixXd::Zero(4, m_x.size()), info);
+		// Correlated with the landmarks started from the same boundary in
+		// this frame (same wall) by that boundary's error: without it, N of
+		// them would make the robot believe the boundary known sqrt(N)
+		// times better than it is.
+		Eigen::MatrixXd cross = Eigen::MatrixXd::Zero(4, m_x.size());
+		for (size_t a = 0; a < started.size(); a++)
+			if (obs[started[a]].wall == z.wall)
+				cross.block<2, 2>(0, m_info[firstNew + a].index) = z.startSharedCovariance;
+		appendLandmark(mean, cov, cross, info);
 		out.landmarkOf[i] = static_cast<int>(m_info.size() - 1);
 		out.added++;
 		started.push_back(i);

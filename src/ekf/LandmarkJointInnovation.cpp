@@ -17,9 +17,9 @@ std::array<Eigen::Index, 5> blockIndices(const EkfLocalizer& f, size_t landmark)
 }
 }  // namespace
 
-LandmarkJointInnovation::LandmarkJointInnovation(
-	const EkfLocalizer& filter, const std::vector<LandmarkObservation>& observations)
-	: m_f(filter), m_obs(observations)
+LandmarkJointInnovation::LandmarkJointInnovation(const EkfLocalizer& filter,
+	const EkfLocalizer::Belief& belief, const std::vector<LandmarkObservation>& observations)
+	: m_f(filter), m_b(belief), m_obs(observations)
 {
 }
 
@@ -29,9 +29,9 @@ double LandmarkJointInnovation::push(size_t i, size_t j)
 	pr.landmark = j;
 	Eigen::Matrix<double, 2, 3> Hr;
 	Eigen::Matrix2d Hl;
-	pr.nu = m_obs[i].position - m_f.predictObservation(j, &Hr, &Hl);
+	pr.nu = m_obs[i].position - m_f.predictObservation(m_b.x, j, &Hr, &Hl);
 	pr.H << Hr, Hl;
-	const auto& P = m_f.covariance();
+	const auto& P = m_b.P;
 	const auto idx = blockIndices(m_f, j);
 	const Eigen::Matrix2d c = pr.H * P(idx, idx) * pr.H.transpose() + m_obs[i].covariance;
 

@@ -5,7 +5,8 @@
 namespace featloc
 {
 Eigen::Vector2d PlaneFit::constrain(
-	const Eigen::Vector2d& c, const Eigen::Matrix2d& P, Eigen::Matrix2d& Pout, double* mahalanobis2) const
+	const Eigen::Vector2d& c, const Eigen::Matrix2d& P, Eigen::Matrix2d& Pout, double* mahalanobis2,
+	Eigen::Matrix2d* dLine) const
 {
 	// To the plane frame: L = (s, w) = R^T (c - o), R = [e n].
 	Eigen::Matrix2d R;
@@ -28,6 +29,10 @@ Eigen::Vector2d PlaneFit::constrain(
 	PLhat = 0.5 * (PLhat + PLhat.transpose()).eval();
 	if (mahalanobis2) *mahalanobis2 = G * G / S;
 	Pout = R * PLhat * R.transpose();
+	// L^ = L - K G, dG/dR = -[1 s]: dL^/dR = K [1 s], the line error's
+	// share in Pout (K Sigma_V K^T). (K also depends on b; that term is
+	// proportional to G and is left out of Pout too.)
+	if (dLine) *dLine = R * K * Eigen::RowVector2d(1.0, L.x());
 	return fromPlane(Lhat);
 }
 }  // namespace featloc

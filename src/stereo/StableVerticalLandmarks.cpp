@@ -244,6 +244,7 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 		Eigen::Matrix2d P;
 		Eigen::Vector2d cTilde;
 		Eigen::Matrix2d PTilde;
+		Eigen::Matrix2d dLine;	// d c / d (a, b) of the plane's fit
 	};
 	std::vector<std::vector<OnPlane>> byPlane(f.planes.size());
 	for (size_t i = 0; i < f.matches.size(); i++)
@@ -273,9 +274,9 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 				if (pl.mask.at<uchar>(v, u)) in++;
 			});
 			if (2 * in < band) continue;
-			OnPlane on{i, {}, {}, cTilde, PTilde};
+			OnPlane on{i, {}, {}, cTilde, PTilde, {}};
 			double m2 = 0;
-			on.c = pl.fit.constrain(cTilde, PTilde, on.P, &m2);
+			on.c = pl.fit.constrain(cTilde, PTilde, on.P, &m2, &on.dLine);
 			if (m2 > 9) continue;  // not on this plane
 			// ... nor on this wall if it lies beyond the wall's ends (a
 			// plane is the wall's line, a wall is a piece of it).
@@ -340,6 +341,8 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			z.match = o.match;
 			z.position = Eigen::Vector2d(head.camX, head.camY) + camToRobot * o.c;
 			z.covariance = camToRobot * o.P * camToRobot.transpose();
+			z.planeJacobian = camToRobot * o.dLine;
+			z.planeCovariance = pl.fit.lineCovariance;
 			const double depth = o.c.y(), sigmaH = depth / head.fy * options.sigma_end_px;
 			z.lHigh = head.heightAt(l.vTop - 0.5, depth);
 			z.lLow = head.heightAt(l.vBottom + 0.5, depth);
@@ -426,6 +429,7 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			const Eigen::Vector2d u = (M2 - M1) / dM;
 			mf.position = M1 + mf.dp * u;  // eq. (15)
 			mf.covariance = u * u.transpose() * mf.sigmaDp * mf.sigmaDp;  // eq. (17), rank 1
+			mf.sharedCovariance = u * u.transpose() * e.dot(Pb * e);  // the boundary's part
 			const auto& z = f.observations[firstObservation + feats.size()];	 // same order as `on`
 			mf.lHigh = z.lHigh;
 			mf.lLow = z.lLow;
@@ -495,6 +499,7 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 				z.canStart = true;
 				z.start = ft.position;
 				z.startCovariance = ft.covariance;
+				z.startSharedCovariance = ft.sharedCovariance;
 			}
 			if (ft.reason == "near boundary" || ft.lengthSimilarity < options.min_length_similarity)
 				f.observations.erase(f.observations.begin() + static_cast<long>(firstObservation + k));

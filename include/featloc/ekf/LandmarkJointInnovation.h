@@ -2,15 +2,14 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "featloc/ekf/EkfLocalizer.h"
 #include "featloc/ekf/JointCompatibilityBranchAndBound.h"
 #include "featloc/ekf/LandmarkObservation.h"
 
 namespace featloc
 {
-class EkfLocalizer;
-
 /** The joint innovation of (observation, landmark) pairs against an
- * EkfLocalizer's state, grown and shrunk one pair at a time for JCBB.
+ * EkfLocalizer's belief (its state with the held match applied), grown and shrunk one pair at a time for JCBB.
  *
  * Each pair's Jacobian touches the robot (3) and its landmark (2) only, so
  * the new rows of the joint covariance S cost O(k) small blocks, and the
@@ -22,8 +21,8 @@ class EkfLocalizer;
 class LandmarkJointInnovation : public JointCompatibilityBranchAndBound::JointInnovation
 {
    public:
-	LandmarkJointInnovation(
-		const EkfLocalizer& filter, const std::vector<LandmarkObservation>& observations);
+	LandmarkJointInnovation(const EkfLocalizer& filter, const EkfLocalizer::Belief& belief,
+		const std::vector<LandmarkObservation>& observations);
 
 	double push(size_t observation, size_t landmark) override;
 	void pop() override;
@@ -38,6 +37,7 @@ class LandmarkJointInnovation : public JointCompatibilityBranchAndBound::JointIn
 		Eigen::Vector2d nu;
 	};
 	const EkfLocalizer& m_f;
+	const EkfLocalizer::Belief& m_b;
 	const std::vector<LandmarkObservation>& m_obs;
 	std::vector<Pair> m_pairs;
 	std::vector<double> m_d2;

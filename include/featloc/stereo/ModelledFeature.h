@@ -17,6 +17,9 @@ struct ModelledFeature
 	 * rank-1 covariance along the plane. */
 	Eigen::Vector2d position = Eigen::Vector2d::Zero();
 	Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
+	/** The boundary's part of `covariance`, shared by every feature placed
+	 * from that boundary in the frame. */
+	Eigen::Matrix2d sharedCovariance = Eigen::Matrix2d::Zero();
 	double dp = 0, sigmaDp = 0;	 //!< [m] distance from the boundary along the plane
 	double lLow = 0, lHigh = 0;	 //!< [m] height of its ends above the floor
 	double lengthSimilarity = 0;  //!< eq. (18)

@@ -30,9 +30,12 @@ struct PlaneFit
 	 * G(L, R) = w - (a + b s) = 0 with H = dG/dL and the line's own
 	 * uncertainty as the observation noise, Sigma_V = dG/dR Sigma_R dG/dR^T.
 	 * Returns the updated point and covariance (camera coordinates) and,
-	 * in `mahalanobis2`, G(c~)^2 / (H P~ H^T + Sigma_V). */
+	 * in `mahalanobis2`, G(c~)^2 / (H P~ H^T + Sigma_V). `dLine`, if given,
+	 * receives d(point)/d(a, b) at G = 0, as Pout has it (K [1 s] in the
+	 * plane frame): every point constrained to this fit shares its line's
+	 * error, Cov(c_i, c_j) = dLine_i lineCovariance dLine_j^T. */
 	Eigen::Vector2d constrain(
 		const Eigen::Vector2d& c, const Eigen::Matrix2d& P, Eigen::Matrix2d& Pout,
-		double* mahalanobis2 = nullptr) const;
+		double* mahalanobis2 = nullptr, Eigen::Matrix2d* dLine = nullptr) const;
 };
 }  // namespace featloc

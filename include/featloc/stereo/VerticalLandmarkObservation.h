@@ -19,6 +19,13 @@ struct VerticalLandmarkObservation
 	int polarity = 0;  //!< of its edge in the left image (+1 darker on the left)
 	Eigen::Vector2d position = Eigen::Vector2d::Zero();	 //!< robot frame [m]
 	Eigen::Matrix2d covariance = Eigen::Matrix2d::Identity();  //!< [m^2]
+	/** The plane constraint's share of that error, common to every
+	 * observation of the same wall in the frame (one fitted plane, eq. 11):
+	 * Cov(position_i, position_j) = J_i planeCovariance J_j^T with J =
+	 * planeJacobian = d position / d (a, b). Without it the EKF counts one
+	 * plane fit N times. */
+	Eigen::Matrix2d planeJacobian = Eigen::Matrix2d::Zero();
+	Eigen::Matrix2d planeCovariance = Eigen::Matrix2d::Zero();
 	double lLow = 0, lHigh = 0;	 //!< [m] heights of its ends above the floor
 	/** [m] their sigmas; 0 where the end is not observed (the segment
 	 * reaches the image border: the line goes on beyond it). */
@@ -29,6 +36,12 @@ struct VerticalLandmarkObservation
 	bool canStart = false;
 	Eigen::Vector2d start = Eigen::Vector2d::Zero();
 	Eigen::Matrix2d startCovariance = Eigen::Matrix2d::Zero();
+	/** The part of startCovariance that every feature of this frame placed
+	 * from the same boundary of the same wall shares: the boundary's own
+	 * error along the wall (e' P_b e, section 3.3). Eq. (17) leaves it out
+	 * of the features' joint covariance; their starts are correlated by it
+	 * (on moon-lab it is 20 mm rms, the features' own part 8 mm). */
+	Eigen::Matrix2d startSharedCovariance = Eigen::Matrix2d::Zero();
 	size_t match = 0;  //!< the stereo match it comes from (StereoLandmarkFrame::matches)
 };
 }  // namespace featloc
