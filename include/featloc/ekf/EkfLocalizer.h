@@ -140,7 +140,7 @@ class EkfLocalizer
 	 * its covariance: a scan matched against a known map (MapScanTracker).
 	 * H is the identity on the robot's block; the clones and landmarks are
 	 * corrected through their correlations with the robot. Gated against
-	 * the belief (the held match applied), at Mahalanobis^2 `gateChi2`. */
+	 * the state without the held match, at Mahalanobis^2 `gateChi2`. */
 	MotionUpdate updateAbsolutePose(const mrpt::poses::CPosePDFGaussian& z, double gateChi2);
 	/** Keeps `motion` (which passed testRelativeMotion) as the keyframe
 	 * interval's match, replacing any held one. */
@@ -173,9 +173,8 @@ class EkfLocalizer
 	/** Posterior views: the held match included. */
 	mrpt::poses::CPosePDFGaussian robotPose() const;
 	/** The whole posterior view: the state and covariance with the held
-	 * match applied (x + K nu, P - K S K^T; without one, the state). The
-	 * observations that are not matches (landmarks, map poses) are gated,
-	 * associated and linearized at it: the state without the held match
+	 * match applied (x + K nu, P - K S K^T; without one, the state).
+	 * Landmark observations are gated, associated and linearized at it: the state without the held match
 	 * lies the match's whole correction away from it (10 cm and 2 deg
 	 * before a stereo pair on moon-lab at 40 Hz, where a landmark 30 cm
 	 * off was paired). They are then fused into the state without it
