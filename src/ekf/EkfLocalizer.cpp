@@ -244,7 +244,7 @@ EkfLocalizer::MotionUpdate EkfLocalizer::updateAbsolutePose(
 	// prediction, neither against the other. Against the belief, a held
 	// scan match wrong along a corridor (ICP beside walking people) made
 	// the map matches that would have corrected it fail the gate (office,
-	// bench-localization: max error 49 -> 145 mm). H = I: no linearization
+	// run B in the world file: max error 96 -> 145 mm). H = I: no linearization
 	// point to choose.
 	const std::vector<Eigen::Index> cols = {kRobot, kRobot + 1, kRobot + 2};
 	const Eigen::MatrixXd H = Eigen::Matrix3d::Identity();
