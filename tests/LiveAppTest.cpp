@@ -273,14 +273,20 @@ TEST(Live, EmulatedHokuyoAndOdometryRunAndReplayToTheSamePoses)
 	EXPECT_NEAR(lidar["rate_hz"].get<double>(), 40.0, 40.0 * tolerance);
 	EXPECT_NEAR(base["rate_hz"].get<double>(), 100.0, 100.0 * tolerance);
 	EXPECT_EQ(lidar["received"], lidar["passed_on"]);
-	EXPECT_EQ(s["live"]["late_observations"], 0);
+	// A reading may come late when ctest's other tests load both cores (one
+	// odometry reading in 402 was seen once): at most 1% of them.
+	const size_t late = s["live"]["late_observations"].get<size_t>();
+	EXPECT_LE(100 * late, lidar["received"].get<size_t>() + base["received"].get<size_t>()) << late << " late";
 	// Against the emulator's truth: the office at 0.6 m/s, 4 s.
 	EXPECT_LT(s["evaluation"]["ate_m"]["rmse"].get<double>(), 0.05) << s.dump(1);
 
-	// Everything passed on is in live.rawlog, in order.
+	// Everything passed on is in live.rawlog, in order; a late reading in
+	// live-late.rawlog.
 	const Recorded rec = countRecorded(out + "/live.rawlog");
-	EXPECT_EQ(rec.scans, lidar["received"].get<size_t>());
-	EXPECT_EQ(rec.odometry, base["received"].get<size_t>());
+	const Recorded lateRec = countRecorded(out + "/live-late.rawlog");
+	EXPECT_EQ(rec.scans + lateRec.scans, lidar["received"].get<size_t>());
+	EXPECT_EQ(rec.odometry + lateRec.odometry, base["received"].get<size_t>());
+	EXPECT_EQ(lateRec.scans + lateRec.odometry, late);
 	EXPECT_EQ(s["counts"]["scans"].get<size_t>(), rec.scans);
 
 	// featloc-run replays the recording, with the live config as it is, to
