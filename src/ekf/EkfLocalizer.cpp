@@ -149,23 +149,21 @@ double EkfLocalizer::update(
 	m_x += PHt * Sinvnu;
 	const Eigen::MatrixXd U = llt.matrixL().solve(PHt.transpose()).transpose();
 	Pn.noalias() -= U * U.transpose();
-	for (Eigen::Index k : {kRobot, kClone, kMatchClone})
-		m_x[k + 2] = mrpt::math::wrapToPi(m_x[k + 2]);
+	wrapPoseAngles(m_x);
 	return nu.dot(Sinvnu);
+}
+
+void EkfLocalizer::wrapPoseAngles(Eigen::VectorXd& v)
+{
+	for (const Eigen::Index k : {kRobot, kClone, kMatchClone}) v[k + 2] = mrpt::math::wrapToPi(v[k + 2]);
 }
 
 double EkfLocalizer::updateAtBelief(const Belief& b, const std::vector<Eigen::Index>& cols,
 	const Eigen::MatrixXd& Hc, const Eigen::VectorXd& nuAtBelief, const Eigen::MatrixXd& R)
 {
-	Eigen::VectorXd d(static_cast<Eigen::Index>(cols.size()));
-	for (size_t a = 0; a < cols.size(); a++)
-	{
-		const Eigen::Index i = cols[a];
-		d[static_cast<Eigen::Index>(a)] = b.x[i] - m_x[i];
-		if (i == kRobot + 2 || i == kClone + 2 || i == kMatchClone + 2)
-			d[static_cast<Eigen::Index>(a)] = mrpt::math::wrapToPi(d[static_cast<Eigen::Index>(a)]);
-	}
-	update(cols, Hc, nuAtBelief + Hc * d, R);
+	Eigen::VectorXd d = b.x - m_x;
+	wrapPoseAngles(d);
+	update(cols, Hc, nuAtBelief + Hc * d(cols), R);
 	const Eigen::MatrixXd S = Hc * b.P(cols, cols) * Hc.transpose() + R;
 	return nuAtBelief.dot(S.ldlt().solve(nuAtBelief));
 }
@@ -553,7 +551,7 @@ EkfLocalizer::Belief EkfLocalizer::belief() const
 	if (const auto c = heldCorrection())
 	{
 		b.x += c->K * c->nu;
-		for (const Eigen::Index k : {kRobot, kClone, kMatchClone}) b.x[k + 2] = mrpt::math::wrapToPi(b.x[k + 2]);
+		wrapPoseAngles(b.x);
 		b.P -= c->K * c->S * c->K.transpose();
 	}
 	return b;

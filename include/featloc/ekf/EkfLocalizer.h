@@ -241,6 +241,9 @@ class EkfLocalizer
 	double update(
 		const std::vector<Eigen::Index>& cols, const Eigen::MatrixXd& Hc,
 		const Eigen::VectorXd& nu, const Eigen::MatrixXd& R);
+	/** The yaw entries of the robot and its two clones, wrapped to
+	 * (-pi, pi] in v (a state, or a difference of two). */
+	static void wrapPoseAngles(Eigen::VectorXd& v);
 	/** update() of an observation linearized at belief b (Jacobian Hc,
 	 * innovation nuAtBelief = z - h(b.x)): h(x) ~ h(b.x) + H (x - b.x)
 	 * gives the state's innovation nuAtBelief + H (b.x - x). Returns the
