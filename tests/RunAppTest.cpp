@@ -566,6 +566,48 @@ TEST(FeatlocRun, OverruledGuessGatesAreMarkedAndCounted)
 	EXPECT_GE(so["counts"]["match_failures_by_kind"]["guess_gate"].get<size_t>(), counted);
 }
 
+// With the world the log was simulated in, featloc-bench puts each
+// matcher's mean error beside the pairs' Cramer-Rao bound; no matcher beats
+// it. Another world, or no ground truth, is refused before any matching.
+TEST(FeatlocBench, ErrorsBesideTheCramerRaoBoundOfTheSimulatedWorld)
+{
+	TempDir dir;
+	const std::string sim = std::string(FEATLOC_SOURCE_DIR) + "/rawlogs/sim/";
+	const std::string worlds = std::string(FEATLOC_SOURCE_DIR) + "/worlds/";
+	const std::string common = shellQuote(FEATLOC_BENCH_EXE) + " " + shellQuote(kConfig) + " " +
+		shellQuote(sim + "office.rawlog") + " --max-pairs 60 -q";
+	const CommandResult r = runCommand(common + " -g " + shellQuote(sim + "office.gt.txt") +
+		" --world " + shellQuote(worlds + "office.ini") + " -j " + shellQuote(dir.file("b.json")) +
+		" -m featloc::PcmFeatureMatcher,featloc::IcpMatcher");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("| office.rawlog | featloc::PcmFeatureMatcher | 60 | "), std::string::npos)
+		<< r.output;
+	const auto j = readJson(dir.file("b.json"));
+	for (const auto& m : j["results"])
+	{
+		const auto& c = m["cramer_rao"];
+		ASSERT_EQ(c["pairs"], 60) << m["matcher"];
+		// 361 beams, 1 cm noise, both scans noisy: about 1.3 mm per pair.
+		EXPECT_GT(c["bound_mean_trans_m"].get<double>(), 0.0008);
+		EXPECT_LT(c["bound_mean_trans_m"].get<double>(), 0.002);
+		EXPECT_NEAR(c["mean_trans_err_m"].get<double>(), m["mean_trans_err_m"].get<double>(), 1e-12);
+		EXPECT_GT(c["trans_ratio"].get<double>(), 1.0) << m["matcher"];
+		EXPECT_GT(c["yaw_ratio"].get<double>(), 1.0) << m["matcher"];
+	}
+
+	const CommandResult other = runCommand(common + " -g " + shellQuote(sim + "office.gt.txt") +
+		" --world " + shellQuote(worlds + "lab.ini"));
+	EXPECT_NE(other.exitCode, 0);
+	EXPECT_NE(other.output.find("lab.ini': scan 0 does not fit it at its ground-truth pose"),
+		std::string::npos)
+		<< other.output;
+	const CommandResult noTruth = runCommand(common + " --reference-matcher featloc::IcpMatcher" +
+		" --world " + shellQuote(worlds + "office.ini"));
+	EXPECT_EQ(noTruth.exitCode, 2);
+	EXPECT_NE(noTruth.output.find("--world needs the scans' ground truth"), std::string::npos)
+		<< noTruth.output;
+}
+
 // Every pair counts: a failed pair with its guess's error, so a matcher
 // that fails everything scores exactly the guesses' errors; a matcher that
 // succeeds wrongly is a silent gross error. The basin curve is drawn.

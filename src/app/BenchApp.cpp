@@ -31,6 +31,8 @@
 #include "featloc/plot/CurvePlot.h"
 #include "featloc/pipeline/StepAssembler.h"
 #include "featloc/registerClasses.h"
+#include "featloc/sim/RangeScanFisherInformation.h"
+#include "featloc/sim/SimConfiguration.h"
 
 namespace featloc
 {
@@ -104,6 +106,48 @@ Sequence loadRawlog(
 	}
 	return seq;
 }
+/** --world: each pair's Cramer-Rao bound from the world's true surfaces, at
+ * the scans' ground-truth poses (each scan's information once). */
+void attachBounds(std::vector<ScanPairSample>& pairs, const std::vector<size_t>& referenceIndex,
+	const std::vector<size_t>& currentIndex, const Sequence& seq, const std::string& worldPath)
+{
+	if (seq.reference.empty())
+		throw UsageError("--world needs the scans' ground truth (--ground-truth FILE)");
+	TrackedConfig wc;
+	wc.loadFile(worldPath);
+	const SimConfiguration world = SimConfiguration::load(wc);
+	wc.requireAllKeysRead();
+	std::map<size_t, mrpt::math::CMatrixDouble33> info;
+	auto informationOf = [&](size_t k) -> const mrpt::math::CMatrixDouble33& {
+		auto it = info.find(k);
+		if (it != info.end()) return it->second;
+		RangeScanFisherInformation::Result r;
+		try
+		{
+			r = RangeScanFisherInformation::of(world.world, seq.times[k] - world.simulation.t0,
+				*seq.scans[k], seq.reference[k]);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw InputError("--world '" + worldPath + "': scan " + std::to_string(k) + ": " + e.what());
+		}
+		// A scan of another world (or another path) would give a bound of
+		// nothing: the measured ranges must be the exact ones plus noise.
+		if (r.beamsOff > r.beamsValid / 10)
+			throw InputError("--world '" + worldPath + "': scan " + std::to_string(k) + " does not fit it at its ground-truth pose: " +
+				std::to_string(r.beamsOff) + " of its " + std::to_string(r.beamsValid) +
+				" valid ranges are more than 5 sigma from the world's");
+		return info[k] = r.information;
+	};
+	for (size_t p = 0; p < pairs.size(); p++)
+	{
+		const auto& ref = informationOf(referenceIndex[p]);
+		const auto& cur = informationOf(currentIndex[p]);
+		pairs[p].bound = ScanPairCramerRaoBound::of(
+			seq.reference[referenceIndex[p]], ref, seq.reference[currentIndex[p]], cur);
+	}
+}
+
 /** --basin-levels: "XY/YAW_DEG,..." as (metres, radians). */
 std::vector<std::pair<double, double>> parseBasinLevels(const std::string& text)
 {
@@ -174,9 +218,22 @@ void printRow(const std::string& name, const ScanPairBenchmark::Result& r)
 		r.medianTime * 1e3, r.meanIterations, r.meanNees, 100 * r.neesWithin95);
 }
 
+/** The matchers' mean errors against the pairs' Cramer-Rao bound. */
+void printBoundTable(const std::string& name, const std::vector<ScanPairBenchmark::Result>& results)
+{
+	std::printf("\n| data | matcher | pairs with a bound | \\|t\\| err mean / CRB [mm] | ratio "
+				"| \\|w\\| err mean / CRB [deg] | ratio |\n|---|---|---|---|---|---|---|\n");
+	for (const auto& r : results)
+		std::printf("| %s | %s | %zu | %.2f / %.2f | %.2f | %.4f / %.4f | %.2f |\n", name.c_str(),
+			r.matcher.c_str(), r.boundedPairs, r.boundedMeanTrans * 1e3, r.boundMeanTrans * 1e3,
+			r.boundMeanTrans > 0 ? r.boundedMeanTrans / r.boundMeanTrans : 0.0,
+			mrpt::RAD2DEG(r.boundedMeanYaw), mrpt::RAD2DEG(r.boundMeanYaw),
+			r.boundMeanYaw > 0 ? r.boundedMeanYaw / r.boundMeanYaw : 0.0);
+}
+
 nlohmann::json toJson(const ScanPairBenchmark::Result& r)
 {
-	return {{"matcher", r.matcher}, {"pairs", r.pairs}, {"failures", r.failures},
+	nlohmann::json j = {{"matcher", r.matcher}, {"pairs", r.pairs}, {"failures", r.failures},
 		{"failures_by_kind", r.failuresByKind}, {"ambiguous_used", r.ambiguousUsed},
 		{"flagged", r.flagged()}, {"silent_gross_errors", r.silentGross},
 		{"matcher_fallbacks", r.matcherFallbacks},
@@ -189,6 +246,14 @@ nlohmann::json toJson(const ScanPairBenchmark::Result& r)
 		{"nees_mean", r.meanNees}, {"nees_median", r.medianNees},
 		{"nees_within_95", r.neesWithin95}, {"failure_examples", r.failureExamples},
 		{"silent_gross_examples", r.silentGrossExamples}};
+	if (r.boundedPairs > 0)
+		j["cramer_rao"] = {{"pairs", r.boundedPairs},
+			{"mean_trans_err_m", r.boundedMeanTrans}, {"bound_mean_trans_m", r.boundMeanTrans},
+			{"trans_ratio", r.boundedMeanTrans / r.boundMeanTrans},
+			{"mean_yaw_err_deg", mrpt::RAD2DEG(r.boundedMeanYaw)},
+			{"bound_mean_yaw_deg", mrpt::RAD2DEG(r.boundMeanYaw)},
+			{"yaw_ratio", r.boundedMeanYaw / r.boundMeanYaw}};
+	return j;
 }
 }  // namespace
 
@@ -250,6 +315,12 @@ int BenchApp::main(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argBasinLevels("", "basin-levels",
 		"Initial error bounds of the basin curve, XY_M/YAW_DEG,...", false,
 		"0.1/2,0.2/5,0.3/10,0.4/15,0.5/20", "LEVELS", cmd);
+	TCLAP::ValueArg<std::string> argWorld("", "world",
+		"The featloc-sim world file the log was simulated in: each pair's "
+		"Cramer-Rao bound from the range noise against the world's true "
+		"surfaces at the ground-truth poses, and each matcher's mean error "
+		"against it (not with --apply-motion)",
+		false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> argLoops("", "loop-relations",
 		"Instead of benchmarking: where TRAJECTORY (of this log) comes back to a place "
 		"(poses within 1 m and 30 deg, 50 or more scans apart), match the two scans "
@@ -293,6 +364,7 @@ int BenchApp::main(int argc, char** argv)
 	}
 
 	std::vector<ScanPairSample> pairs;
+	std::vector<size_t> referenceIndex, currentIndex;  //!< of each pair's scans in seq
 	size_t referenceFailures = 0;
 	const size_t stride = argStride.getValue();
 	for (size_t k = stride; k < seq.scans.size(); k++)
@@ -316,8 +388,15 @@ int BenchApp::main(int argc, char** argv)
 			p.truth = r.estimate.mean;
 		}
 		pairs.push_back(p);
+		referenceIndex.push_back(k - stride);
+		currentIndex.push_back(k);
 	}
 	if (pairs.empty()) throw InputError("'" + data + "' gives no scan pair to benchmark");
+	if (argWorld.isSet())
+	{
+		if (argApply.isSet()) throw UsageError("--world gives no bound with --apply-motion");
+		attachBounds(pairs, referenceIndex, currentIndex, seq, argWorld.getValue());
+	}
 
 	ScanPairBenchmark::Options o;
 	o.perturbXY = argXY.getValue();
@@ -367,6 +446,7 @@ int BenchApp::main(int argc, char** argv)
 		printRow(name, r);
 		j["results"].push_back(toJson(r));
 	}
+	if (argWorld.isSet()) printBoundTable(name, results);
 	if (argBasin.isSet())
 	{
 		// The basin curve: the same pairs and draws at each initial error.

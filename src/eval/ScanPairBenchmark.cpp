@@ -31,6 +31,7 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 	struct Acc
 	{
 		std::vector<double> ex, ey, ew, et, time, nees;
+		double boundedTrans = 0, boundedYaw = 0, boundTrans = 0, boundYaw = 0;
 		double iterations = 0;
 	};
 	std::vector<Acc> acc(matchers.size());
@@ -83,6 +84,14 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			a.ey.push_back(std::abs(err[1]));
 			a.ew.push_back(ew);
 			a.et.push_back(et);
+			if (p.bound && p.bound->bounded && !o.applyMotion)
+			{
+				res[m].boundedPairs++;
+				a.boundedTrans += et;
+				a.boundedYaw += ew;
+				a.boundTrans += p.bound->meanTrans;
+				a.boundYaw += p.bound->meanYaw;
+			}
 			if (!r.success)
 			{
 				res[m].failures++;
@@ -134,6 +143,14 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 		r.meanTime = time.mean;
 		r.medianTime = time.median;
 		r.meanIterations = r.pairs ? a.iterations / static_cast<double>(r.pairs) : 0;
+		if (r.boundedPairs > 0)
+		{
+			const double n = static_cast<double>(r.boundedPairs);
+			r.boundedMeanTrans = a.boundedTrans / n;
+			r.boundedMeanYaw = a.boundedYaw / n;
+			r.boundMeanTrans = a.boundTrans / n;
+			r.boundMeanYaw = a.boundYaw / n;
+		}
 		const auto nees = ErrorStats::of(a.nees);
 		r.meanNees = nees.mean;
 		r.medianNees = nees.median;

@@ -45,10 +45,12 @@ void forBeamsIn(double lo, double hi, double step, size_t beams, F&& f)
 void RayCaster::cast(
 	const mrpt::math::TPose2D& sensor, double firstAngle, double step,
 	size_t beams, double maxRange, const std::vector<WallSegment>& segments,
-	const std::vector<CircleShape>& circles, std::vector<double>& ranges)
+	const std::vector<CircleShape>& circles, std::vector<double>& ranges,
+	std::vector<Hit>* hits)
 {
 	const double inf = std::numeric_limits<double>::infinity();
 	ranges.assign(beams, inf);
+	if (hits) hits->assign(beams, Hit());
 	std::vector<double> dx(beams), dy(beams);
 	const double base = sensor.phi + firstAngle;
 	for (size_t i = 0; i < beams; i++)
@@ -61,8 +63,9 @@ void RayCaster::cast(
 		return wrap0To2Pi(std::atan2(py - sensor.y, px - sensor.x) - base);
 	};
 
-	for (const auto& s : segments)
+	for (size_t k = 0; k < segments.size(); k++)
 	{
+		const auto& s = segments[k];
 		const double ex = s.b.x - s.a.x, ey = s.b.y - s.a.y;
 		const double wx = s.a.x - sensor.x, wy = s.a.y - sensor.y;
 		double u0 = relAngle(s.a.x, s.a.y), u1 = relAngle(s.b.x, s.b.y);
@@ -74,12 +77,17 @@ void RayCaster::cast(
 			if (den == 0) return;
 			const double t = (wx * ey - wy * ex) / den;
 			const double u = (wx * dy[i] - wy * dx[i]) / den;
-			if (t > 0 && u >= 0 && u <= 1 && t < ranges[i]) ranges[i] = t;
+			if (t > 0 && u >= 0 && u <= 1 && t < ranges[i])
+			{
+				ranges[i] = t;
+				if (hits) (*hits)[i] = {k, std::atan2(ex, -ey)};
+			}
 		});
 	}
 
-	for (const auto& c : circles)
+	for (size_t k = 0; k < circles.size(); k++)
 	{
+		const auto& c = circles[k];
 		const double cx = c.centre.x - sensor.x, cy = c.centre.y - sensor.y;
 		const double d2 = cx * cx + cy * cy, r2 = c.radius * c.radius;
 		if (d2 <= r2) continue;	 // the sensor is inside
@@ -91,7 +99,14 @@ void RayCaster::cast(
 			const double disc = b * b - (d2 - r2);
 			if (disc < 0) return;
 			const double t = b - std::sqrt(disc);
-			if (t > 0 && t < ranges[i]) ranges[i] = t;
+			if (t > 0 && t < ranges[i])
+			{
+				ranges[i] = t;
+				// The normal at the hit: from the centre through it.
+				if (hits)
+					(*hits)[i] = {segments.size() + k,
+						std::atan2(t * dy[i] - cy, t * dx[i] - cx)};
+			}
 		});
 	}
 

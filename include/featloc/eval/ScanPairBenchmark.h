@@ -4,9 +4,11 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "featloc/eval/ScanPairCramerRaoBound.h"
 #include "featloc/matchers/ScanMatcher.h"
 
 namespace featloc
@@ -16,6 +18,10 @@ struct ScanPairSample
 {
 	mrpt::obs::CObservation2DRangeScan::Ptr reference, current;
 	mrpt::poses::CPose2D truth;	 //!< current robot pose in the reference's
+	/** The pair's Cramer-Rao bound, where the scene's true surfaces are
+	 * known (featloc-bench --world). Not used with Options::applyMotion
+	 * (the moved scan's relative pose is another one). */
+	std::optional<ScanPairCramerRaoBound> bound;
 };
 
 /** The scan-pair protocols of the papers.
@@ -77,6 +83,12 @@ class ScanPairBenchmark
 		double meanNees = 0;  //!< over successes (3 for a consistent covariance)
 		double medianNees = 0;	//!< 2.37 for a consistent covariance
 		double neesWithin95 = 0;  //!< share within chi2(3) 95% (0.95 if consistent)
+		/** Over the pairs with a finite Cramer-Rao bound (ScanPairSample::
+		 * bound; every pair counts, failures at the guess's error): the
+		 * matcher's mean |t| and |w| errors and the bound's, side by side. */
+		size_t boundedPairs = 0;
+		double boundedMeanTrans = 0, boundedMeanYaw = 0;  //!< [m], [rad] the matcher's
+		double boundMeanTrans = 0, boundMeanYaw = 0;  //!< [m], [rad] the bound's E|t|, E|w|
 		std::vector<std::string> failureExamples, silentGrossExamples;
 		size_t flagged() const { return failures + ambiguousUsed; }
 		/** Share of pairs neither flagged nor grossly wrong. */

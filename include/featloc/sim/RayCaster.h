@@ -23,9 +23,20 @@ namespace featloc
 class RayCaster
 {
    public:
+	/** What a beam hit (when its range is finite). */
+	struct Hit
+	{
+		/** segments[shape], or circles[shape - segments.size()]. */
+		size_t shape = 0;
+		double normal = 0;	//!< [rad] world angle of the surface's normal there
+	};
+
+	/** With `hits`: also what each beam hit (the entries of infinite
+	 * ranges mean nothing). */
 	static void cast(
 		const mrpt::math::TPose2D& sensor, double firstAngle, double step,
 		size_t beams, double maxRange, const std::vector<WallSegment>& segments,
-		const std::vector<CircleShape>& circles, std::vector<double>& ranges);
+		const std::vector<CircleShape>& circles, std::vector<double>& ranges,
+		std::vector<Hit>* hits = nullptr);
 };
 }  // namespace featloc
