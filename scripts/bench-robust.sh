@@ -15,6 +15,8 @@
 #    curve), the simulated hall with people, and the other five Radish logs
 #    (GFS-corrected reference poses, good to 2-3 cm), if ../shared/data/laser2d
 #    (or $FEATLOC_LASER2D) is there.
+#  - On the simulated scenes (--world), each matcher's mean error beside
+#    the pairs' Cramer-Rao bound (issue 15 item 6).
 #  - The whole-run cost: featloc-run on MRPT's 5 cm-noise simulated log with
 #    ICP and coarse_search off / on (ATE against its ground truth).
 # Usage: scripts/bench-robust.sh [OUTDIR]   (about 30 min on 2 cores)
@@ -45,9 +47,11 @@ for scene in office lab; do
     --set Laser:range_noise=0.01 > /dev/null
 done
 bench "sim office (1 cm)" "$OUT/office-1cm.rawlog" -g "$OUT/office-1cm.gt.txt" \
-  --perturb-xy 0.3 --perturb-yaw-deg 10 --basin "$OUT/basin-office.png"
+  --perturb-xy 0.3 --perturb-yaw-deg 10 --basin "$OUT/basin-office.png" --world "$ROOT/worlds/office.ini"
 HEADER=--header
-bench "sim lab (1 cm)" "$OUT/lab-1cm.rawlog" -g "$OUT/lab-1cm.gt.txt" --perturb-xy 0.3 --perturb-yaw-deg 10
+bench "sim lab (1 cm)" "$OUT/lab-1cm.rawlog" -g "$OUT/lab-1cm.gt.txt" --perturb-xy 0.3 --perturb-yaw-deg 10 \
+  --world "$ROOT/worlds/lab.ini"
+HEADER=--header
 [ -d "$LASER2D" ] && bench "orebro +-0.3/10" "$LASER2D/orebro-corrected.log.gz" --perturb-xy 0.3 --perturb-yaw-deg 10
 
 echo
@@ -57,12 +61,15 @@ echo
 "$BIN/featloc-sim" "$ROOT/worlds/hall-people.ini" --out "$OUT/hall-people" -q > /dev/null
 HEADER=--header
 bench "corridor-people +-0.5/15" "$OUT/corridor-people.rawlog" -g "$OUT/corridor-people.gt.txt" \
-  --perturb-xy 0.5 --perturb-yaw-deg 15 --basin "$OUT/basin-corridor-people.png"
+  --perturb-xy 0.5 --perturb-yaw-deg 15 --basin "$OUT/basin-corridor-people.png" \
+  --world "$ROOT/worlds/corridor-people.ini"
 HEADER=--header
 bench "corridor-people +-0.3/10" "$OUT/corridor-people.rawlog" -g "$OUT/corridor-people.gt.txt" \
-  --perturb-xy 0.3 --perturb-yaw-deg 10
+  --perturb-xy 0.3 --perturb-yaw-deg 10 --world "$ROOT/worlds/corridor-people.ini"
+HEADER=--header
 bench "hall-people +-0.3/10" "$OUT/hall-people.rawlog" -g "$OUT/hall-people.gt.txt" \
-  --perturb-xy 0.3 --perturb-yaw-deg 10
+  --perturb-xy 0.3 --perturb-yaw-deg 10 --world "$ROOT/worlds/hall-people.ini"
+HEADER=--header
 if [ -d "$LASER2D" ]; then
   for f in "$LASER2D"/*-corrected.log.gz; do
     [ "$(basename "$f")" = orebro-corrected.log.gz ] && continue

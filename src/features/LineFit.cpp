@@ -1,5 +1,7 @@
 #include "featloc/features/LineFit.h"
 
+#include "featloc/features/PointScatter.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,25 +11,15 @@ LineFit LineFit::fit(const ScanPoint* p, size_t count)
 {
 	LineFit f;
 	f.n = count;
-	for (size_t k = 0; k < count; k++)
-	{
-		f.cx += p[k].x;
-		f.cy += p[k].y;
-	}
-	f.cx /= static_cast<double>(count);	 // eq. (5)
-	f.cy /= static_cast<double>(count);
-	double sxx = 0, syy = 0, sxy = 0;  // eqs. (6), (7)
-	for (size_t k = 0; k < count; k++)
-	{
-		const double dx = p[k].x - f.cx, dy = p[k].y - f.cy;
-		sxx += dx * dx;
-		syy += dy * dy;
-		sxy += dx * dy;
-	}
-	// Eq. (4) with atan2: the normal direction, where the perpendicular
-	// spread is smallest.
-	f.alpha = 0.5 * std::atan2(-2 * sxy, syy - sxx);
-	f.rho = f.cx * std::cos(f.alpha) + f.cy * std::sin(f.alpha);  // eq. (3)
+	PointScatter scatter;
+	for (size_t k = 0; k < count; k++) scatter.add(p[k].x, p[k].y);
+	f.cx = scatter.cx();  // eq. (5)
+	f.cy = scatter.cy();
+	// Eq. (4): the normal direction, where the perpendicular spread
+	// (eqs. 6, 7) is smallest.
+	const PointScatter::Line line = scatter.line();
+	f.alpha = std::atan2(line.ny, line.nx);
+	f.rho = f.cx * line.nx + f.cy * line.ny;  // eq. (3)
 	if (f.rho < 0)
 	{
 		f.rho = -f.rho;

@@ -1,5 +1,7 @@
 #include "featloc/matchers/ReferencePolyline.h"
 
+#include "featloc/features/PointScatter.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -73,31 +75,16 @@ void ReferencePolyline::build(
 	for (const auto& seg : m_segments)
 		for (uint32_t a = seg.first; a < seg.last; a++)
 		{
-			double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0, m = 0;
-			auto add = [&](uint32_t i) {
-				const ScanPoint& p = m_points[i];
-				sx += p.x;
-				sy += p.y;
-				sxx += p.x * p.x;
-				sxy += p.x * p.y;
-				syy += p.y * p.y;
-				m++;
-			};
+			PointScatter scatter;
+			auto add = [&](uint32_t i) { scatter.add(m_points[i].x, m_points[i].y); };
 			LocalLine& L = m_lines[a];
 			auto fit = [&] {
-				L.cx = sx / m;
-				L.cy = sy / m;
-				// The major axis of the scatter matrix at angle alpha, with
-				// (cos 2 alpha, sin 2 alpha) = (u, v) / gap; half-angle
-				// formulas give the normal without trigonometry.
-				const double u = (sxx - sx * sx / m) - (syy - sy * sy / m);
-				const double v = 2 * (sxy - sx * sy / m);
-				L.gap = std::sqrt(u * u + v * v);
-				const double c2 = L.gap > 0 ? u / L.gap : 1.0;
-				const double ca = std::sqrt(std::max(0.0, 0.5 * (1 + c2)));
-				const double sa = std::copysign(std::sqrt(std::max(0.0, 0.5 * (1 - c2))), v);
-				L.nx = -sa;
-				L.ny = ca;
+				L.cx = scatter.cx();
+				L.cy = scatter.cy();
+				const PointScatter::Line l = scatter.line();
+				L.nx = l.nx;
+				L.ny = l.ny;
+				L.gap = l.gap;
 			};
 			auto fits = [&](uint32_t i) {
 				const ScanPoint& p = m_points[i];
