@@ -1,6 +1,7 @@
 #include "featloc/matchers/IterativeDualCorrespondence.h"
 
 #include <mrpt/math/wrap2pi.h>
+#include <mrpt/tfest/se2.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -96,30 +97,22 @@ inline void transform(
 	qy = s * p.x + c * p.y + x.y;
 }
 
-/** Centroids of the first and of the second points of `pairs`. */
-void centroids(const std::vector<Eigen::Vector4d>& pairs, Eigen::Vector2d& from, Eigen::Vector2d& to)
+/** The least-squares rigid motion taking the first points of `pairs` onto
+ * the second ones (MRPT's closed form, Horn's method in 2-D). */
+mrpt::math::TPose2D rigidMotion(const std::vector<Eigen::Vector4d>& pairs)
 {
-	Eigen::Vector4d sum = Eigen::Vector4d::Zero();
-	for (const auto& p : pairs) sum += p;
-	sum /= static_cast<double>(pairs.size());
-	from = sum.head<2>();
-	to = sum.tail<2>();
-}
-
-/** Least-squares rotation taking the first points of `pairs` onto the
- * second ones (2-D Procrustes on the centred points). */
-double procrustesRotation(const std::vector<Eigen::Vector4d>& pairs)
-{
-	Eigen::Vector2d from, to;
-	centroids(pairs, from, to);
-	double sc = 0, ss = 0;
-	for (const auto& p : pairs)
+	mrpt::tfest::TMatchingPairList corrs;
+	corrs.reserve(pairs.size());
+	for (size_t k = 0; k < pairs.size(); k++)
 	{
-		const Eigen::Vector2d a = p.head<2>() - from, b = p.tail<2>() - to;
-		sc += a.dot(b);
-		ss += a.x() * b.y() - a.y() * b.x();
+		const auto& p = pairs[k];
+		corrs.emplace_back(static_cast<uint32_t>(k), static_cast<uint32_t>(k),
+			mrpt::math::TPoint3Df(static_cast<float>(p[2]), static_cast<float>(p[3]), 0),
+			mrpt::math::TPoint3Df(static_cast<float>(p[0]), static_cast<float>(p[1]), 0));
 	}
-	return std::atan2(ss, sc);
+	mrpt::math::TPose2D t;
+	mrpt::tfest::se2_l2(corrs, t);
+	return t;
 }
 }  // namespace
 
@@ -365,13 +358,9 @@ void IterativeDualCorrespondence::run(
 		{
 			// Lu & Milios: rotation of the range rule, translation of the
 			// closest-point rule's own solution.
-			const double w2 = procrustesRotation(m_mrp.size() >= 2 ? m_mrp : m_cp);
-			const double w1 = procrustesRotation(m_cp);
-			Eigen::Vector2d from, to;
-			centroids(m_cp, from, to);
-			const double c1 = std::cos(w1), s1 = std::sin(w1);
-			const Eigen::Vector2d T1(to.x() - (c1 * from.x() - s1 * from.y()),
-				to.y() - (s1 * from.x() + c1 * from.y()));
+			const double w2 = rigidMotion(m_mrp.size() >= 2 ? m_mrp : m_cp).phi;
+			const mrpt::math::TPose2D closest = rigidMotion(m_cp);
+			const Eigen::Vector2d T1(closest.x, closest.y);
 			const double c2 = std::cos(w2), s2 = std::sin(w2);
 			x = mrpt::math::TPose2D(c2 * x.x - s2 * x.y + T1.x(), s2 * x.x + c2 * x.y + T1.y(),
 				mrpt::math::wrapToPi(x.phi + w2));
