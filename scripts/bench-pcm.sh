@@ -2,7 +2,8 @@
 # Reproduces the PCM figures of doc/benchmarks.md: Borges & Aldon's protocol
 # (each scan pair matched from the true motion perturbed by uniform noise in
 # +-0.3 m per axis and +-10 deg; mean absolute errors in t_x, t_y, w),
-# featloc::PcmFeatureMatcher as published (refinement none, no pair gate),
+# featloc::PcmFeatureMatcher as published (every featloc addition off:
+# doc/pcm-matcher.md),
 # PcmFeatureMatcher with featloc's additions (config.ini defaults), and
 # featloc::IcpMatcher, all in one featloc-bench run per data set:
 #  - the simulator's office and lab scenes regenerated with 1 cm range noise
@@ -17,10 +18,12 @@ source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-pcm "$@"
 LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 
-# Three matchers in one featloc-bench run: PCM as published (the two
-# featloc additions switched off), PCM with them (config.ini), IcpMatcher.
+# Three matchers in one featloc-bench run: PCM as published (every featloc
+# addition switched off, doc/pcm-matcher.md), PCM with them (config.ini),
+# IcpMatcher.
 PROTOCOL="--set ScanMatcher.PcmFeatureMatcher:initial_bounds_source=config --perturb-xy 0.3 --perturb-yaw-deg 10 --seed 1"
-MATCHERS="PCM as published=featloc::PcmFeatureMatcher{refinement=none;pair_gate_chi2=0},PCM + featloc additions=featloc::PcmFeatureMatcher,IcpMatcher=featloc::IcpMatcher"
+PAPER_PCM="refinement=none;pair_gate_chi2=0;dmax_corners=published;motion_window_bounds=0;min_matched_features=1;max_translation_sigma=1e9;max_rotation_sigma_DEG=1e9"
+MATCHERS="PCM as published=featloc::PcmFeatureMatcher{$PAPER_PCM},PCM + featloc additions=featloc::PcmFeatureMatcher,IcpMatcher=featloc::IcpMatcher"
 HEADER=--header
 
 bench() { # name, data, extra args...

@@ -1,6 +1,7 @@
 // Borges & Aldon's PCM matcher: the closed-form motion step and the
 // matcher on synthetic scans with known motion.
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/random/RandomGenerators.h>
 
@@ -289,4 +290,63 @@ TEST(PcmFeatureMatcher, TooFewFeaturesIsAReportedFailure)
 	const MatchResult r = m->match(*s, *s, diagonalPoseGaussian(CPose2D(), 0.1, 0.1));
 	EXPECT_FALSE(r.success);
 	EXPECT_NE(r.failureReason.find("no features"), std::string::npos) << r.failureReason;
+}
+
+// The switches that make PcmFeatureMatcher the paper's (doc/pcm-matcher.md):
+// featloc's motion window fails an estimate far outside the guess's
+// bounds, the paper's method returns it; the paper's one-corner d_max gives
+// narrower memberships than the largest over the eight corners, so the
+// iterations take longer; a bad value names its key.
+TEST(PcmFeatureMatcher, AsPublishedSwitchesTurnOffTheWindowAndTheEightCorners)
+{
+	registerClasses();
+	const SyntheticRoom room = linesRoom();
+	const CPose2D motion(0.35, -0.1, mrpt::DEG2RAD(4));
+	const auto ref = room.scan(CPose2D(-1, 0, 0.2), CPose2D(0.2, 0, 0), 361, M_PI * 1.5);
+	const auto cur = room.scan(CPose2D(-1, 0, 0.2) + motion, CPose2D(0.2, 0, 0), 361, M_PI * 1.5);
+	// The guess says "no motion", sure to 5 cm: Delta_0 = 0.15 m, and the
+	// truth is 0.35 m away in x, beyond 2 Delta_0. PCM finds it.
+	const auto guess = diagonalPoseGaussian(CPose2D(), 0.05, mrpt::DEG2RAD(2));
+	auto run = [&](double window) {
+		auto m = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
+		dynamic_cast<PcmFeatureMatcher&>(*m).params.motion_window_bounds = window;
+		return m->match(*ref, *cur, guess);
+	};
+	const MatchResult featloc = run(2);
+	EXPECT_FALSE(featloc.success);
+	EXPECT_NE(featloc.failureReason.find("left the motion bounds"), std::string::npos)
+		<< featloc.failureReason;
+	const MatchResult paper = run(0);
+	EXPECT_TRUE(paper.success) << paper.failureReason;
+	EXPECT_NEAR(paper.estimate.mean.x(), motion.x(), 1e-3);
+	EXPECT_NEAR(paper.estimate.mean.y(), motion.y(), 1e-3);
+
+	// Guess sure to 2 cm / 1 deg: the paper's corner (+, +, +) gives the
+	// memberships less room than the worst of the eight, and the
+	// iterations take longer to the same answer.
+	const auto sure = diagonalPoseGaussian(CPose2D(), 0.02, mrpt::DEG2RAD(1));
+	auto iterations = [&](const std::string& dmax) {
+		auto m = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
+		auto& pcm = dynamic_cast<PcmFeatureMatcher&>(*m);
+		pcm.params.dmax_corners = dmax;
+		pcm.params.motion_window_bounds = 0;
+		const MatchResult r = m->match(*ref, *cur, sure);
+		EXPECT_TRUE(r.success) << dmax << ": " << r.failureReason;
+		EXPECT_NEAR(r.estimate.mean.x(), motion.x(), 1e-3) << dmax;
+		return r.iterations;
+	};
+	EXPECT_GT(iterations("published"), iterations("all"));
+
+	mrpt::config::CConfigFileMemory bad;
+	bad.write("ScanMatcher.PcmFeatureMatcher", "dmax_corners", "one");
+	PcmFeatureMatcher::Parameters p;
+	try
+	{
+		p.loadFromConfigFile(bad, "ScanMatcher.PcmFeatureMatcher");
+		ADD_FAILURE() << "dmax_corners = one was accepted";
+	}
+	catch (const std::exception& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("dmax_corners"), std::string::npos) << e.what();
+	}
 }

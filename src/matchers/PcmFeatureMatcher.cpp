@@ -25,10 +25,6 @@ std::vector<double> boundsToFile(const std::vector<double>& b)
 	return {b[0], b[1], mrpt::RAD2DEG(b[2])};
 }
 
-/** The estimate may move at most this many initial bounds Delta_0 from
- * the initial guess (rotation candidates outside are not considered). */
-constexpr double kWindowBounds = 2.0;
-
 Eigen::Matrix2d rotation(double w)
 {
 	Eigen::Matrix2d R;
@@ -111,6 +107,9 @@ void PcmFeatureMatcher::Parameters::loadFromConfigFile(
 	readDegrees(c, s, "stop_rotation_DEG", stop_rotation);
 	readChoice(c, s, "refinement", refinement, {"weighted", "none"});
 	read(c, s, "pair_gate_chi2", pair_gate_chi2);
+	readChoice(c, s, "dmax_corners", dmax_corners, {"all", "published"});
+	read(c, s, "motion_window_bounds", motion_window_bounds);
+	require(motion_window_bounds >= 0, c, s, "motion_window_bounds", ">= 0 (0: no window)");
 	read(c, s, "min_matched_features", min_matched_features);
 	read(c, s, "max_translation_sigma", max_translation_sigma);
 	readDegrees(c, s, "max_rotation_sigma_DEG", max_rotation_sigma);
@@ -148,6 +147,12 @@ void PcmFeatureMatcher::Parameters::saveToConfigFile(
 		"weighted (covariance-weighted final step) | none (the paper's estimate)");
 	write(c, s, "pair_gate_chi2", pair_gate_chi2,
 		"drop pairs whose residual's Mahalanobis^2 exceeds this, re-solve (0 = off)");
+	write(c, s, "dmax_corners", dmax_corners,
+		"d_max of eq. (24): all (the largest over the 8 corners of the motion bounds) | "
+		"published (the one corner t + Delta_t, w + Delta_w the paper writes)");
+	write(c, s, "motion_window_bounds", motion_window_bounds,
+		"the estimate stays within this many Delta_0 of the guess: rotation candidates "
+		"outside are dropped, an estimate outside fails (0: neither, as published)");
 	write(c, s, "min_matched_features", min_matched_features,
 		"failure below this many matched current features");
 	write(c, s, "max_translation_sigma", max_translation_sigma,
@@ -177,19 +182,21 @@ void PcmFeatureMatcher::memberships(const mrpt::math::TPose2D& x, const double b
 		const ScanFeature& fi = m_reference[i];
 		double px = 0, py = 0;
 		PcmMotionUpdate::predict(fi, x, px, py);
-		// Eq. (24) at every corner of the bounds box.
+		// Eq. (24): the paper's one corner of the bounds box, or featloc's
+		// largest over all eight (the maximum need not be at that corner).
 		double dmax2 = 0;
-		for (int sx : {-1, 1})
-			for (int sy : {-1, 1})
-				for (int sw : {-1, 1})
-				{
-					double cx = 0, cy = 0;
-					PcmMotionUpdate::predict(
-						fi,
-						{x.x + sx * bounds[0], x.y + sy * bounds[1], x.phi + sw * bounds[2]},
-						cx, cy);
-					dmax2 = std::max(dmax2, (cx - px) * (cx - px) + (cy - py) * (cy - py));
-				}
+		auto corner = [&](int sx, int sy, int sw) {
+			double cx = 0, cy = 0;
+			PcmMotionUpdate::predict(fi,
+				{x.x + sx * bounds[0], x.y + sy * bounds[1], x.phi + sw * bounds[2]}, cx, cy);
+			dmax2 = std::max(dmax2, (cx - px) * (cx - px) + (cy - py) * (cy - py));
+		};
+		if (params.dmax_corners == "published")
+			corner(1, 1, 1);
+		else
+			for (int sx : {-1, 1})
+				for (int sy : {-1, 1})
+					for (int sw : {-1, 1}) corner(sx, sy, sw);
 		const double eta = std::max(dmax2 / std::log(2.0), 1e-12);	// eq. (25)
 		for (size_t j = 0; j < m_current.size(); j++)
 		{
@@ -346,7 +353,7 @@ void PcmFeatureMatcher::matchPoints(
 		if (m_pairs.empty()) break;
 		const mrpt::math::TPose2D next = PcmMotionUpdate::solve(
 			m_reference, m_current, m_pairs, x, 1e-9, guess.phi,
-			kWindowBounds * delta0[2]);	 // step 6
+			params.motion_window_bounds * delta0[2]);	 // step 6
 		const double dt = std::hypot(next.x - x.x, next.y - x.y);
 		const double dw = std::abs(mrpt::math::wrapToPi(next.phi - x.phi));
 		x = next;
@@ -365,7 +372,7 @@ void PcmFeatureMatcher::matchPoints(
 			x = refine(x);
 		else
 			x = PcmMotionUpdate::solve(m_reference, m_current, m_pairs, x, 1e-9,
-				guess.phi, kWindowBounds * delta0[2]);
+				guess.phi, params.motion_window_bounds * delta0[2]);
 	};
 	if (!m_pairs.empty()) estimate();
 	std::string reason;
@@ -401,8 +408,9 @@ void PcmFeatureMatcher::matchPoints(
 	// initial estimate: an estimate far outside them is a wrong match.
 	const double off[3] = {std::abs(x.x - guess.x), std::abs(x.y - guess.y),
 		std::abs(mrpt::math::wrapToPi(x.phi - guess.phi))};
-	for (int k = 0; k < 3; k++)
-		if (off[k] > kWindowBounds * delta0[k])
+	const double window = params.motion_window_bounds;
+	for (int k = 0; k < 3 && window > 0; k++)
+		if (off[k] > window * delta0[k])
 		{
 			char buf[160];
 			std::snprintf(buf, sizeof(buf),
@@ -410,7 +418,7 @@ void PcmFeatureMatcher::matchPoints(
 				"initial guess in %s, bound %.3f)",
 				k == 2 ? mrpt::RAD2DEG(off[k]) : off[k], k == 2 ? "deg" : "m",
 				k == 0 ? "x" : (k == 1 ? "y" : "rotation"),
-				k == 2 ? mrpt::RAD2DEG(kWindowBounds * delta0[k]) : kWindowBounds * delta0[k]);
+				k == 2 ? mrpt::RAD2DEG(window * delta0[k]) : window * delta0[k]);
 			result.failureReason = buf;
 			return;
 		}

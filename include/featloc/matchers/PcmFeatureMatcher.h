@@ -19,9 +19,10 @@ namespace featloc
  * (eq. 14) and the closed-form motion (eqs. 16-23, PcmMotionUpdate).
  *
  * Iteration (section 4): eta_i = -d_max^2 / log 0.5 (eq. 25), d_max the
- * largest distance between the feature predicted at the estimate and at
- * the corners of the motion bounds (eq. 24: "the maximum is on its
- * limits"; all 8 corners are tried); bounds shrink as
+ * distance between the feature predicted at the estimate and at a corner
+ * of the motion bounds (eq. 24: "the maximum is on its limits"; the
+ * paper's one corner, or the largest over all 8: dmax_corners); bounds
+ * shrink as
  * Delta_n = Delta_0 exp(-n / tau) up to n_s (eq. 26), tau per component so
  * that Delta_{n_s} = final_bounds; stop when the step is below
  * stop_translation and stop_rotation, or after max_iterations (n_max).
@@ -77,6 +78,16 @@ class PcmFeatureMatcher : public ScanMatcher
 		double max_rotation_sigma = mrpt::DEG2RAD(3.0);	 //!< [rad]
 		std::string refinement = "weighted";  //!< weighted | none
 		double pair_gate_chi2 = 13.8;  //!< 0 disables the consistency gate
+		/** d_max of eq. (24): "all" (featloc) the largest over the 8
+		 * corners of the bounds box; "published" the one corner the paper
+		 * writes, (t + Delta_t, w + Delta_w). */
+		std::string dmax_corners = "all";
+		/** The estimate stays within this many Delta_0 of the guess
+		 * (featloc; the paper assumes the motion lies in the validity
+		 * interval): rotation candidates of the closed form outside it are
+		 * not considered (a pi - w flip won once in a symmetric room), and
+		 * an estimate outside it fails. 0: neither, as published. */
+		double motion_window_bounds = 2.0;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& c,
