@@ -17,10 +17,10 @@ void CurvatureFunction::Parameters::loadFromConfigFile(
 	readChoice(c, s, "curvature_sampling", sampling, {"metric", "normalized"});
 	read(c, s, "curvature_length", length);
 	read(c, s, "curvature_step", step);
-	require(U_k > 0, c, s, "curvature_U_k", "must be > 0");
-	require(step > 0, c, s, "curvature_step", "must be > 0");
+	require(U_k > 0, c, s, "curvature_U_k", "> 0");
+	require(step > 0, c, s, "curvature_step", "> 0");
 	require(length >= 8 && (length & (length - 1)) == 0, c, s, "curvature_length",
-		"must be a power of two, at least 8");
+		"a power of two, at least 8");
 }
 
 void CurvatureFunction::Parameters::saveToConfigFile(

@@ -16,8 +16,8 @@ void CurvatureFunctionMatcher::Parameters::loadFromConfigFile(
 	using namespace featloc::config;
 	read(c, s, "U_c", U_c);
 	readDegrees(c, s, "curvature_floor_DEG", curvature_floor);
-	require(U_c > 0 && U_c <= 1, c, s, "U_c", "must be in (0, 1]");
-	require(curvature_floor >= 0, c, s, "curvature_floor_DEG", "must be >= 0");
+	require(U_c > 0 && U_c <= 1, c, s, "U_c", "in (0, 1]");
+	require(curvature_floor >= 0, c, s, "curvature_floor_DEG", ">= 0");
 }
 
 void CurvatureFunctionMatcher::Parameters::saveToConfigFile(

@@ -32,8 +32,8 @@ void CfIdcMatcher::Parameters::loadFromConfigFile(
 	read(c, s, "pairing_fallback", pairing_fallback);
 	read(c, s, "segment_gate", segment_gate);
 	idc.loadFromConfigFile(c, s);
-	require(min_segment_points >= 2, c, s, "min_segment_points", "must be >= 2");
-	require(segment_gate >= 0, c, s, "segment_gate", "must be >= 0 (0 disables it)");
+	require(min_segment_points >= 2, c, s, "min_segment_points", ">= 2");
+	require(segment_gate >= 0, c, s, "segment_gate", ">= 0 (0 disables it)");
 }
 
 void CfIdcMatcher::Parameters::saveToConfigFile(

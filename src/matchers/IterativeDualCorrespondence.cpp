@@ -34,21 +34,21 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	read(c, s, "min_range_sigma", min_range_sigma);
 	read(c, s, "max_translation_sigma", max_translation_sigma);
 	readDegrees(c, s, "max_rotation_sigma_DEG", max_rotation_sigma);
-	require(max_iterations >= 1, c, s, "max_iterations", "must be >= 1");
-	require(error_ratio > 0, c, s, "error_ratio", "must be > 0");
-	require(window_sigmas > 0, c, s, "window_sigmas", "must be > 0");
-	require(min_bearing_window > 0, c, s, "min_bearing_window_DEG", "must be > 0");
-	require(min_pair_distance > 0, c, s, "min_pair_distance", "must be > 0");
+	require(max_iterations >= 1, c, s, "max_iterations", ">= 1");
+	require(error_ratio > 0, c, s, "error_ratio", "> 0");
+	require(window_sigmas > 0, c, s, "window_sigmas", "> 0");
+	require(min_bearing_window > 0, c, s, "min_bearing_window_DEG", "> 0");
+	require(min_pair_distance > 0, c, s, "min_pair_distance", "> 0");
 	require(max_pair_distance >= min_pair_distance, c, s, "max_pair_distance",
-		"must be >= min_pair_distance");
-	require(min_pairs >= 3, c, s, "min_pairs", "must be >= 3");
-	require(dual_decimation >= 1, c, s, "dual_decimation", "must be >= 1");
-	require(step_tolerance > 0, c, s, "step_tolerance", "must be > 0");
-	require(guess_gate_chi2 >= 0, c, s, "guess_gate_chi2", "must be >= 0 (0 disables it)");
-	require(covariance_inflation >= 1, c, s, "covariance_inflation", "must be >= 1");
-	require(min_range_sigma > 0, c, s, "min_range_sigma", "must be > 0");
-	require(max_translation_sigma > 0, c, s, "max_translation_sigma", "must be > 0");
-	require(max_rotation_sigma > 0, c, s, "max_rotation_sigma_DEG", "must be > 0");
+		">= min_pair_distance");
+	require(min_pairs >= 3, c, s, "min_pairs", ">= 3");
+	require(dual_decimation >= 1, c, s, "dual_decimation", ">= 1");
+	require(step_tolerance > 0, c, s, "step_tolerance", "> 0");
+	require(guess_gate_chi2 >= 0, c, s, "guess_gate_chi2", ">= 0 (0 disables it)");
+	require(covariance_inflation >= 1, c, s, "covariance_inflation", ">= 1");
+	require(min_range_sigma > 0, c, s, "min_range_sigma", "> 0");
+	require(max_translation_sigma > 0, c, s, "max_translation_sigma", "> 0");
+	require(max_rotation_sigma > 0, c, s, "max_rotation_sigma_DEG", "> 0");
 }
 
 void IterativeDualCorrespondence::Parameters::saveToConfigFile(

@@ -13,8 +13,8 @@ void AdaptiveBreakpointSegmenter::Parameters::loadFromConfigFile(
 	readDegrees(c, s, "breakpoint_lambda_DEG", lambda);
 	read(c, s, "breakpoint_sigma_r", sigma_r);
 	require(lambda > 0 && lambda < M_PI / 2, c, s, "breakpoint_lambda_DEG",
-		"must be in (0, 90) degrees");
-	require(sigma_r >= 0, c, s, "breakpoint_sigma_r", "must be >= 0");
+		"in (0, 90) degrees");
+	require(sigma_r >= 0, c, s, "breakpoint_sigma_r", ">= 0");
 }
 
 void AdaptiveBreakpointSegmenter::Parameters::saveToConfigFile(
