@@ -125,6 +125,40 @@ TEST(RunConfiguration, BadValuesNameTheirKey)
 	}
 }
 
+// A requirement is stated once ("must be in (0, 1]", not "must be must
+// be ..."), whichever matcher's key it is.
+TEST(RunConfiguration, ARequirementIsStatedOnce)
+{
+	registerClasses();
+	const std::pair<const char*, const char*> cases[] = {
+		{"featloc::CfIdcMatcher", "U_c = -1"},
+		{"featloc::CfIdcMatcher", "curvature_length = 7"},
+		{"featloc::CfIdcMatcher", "breakpoint_lambda_DEG = 95"},
+		{"featloc::IdcMatcher", "max_pair_distance = 0.01"},
+		{"featloc::PcmFeatureMatcher", "motion_window_bounds = -1"},
+	};
+	for (const auto& [cls, line] : cases)
+	{
+		const std::string name = std::string(cls).substr(9);
+		TrackedConfig c;
+		c.loadText(std::string("[ScanMatcher]\nclass = ") + cls + "\n[ScanMatcher." + name +
+				"]\n" + line + "\n",
+			"bad.ini");
+		try
+		{
+			RunConfiguration::load(c);
+			ADD_FAILURE() << "no error for: " << line;
+		}
+		catch (const ConfigError& e)
+		{
+			const std::string what = e.what();
+			EXPECT_NE(what.find("bad.ini:4"), std::string::npos) << what;
+			EXPECT_NE(what.find("must be "), std::string::npos) << what;
+			EXPECT_EQ(what.find("must be must be"), std::string::npos) << what;
+		}
+	}
+}
+
 TEST(RunConfiguration, EveryKeyIsInTheConfigReferenceDoc)
 {
 	registerClasses();
