@@ -446,3 +446,57 @@ TEST(CfIdcMatcher, ParametersRoundTripAndBadValuesNameTheKey)
 	EXPECT_NE(msg.find("curvature_length"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("power of two"), std::string::npos) << msg;
 }
+
+// The curvature stage itself (CF-SMA2), in the paper's configuration (no
+// gates, default U_k and U_c): a person who stepped into view has no shape
+// to pair with in the reference scan, so the pairing drops the legs, and
+// nothing else drops them (with curvature_pairing = false they are kept,
+// and so is every wall).
+TEST(CfIdcMatcher, TheCurvatureStageDropsWhatTheReferenceHasNoShapeFor)
+{
+	SyntheticRoom before = SyntheticRoom::office();
+	SyntheticRoom after = SyntheticRoom::office();
+	after.addCircle(2.0, 0.9, 0.06);  // a person's two legs, 2 m ahead
+	after.addCircle(2.0, 1.15, 0.06);
+	const CPose2D robot(0, 0, 0), motion(0.05, 0.0, 0.0);
+	mrpt::random::CRandomGenerator rng(4);
+	const auto ref = noisy(before.scan(robot), rng, 0.01);
+	const auto cur = noisy(after.scan(robot + motion), rng, 0.01);
+	const std::string paper =
+		"final_phase=idc\npairing_gate=false\npairing_fallback=false\nsegment_gate=0\n"
+		"curvature_sampling=normalized\nguess_gate_chi2=0";
+	const auto guess = diagonalPoseGaussian(motion, 0.05, mrpt::DEG2RAD(3.0));
+	auto legsKept = [&](const std::string& keys, size_t& legSegments, size_t& wallsDropped) {
+		auto m = matcher("featloc::CfIdcMatcher", keys);
+		const MatchResult r = m->match(*ref, *cur, guess);
+		EXPECT_TRUE(r.success) << keys << ": " << r.failureReason;
+		const ScanPoints pts = ScanPoints::fromScan(*cur);
+		const auto& cf = dynamic_cast<const CfIdcMatcher&>(*m);
+		size_t kept = 0;
+		legSegments = wallsDropped = 0;
+		for (const auto& seg : cf.lastCurrentSegments())
+		{
+			if (seg.segment.size() < cf.params.min_segment_points) continue;
+			// The legs, in the current sensor frame (the sensor is at the
+			// robot's origin): x = 1.95 - 0.06, y = 0.9 to 1.15.
+			const ScanPoint& mid = pts[(seg.segment.first + seg.segment.last) / 2];
+			const bool leg = std::abs(mid.x - 1.9) < 0.3 && mid.y > 0.7 && mid.y < 1.35;
+			if (leg)
+			{
+				legSegments++;
+				kept += seg.kept;
+			}
+			else
+				wallsDropped += !seg.kept;
+		}
+		return kept;
+	};
+	size_t legs = 0, wallsDropped = 0;
+	EXPECT_EQ(legsKept(paper, legs, wallsDropped), 0u);
+	EXPECT_GE(legs, 1u);
+	// (The pairing drops a few wall pieces too, 3 here: the cost that
+	// scripts/bench-cfidc-ablation.sh measures.)
+	EXPECT_EQ(legsKept(paper + "\ncurvature_pairing=false", legs, wallsDropped), legs);
+	EXPECT_GE(legs, 1u);
+	EXPECT_EQ(wallsDropped, 0u);
+}

@@ -31,6 +31,7 @@
 #include "featloc/plot/CurvePlot.h"
 #include "featloc/pipeline/StepAssembler.h"
 #include "featloc/registerClasses.h"
+#include "featloc/sim/MovedSurfaceBeams.h"
 #include "featloc/sim/RangeScanFisherInformation.h"
 #include "featloc/sim/SimConfiguration.h"
 
@@ -107,9 +108,12 @@ Sequence loadRawlog(
 	return seq;
 }
 /** --world: each pair's Cramer-Rao bound from the world's true surfaces, at
- * the scans' ground-truth poses (each scan's information once). */
-void attachBounds(std::vector<ScanPairSample>& pairs, const std::vector<size_t>& referenceIndex,
-	const std::vector<size_t>& currentIndex, const Sequence& seq, const std::string& worldPath)
+ * the scans' ground-truth poses (each scan's information once; not with
+ * withBounds false: Nunez et al.'s protocol moves the scans), and the
+ * current scan's beams on things that moved since the reference scan. */
+void attachWorld(std::vector<ScanPairSample>& pairs, const std::vector<size_t>& referenceIndex,
+	const std::vector<size_t>& currentIndex, const Sequence& seq, const std::string& worldPath,
+	bool withBounds)
 {
 	if (seq.reference.empty())
 		throw UsageError("--world needs the scans' ground truth (--ground-truth FILE)");
@@ -143,8 +147,13 @@ void attachBounds(std::vector<ScanPairSample>& pairs, const std::vector<size_t>&
 	{
 		const auto& ref = informationOf(referenceIndex[p]);
 		const auto& cur = informationOf(currentIndex[p]);
-		pairs[p].bound = ScanPairCramerRaoBound::of(
-			seq.reference[referenceIndex[p]], ref, seq.reference[currentIndex[p]], cur);
+		if (withBounds)
+			pairs[p].bound = ScanPairCramerRaoBound::of(
+				seq.reference[referenceIndex[p]], ref, seq.reference[currentIndex[p]], cur);
+		const size_t c = currentIndex[p];
+		pairs[p].movedBeams = MovedSurfaceBeams::of(world.world, seq.times[c] - world.simulation.t0,
+			*seq.scans[c], seq.reference[c], seq.times[referenceIndex[p]] - world.simulation.t0);
+		pairs[p].movedKnown = true;
 	}
 }
 
@@ -218,17 +227,34 @@ void printRow(const std::string& name, const ScanPairBenchmark::Result& r)
 		r.medianTime * 1e3, r.meanIterations, r.meanNees, 100 * r.neesWithin95);
 }
 
-/** The matchers' mean errors against the pairs' Cramer-Rao bound. */
-void printBoundTable(const std::string& name, const std::vector<ScanPairBenchmark::Result>& results)
+/** With --world: the matchers' mean errors against the pairs' Cramer-Rao
+ * bound, and the points on things that moved that they kept. */
+void printWorldTables(const std::string& name, const std::vector<ScanPairBenchmark::Result>& results)
 {
-	std::printf("\n| data | matcher | pairs with a bound | \\|t\\| err mean / CRB [mm] | ratio "
-				"| \\|w\\| err mean / CRB [deg] | ratio |\n|---|---|---|---|---|---|---|\n");
+	if (!results.empty() && results.front().boundedPairs > 0)
+	{
+		std::printf("\n| data | matcher | pairs with a bound | \\|t\\| err mean / CRB [mm] | ratio "
+					"| \\|w\\| err mean / CRB [deg] | ratio |\n|---|---|---|---|---|---|---|\n");
+		for (const auto& r : results)
+			std::printf("| %s | %s | %zu | %.2f / %.2f | %.2f | %.4f / %.4f | %.2f |\n", name.c_str(),
+				r.matcher.c_str(), r.boundedPairs, r.boundedMeanTrans * 1e3, r.boundMeanTrans * 1e3,
+				r.boundMeanTrans > 0 ? r.boundedMeanTrans / r.boundMeanTrans : 0.0,
+				mrpt::RAD2DEG(r.boundedMeanYaw), mrpt::RAD2DEG(r.boundMeanYaw),
+				r.boundMeanYaw > 0 ? r.boundedMeanYaw / r.boundMeanYaw : 0.0);
+	}
+	std::printf("\n| data | matcher | current points on things that moved since the reference scan, kept "
+				"| the other points, kept |\n|---|---|---|---|\n");
 	for (const auto& r : results)
-		std::printf("| %s | %s | %zu | %.2f / %.2f | %.2f | %.4f / %.4f | %.2f |\n", name.c_str(),
-			r.matcher.c_str(), r.boundedPairs, r.boundedMeanTrans * 1e3, r.boundMeanTrans * 1e3,
-			r.boundMeanTrans > 0 ? r.boundedMeanTrans / r.boundMeanTrans : 0.0,
-			mrpt::RAD2DEG(r.boundedMeanYaw), mrpt::RAD2DEG(r.boundMeanYaw),
-			r.boundMeanYaw > 0 ? r.boundedMeanYaw / r.boundMeanYaw : 0.0);
+	{
+		if (r.movedSeen + r.stillSeen == 0)
+		{
+			std::printf("| %s | %s | (no parts reported) | |\n", name.c_str(), r.matcher.c_str());
+			continue;
+		}
+		std::printf("| %s | %s | %s of %zu | %s of %zu |\n", name.c_str(), r.matcher.c_str(),
+			percent(r.movedKept, r.movedSeen).c_str(), r.movedSeen,
+			percent(r.stillKept, r.stillSeen).c_str(), r.stillSeen);
+	}
 }
 
 nlohmann::json toJson(const ScanPairBenchmark::Result& r)
@@ -246,6 +272,9 @@ nlohmann::json toJson(const ScanPairBenchmark::Result& r)
 		{"nees_mean", r.meanNees}, {"nees_median", r.medianNees},
 		{"nees_within_95", r.neesWithin95}, {"failure_examples", r.failureExamples},
 		{"silent_gross_examples", r.silentGrossExamples}};
+	if (r.movedSeen + r.stillSeen > 0)
+		j["points_kept"] = {{"moved_seen", r.movedSeen}, {"moved_kept", r.movedKept},
+			{"still_seen", r.stillSeen}, {"still_kept", r.stillKept}};
 	if (r.boundedPairs > 0)
 		j["cramer_rao"] = {{"pairs", r.boundedPairs},
 			{"mean_trans_err_m", r.boundedMeanTrans}, {"bound_mean_trans_m", r.boundMeanTrans},
@@ -319,7 +348,10 @@ int BenchApp::main(int argc, char** argv)
 		"The featloc-sim world file the log was simulated in: each pair's "
 		"Cramer-Rao bound from the range noise against the world's true "
 		"surfaces at the ground-truth poses, and each matcher's mean error "
-		"against it (not with --apply-motion)",
+		"against it (not with --apply-motion); and the share of the current "
+		"scans' points on things that moved since the reference scan (people, "
+		"carts, doors) that the matchers reporting their parts (CF-IDC's "
+		"segments, PCM's features) kept",
 		false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> argLoops("", "loop-relations",
 		"Instead of benchmarking: where TRAJECTORY (of this log) comes back to a place "
@@ -393,10 +425,7 @@ int BenchApp::main(int argc, char** argv)
 	}
 	if (pairs.empty()) throw InputError("'" + data + "' gives no scan pair to benchmark");
 	if (argWorld.isSet())
-	{
-		if (argApply.isSet()) throw UsageError("--world gives no bound with --apply-motion");
-		attachBounds(pairs, referenceIndex, currentIndex, seq, argWorld.getValue());
-	}
+		attachWorld(pairs, referenceIndex, currentIndex, seq, argWorld.getValue(), !argApply.isSet());
 
 	ScanPairBenchmark::Options o;
 	o.perturbXY = argXY.getValue();
@@ -446,7 +475,7 @@ int BenchApp::main(int argc, char** argv)
 		printRow(name, r);
 		j["results"].push_back(toJson(r));
 	}
-	if (argWorld.isSet()) printBoundTable(name, results);
+	if (argWorld.isSet()) printWorldTables(name, results);
 	if (argBasin.isSet())
 	{
 		// The basin curve: the same pairs and draws at each initial error.

@@ -7,6 +7,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -267,15 +268,19 @@ int SimApp::main(int argc, char** argv)
 	const double secs =
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+	const size_t carts = static_cast<size_t>(std::count_if(sim.world().agents().begin(),
+		sim.world().agents().end(),
+		[](const WalkingAgent& a) { return a.params().shape == WalkingAgent::Shape::Cart; }));
 	std::printf(
 		"featloc-sim: %s, seed %u\n"
-		"  world: %zu wall segments, %zu circles, %zu people\n"
+		"  world: %zu wall segments, %zu circles, %zu people, %zu carts, %zu doors\n"
 		"  robot: %.1f m in %.1f s; laser %s, %u beams at %.1f Hz\n"
 		"  wrote %zu scans (rawlog format #%u, %s) in %.2f s:\n"
 		"    %s\n    %s\n    %s\n    %s\n",
 		argWorld.getValue().c_str(), sc.simulation.seed,
 		sim.world().segments().size(), sim.world().circles().size(),
-		sim.world().agents().size(), res.pathLength, res.duration,
+		sim.world().agents().size() - carts, carts, sim.world().doors().size(), res.pathLength,
+		res.duration,
 		sc.laser.preset.c_str(), sc.laser.beams, sc.laser.rate, res.scans,
 		sc.simulation.format,
 		sc.simulation.format == 1

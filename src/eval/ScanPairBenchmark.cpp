@@ -9,11 +9,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "featloc/eval/EvaluationReport.h"
 #include "featloc/eval/ErrorStats.h"
 #include "featloc/math/DiagonalPoseGaussian.h"
 #include "featloc/math/PoseDifference.h"
+#include "featloc/scan/ScanPoints.h"
 
 namespace featloc
 {
@@ -67,9 +69,36 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			guess = diagonalPoseGaussian(
 				mrpt::poses::CPose2D(p.truth.x() + dx, p.truth.y() + dy, p.truth.phi() + dw),
 				sigmaXY, sigmaYaw);
+		// Which of the current scan's points the matchers keep (with the
+		// world known): their parts' beams against the moved ones.
+		std::optional<ScanPoints> refPoints, curPoints;
+		if (p.movedKnown)
+		{
+			refPoints = ScanPoints::fromScan(*p.reference);
+			curPoints = ScanPoints::fromScan(*current);
+		}
 		for (size_t m = 0; m < matchers.size(); m++)
 		{
 			const MatchResult r = matchers[m]->match(*p.reference, *current, guess);
+			if (p.movedKnown)
+			{
+				const mrpt::poses::CPose2D sensorEstimate =
+					(mrpt::poses::CPose2D() - mrpt::poses::CPose2D(p.reference->sensorPose)) +
+					r.estimate.mean + mrpt::poses::CPose2D(current->sensorPose);
+				const MatchInspection in =
+					matchers[m]->inspectLastMatch(*refPoints, *curPoints, sensorEstimate);
+				for (const auto& part : in.parts)
+				{
+					if (!part.current) continue;
+					for (uint32_t b : part.beams)
+					{
+						const bool moved = std::binary_search(
+							p.movedBeams.begin(), p.movedBeams.end(), b);
+						(moved ? res[m].movedSeen : res[m].stillSeen)++;
+						if (part.kept) (moved ? res[m].movedKept : res[m].stillKept)++;
+					}
+				}
+			}
 			auto& a = acc[m];
 			res[m].pairs++;
 			a.time.push_back(r.timeSeconds);

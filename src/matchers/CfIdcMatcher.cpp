@@ -28,6 +28,7 @@ void CfIdcMatcher::Parameters::loadFromConfigFile(
 	read(c, s, "min_segment_points", min_segment_points);
 	curvature.loadFromConfigFile(c, s);
 	correlation.loadFromConfigFile(c, s);
+	read(c, s, "curvature_pairing", curvature_pairing);
 	read(c, s, "pairing_gate", pairing_gate);
 	read(c, s, "pairing_fallback", pairing_fallback);
 	read(c, s, "segment_gate", segment_gate);
@@ -45,6 +46,8 @@ void CfIdcMatcher::Parameters::saveToConfigFile(
 		"segments with fewer points are dropped (isolated groups)");
 	curvature.saveToConfigFile(c, s);
 	correlation.saveToConfigFile(c, s);
+	write(c, s, "curvature_pairing", curvature_pairing,
+		"pair the segments' curvature functions and drop the unpaired ones (CF-SMA2; false: every segment goes to IDC, an ablation)");
 	write(c, s, "pairing_gate", pairing_gate,
 		"compare only segments that can be the same object under the initial guess (false: the paper)");
 	write(c, s, "pairing_fallback", pairing_fallback,
@@ -303,10 +306,21 @@ void CfIdcMatcher::matchPoints(
 	describe(current, m_currentReport, m_currentFunctions, m_currentSegmentOf);
 
 	// CF-SMA2: pair the curvature functions; unpaired segments are dropped.
-	plausiblePairs(reference, current, initialGuess);
-	m_correlator.match(m_currentFunctions, m_referenceFunctions, m_allowed,
-		params.curvature.sampling == "normalized", m_matches);
-	pairSegments();
+	if (params.curvature_pairing)
+	{
+		plausiblePairs(reference, current, initialGuess);
+		m_correlator.match(m_currentFunctions, m_referenceFunctions, m_allowed,
+			params.curvature.sampling == "normalized", m_matches);
+		pairSegments();
+	}
+	else
+		for (auto* report : {&m_currentReport, &m_referenceReport})
+			for (auto& s : *report)
+				if (s.segment.size() >= params.min_segment_points)
+				{
+					s.kept = true;
+					s.reason = "kept: curvature_pairing is off";
+				}
 	buildReference(reference);
 	collectKeptCurrent(current);
 	size_t sizeable = 0;
@@ -381,7 +395,10 @@ MatchInspection CfIdcMatcher::inspectLastMatch(const ScanPoints& reference,
 			part.kept = r.kept;
 			part.kind = "segment";
 			for (uint32_t i = r.segment.first; i <= r.segment.last && i < scan.size(); i++)
+			{
 				part.points.push_back({scan.points[i].x, scan.points[i].y});
+				part.beams.push_back(scan.points[i].beam);
+			}
 			part.note = r.reason;
 			out.parts.push_back(std::move(part));
 		}

@@ -440,7 +440,10 @@ MatchInspection PcmFeatureMatcher::inspectLastMatch(const ScanPoints& reference,
 			part.current = isCurrent;
 			part.kind = f.kind == ScanFeature::Kind::Line ? "line" : "ellipse";
 			for (uint32_t i = f.firstPoint; i <= f.lastPoint && i < scan.size(); i++)
+			{
 				part.points.push_back({scan.points[i].x, scan.points[i].y});
+				part.beams.push_back(scan.points[i].beam);
+			}
 			double bestMu = 0;
 			for (const auto& p : m_pairs)
 				if ((isCurrent ? p.j : p.i) == k) bestMu = std::max(bestMu, p.mu);

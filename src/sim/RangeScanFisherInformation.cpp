@@ -30,11 +30,17 @@ RangeScanFisherInformation::Result RangeScanFisherInformation::of(const SimWorld
 	const double step = scan.aperture / static_cast<double>(n - 1);
 	std::vector<CircleShape> circles;
 	world.circlesAt(t, circles);
+	std::vector<WallSegment> moving;
+	const auto& segments = world.segmentsAt(t, moving);
 	std::vector<double> ranges;
 	std::vector<RayCaster::Hit> hits;
-	RayCaster::cast(sensor.asTPose(), first, step, n, scan.maxRange, world.segments(), circles,
-		ranges, &hits);
-	const size_t staticShapes = world.segments().size() + world.circles().size();
+	RayCaster::cast(sensor.asTPose(), first, step, n, scan.maxRange, segments, circles, ranges,
+		&hits);
+	// Static shapes come first among the segments and among the circles.
+	auto isStatic = [&](size_t shape) {
+		return shape < world.segments().size() ||
+			(shape >= segments.size() && shape - segments.size() < world.circles().size());
+	};
 
 	// d s / d theta: the mount's lever arm turned with the robot.
 	const double c = std::cos(robot.phi()), s = std::sin(robot.phi());
@@ -45,7 +51,7 @@ RangeScanFisherInformation::Result RangeScanFisherInformation::of(const SimWorld
 		if (!scan.getScanRangeValidity(i)) continue;
 		res.beamsValid++;
 		if (!(std::abs(scan.getScanRange(i) - ranges[k]) <= 5 * sigma)) res.beamsOff++;
-		if (!std::isfinite(ranges[k]) || hits[k].shape >= staticShapes) continue;
+		if (!std::isfinite(ranges[k]) || !isStatic(hits[k].shape)) continue;
 		const double a = sensor.phi() + first + step * static_cast<double>(k);
 		const double vx = std::cos(a), vy = std::sin(a);
 		const double nx = std::cos(hits[k].normal), ny = std::sin(hits[k].normal);

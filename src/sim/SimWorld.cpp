@@ -1,5 +1,7 @@
 #include "featloc/sim/SimWorld.h"
 
+#include <mrpt/core/bits_math.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -190,7 +192,13 @@ void loadAgent(SimWorld& w, const mrpt::config::CConfigFileBase& c, const std::s
 	p.name = s;
 	std::string shape = "legs", mode = "loop";
 	std::vector<std::vector<double>> rows;
-	config::readChoice(c, s, "shape", shape, {"legs", "body"});
+	std::vector<double> cartSize = {p.cartLength, p.cartWidth};
+	config::readChoice(c, s, "shape", shape, {"legs", "body", "cart"});
+	config::read(c, s, "cart_size", cartSize);
+	config::require(cartSize.size() == 2 && cartSize[0] > 0 && cartSize[1] > 0, c, s, "cart_size",
+		"[length width], both > 0");
+	p.cartLength = cartSize[0];
+	p.cartWidth = cartSize[1];
 	config::readRows(c, s, "waypoints", rows, {2});
 	config::read(c, s, "speed", p.speed);
 	config::read(c, s, "pause", p.pause);
@@ -208,12 +216,40 @@ void loadAgent(SimWorld& w, const mrpt::config::CConfigFileBase& c, const std::s
 	config::require(p.bodyRadius > 0, c, s, "body_radius", "> 0");
 	config::require(p.legRadius > 0, c, s, "leg_radius", "> 0");
 	config::require(p.strideLength > 0, c, s, "stride_length", "> 0");
-	p.shape = shape == "body" ? WalkingAgent::Shape::Body : WalkingAgent::Shape::Legs;
+	p.shape = shape == "body" ? WalkingAgent::Shape::Body
+		: shape == "cart"	  ? WalkingAgent::Shape::Cart
+							  : WalkingAgent::Shape::Legs;
 	p.mode = mode == "once" ? WalkingAgent::Mode::Once
 		: mode == "pingpong" ? WalkingAgent::Mode::PingPong
 							 : WalkingAgent::Mode::Loop;
 	p.waypoints = points(rows);
 	w.addAgent(p);
+}
+
+void loadDoor(SimWorld& w, const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	SwingingDoor::Params p;
+	p.name = s;
+	std::vector<double> hinge;
+	std::vector<std::vector<double>> rows;
+	config::read(c, s, "hinge", hinge);
+	config::read(c, s, "length", p.length);
+	config::readRows(c, s, "swing", rows, {2});
+	config::read(c, s, "period", p.period);
+	config::require(hinge.size() == 2, c, s, "hinge", "[x y]");
+	config::require(p.period >= 0, c, s, "period", ">= 0 (0: no repeat)");
+	config::require(p.length > 0, c, s, "length", "> 0");
+	config::require(!rows.empty(), c, s, "swing", "at least one keyframe [t angle_deg; ...]");
+	for (size_t i = 0; i < rows.size(); i++)
+	{
+		config::require(i == 0 || rows[i][0] > rows[i - 1][0], c, s, "swing",
+			"keyframes with increasing times [t angle_deg; ...]");
+		p.swing.emplace_back(rows[i][0], mrpt::DEG2RAD(rows[i][1]));
+	}
+	config::require(p.period == 0 || (rows.front()[0] >= 0 && rows.back()[0] < p.period), c, s,
+		"swing", "keyframe times in [0, period)");
+	p.hinge = {hinge[0], hinge[1]};
+	w.addDoor(p);
 }
 }  // namespace
 
@@ -230,12 +266,26 @@ SimWorld SimWorld::fromConfig(const mrpt::config::CConfigFileBase& cfg)
 			loadObstacle(w, cfg, s);
 		else if (hasPrefix(s, "Agent."))
 			loadAgent(w, cfg, s);
+		else if (hasPrefix(s, "Door."))
+			loadDoor(w, cfg, s);
 	}
 	if (w.m_segments.empty() && w.m_circles.empty())
 		throw ConfigError(
 			"the world has no walls or obstacles: add [Wall.<name>] or "
 			"[Obstacle.<name>] sections");
 	return w;
+}
+
+const std::vector<WallSegment>& SimWorld::segmentsAt(
+	double t, std::vector<WallSegment>& scratch) const
+{
+	const bool carts = std::any_of(m_agents.begin(), m_agents.end(),
+		[](const WalkingAgent& a) { return a.params().shape == WalkingAgent::Shape::Cart; });
+	if (m_doors.empty() && !carts) return m_segments;
+	scratch = m_segments;
+	for (const auto& d : m_doors) scratch.push_back(d.segmentAt(t));
+	for (const auto& a : m_agents) a.segmentsAt(t, scratch);
+	return scratch;
 }
 
 void SimWorld::circlesAt(double t, std::vector<CircleShape>& out) const

@@ -68,11 +68,13 @@ std::vector<double> Simulator::exactRanges(
 {
 	std::vector<CircleShape> circles;
 	m_world.circlesAt(t, circles);
+	std::vector<WallSegment> moving;
+	const auto& segments = m_world.segmentsAt(t, moving);
 	const auto [first, step] = beamGeometry(m_laser);
 	std::vector<double> ranges;
 	RayCaster::cast(
 		sensor.asTPose(), first, step, m_laser.beams, m_laser.max_range,
-		m_world.segments(), circles, ranges);
+		segments, circles, ranges);
 	return ranges;
 }
 
@@ -138,6 +140,8 @@ mrpt::obs::CObservationBearingRange::Ptr Simulator::makeBeacons(
 
 	std::vector<CircleShape> circles;
 	if (b.occlusion) m_world.circlesAt(t, circles);
+	std::vector<WallSegment> moving;
+	const auto& segments = m_world.segmentsAt(t, moving);
 	for (size_t i = 0; i < b.points.size(); i++)
 	{
 		// Always draw both numbers (fixed random sequence, as for beams).
@@ -153,7 +157,7 @@ mrpt::obs::CObservationBearingRange::Ptr Simulator::makeBeacons(
 			// beacon on a wall is still seen: 2 cm tolerance).
 			std::vector<double> hit;
 			RayCaster::cast(
-				sensor.asTPose(), bearing, 1e-3, 1, range, m_world.segments(), circles, hit);
+				sensor.asTPose(), bearing, 1e-3, 1, range, segments, circles, hit);
 			if (std::isfinite(hit[0]) && hit[0] < range - 0.02) continue;
 		}
 		// A beacon within a few noise sigmas could come out at a negative

@@ -99,8 +99,33 @@ WalkingAgent::State WalkingAgent::stateAt(double tAbs) const
 	return st;
 }
 
+void WalkingAgent::segmentsAt(double t, std::vector<WallSegment>& out) const
+{
+	if (m_params.shape != Shape::Cart) return;
+	const State st = stateAt(t);
+	const double ch = std::cos(st.heading), sh = std::sin(st.heading);
+	const double l = m_params.cartLength / 2, w = m_params.cartWidth / 2;
+	mrpt::math::TPoint2D corner[4];
+	const double along[4] = {l, -l, -l, l}, across[4] = {w, w, -w, -w};
+	for (int k = 0; k < 4; k++)
+		corner[k] = {st.position.x + along[k] * ch - across[k] * sh,
+			st.position.y + along[k] * sh + across[k] * ch};
+	for (int k = 0; k < 4; k++)
+	{
+		WallSegment s;
+		s.a = corner[k];
+		s.b = corner[(k + 1) % 4];
+		s.object = m_params.name;
+		s.texture = m_params.texture;
+		s.top = kHip;
+		s.solid = true;
+		out.push_back(s);
+	}
+}
+
 void WalkingAgent::shapesAt(double t, std::vector<CircleShape>& out) const
 {
+	if (m_params.shape == Shape::Cart) return;
 	const State st = stateAt(t);
 	CircleShape c;
 	c.texture = m_params.texture;
@@ -135,7 +160,7 @@ void WalkingAgent::shapesAt(double t, std::vector<CircleShape>& out) const
 void WalkingAgent::cameraShapesAt(double t, std::vector<CircleShape>& out) const
 {
 	shapesAt(t, out);
-	if (m_params.shape == Shape::Body) return;
+	if (m_params.shape != Shape::Legs) return;
 	const State st = stateAt(t);
 	CircleShape c;
 	c.texture = m_params.texture;

@@ -22,6 +22,12 @@ struct ScanPairSample
 	 * known (featloc-bench --world). Not used with Options::applyMotion
 	 * (the moved scan's relative pose is another one). */
 	std::optional<ScanPairCramerRaoBound> bound;
+	/** Where the world is known (featloc-bench --world): the current
+	 * scan's beams on something that moved since the reference scan
+	 * (MovedSurfaceBeams: a person, a cart, a door), ascending; whether the
+	 * matchers keep them is counted. */
+	std::vector<uint32_t> movedBeams;
+	bool movedKnown = false;
 };
 
 /** The scan-pair protocols of the papers.
@@ -89,6 +95,13 @@ class ScanPairBenchmark
 		size_t boundedPairs = 0;
 		double boundedMeanTrans = 0, boundedMeanYaw = 0;  //!< [m], [rad] the matcher's
 		double boundMeanTrans = 0, boundMeanYaw = 0;  //!< [m], [rad] the bound's E|t|, E|w|
+		/** Over the pairs whose moved beams are known, for matchers that
+		 * report the current scan's parts (MatchInspection: CF-IDC's
+		 * segments, PCM's features): the current points on things that
+		 * moved since the reference scan and on the others that fell in
+		 * some part, and how many of each the match kept (after every
+		 * gate). */
+		size_t movedSeen = 0, movedKept = 0, stillSeen = 0, stillKept = 0;
 		std::vector<std::string> failureExamples, silentGrossExamples;
 		size_t flagged() const { return failures + ambiguousUsed; }
 		/** Share of pairs neither flagged nor grossly wrong. */

@@ -57,6 +57,9 @@ namespace featloc
  * 3 min_pairs points, the estimate is too poor to judge by and the
  * pairing's choice stands.
  *
+ * For the ablation of the curvature stage, curvature_pairing = false skips
+ * CF-SMA2: every segment large enough goes to IDC (the gates still act).
+ *
  * What was dropped, and why, is reported per segment (lastCurrentSegments,
  * lastReferenceSegments) for the tests and for pictures. */
 class CfIdcMatcher : public ScanMatcher
@@ -70,6 +73,9 @@ class CfIdcMatcher : public ScanMatcher
 		unsigned int min_segment_points = 5;
 		CurvatureFunction::Parameters curvature;
 		CurvatureFunctionMatcher::Parameters correlation;
+		/** false: no CF-SMA2, every segment of min_segment_points goes to
+		 * IDC (an ablation switch: what the curvature stage itself does). */
+		bool curvature_pairing = true;
 		bool pairing_gate = true;
 		/** The pairing keeps under a third of the points: IDC starts from
 		 * every segment large enough (false: the paper, IDC on the paired

@@ -1,6 +1,7 @@
 #pragma once
 #include <mrpt/math/TPoint2D.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct MatchInspection
 		bool kept = true;  //!< used by the match (else dropped)
 		std::string kind;  //!< "segment", "line", "ellipse"
 		std::vector<mrpt::math::TPoint2D> points;  //!< its points, in order
+		std::vector<uint32_t> beams;  //!< each point's beam index in its scan
 		std::string note;  //!< why kept or dropped, or how it was paired
 	};
 

@@ -23,8 +23,9 @@ namespace featloc
  *
  * sigma is the scan's own stdError (the simulator's range noise). A beam
  * counts when the scan has it valid and, cast exactly from the true pose,
- * it hits a static wall or obstacle: beams on a walking person (at the
- * scan's time) or on nothing carry no information about the pose. */
+ * it hits a static wall or obstacle: beams on a walking person, a cart or
+ * a door (where they are at the scan's time) or on nothing carry no
+ * information about the pose. */
 class RangeScanFisherInformation
 {
    public:

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "featloc/sim/CircleShape.h"
+#include "featloc/sim/SwingingDoor.h"
 #include "featloc/sim/WalkingAgent.h"
 #include "featloc/sim/WallSegment.h"
 
@@ -19,8 +20,9 @@ namespace featloc
  *                     bottom, height, posters, patches, patch_texture, doors
  *   [Obstacle.<name>] polygon = [x y; ...] or circle = [cx cy r], texture,
  *                     height
- *   [Agent.<name>]    shape = legs|body, waypoints = [...], speed, pause,
- *                     mode = loop|pingpong|once, start_time, sizes */
+ *   [Agent.<name>]    shape = legs|body|cart, waypoints = [...], speed, pause,
+ *                     mode = loop|pingpong|once, start_time, sizes
+ *   [Door.<name>]     hinge = [x y], length, swing = [t deg; ...] */
 class SimWorld
 {
    public:
@@ -29,11 +31,18 @@ class SimWorld
 	void addSegment(const WallSegment& s) { m_segments.push_back(s); }
 	void addCircle(const CircleShape& c) { m_circles.push_back(c); }
 	void addAgent(const WalkingAgent::Params& p) { m_agents.emplace_back(p); }
+	void addDoor(const SwingingDoor::Params& p) { m_doors.emplace_back(p); }
 
 	const std::vector<WallSegment>& segments() const { return m_segments; }
 	const std::vector<CircleShape>& circles() const { return m_circles; }
 	const std::vector<WalkingAgent>& agents() const { return m_agents; }
+	const std::vector<SwingingDoor>& doors() const { return m_doors; }
 
+	/** The segments the laser sees at time t: the static ones (first, in
+	 * the order of segments()), then every door's and every cart's. Without
+	 * doors and carts that is segments() itself (no copy); otherwise they
+	 * are put in `scratch`, which is returned. */
+	const std::vector<WallSegment>& segmentsAt(double t, std::vector<WallSegment>& scratch) const;
 	/** Static circles plus every agent's circles at time t. */
 	void circlesAt(double t, std::vector<CircleShape>& out) const;
 	/** The same as the camera sees them: people with torso and head. */
@@ -53,5 +62,6 @@ class SimWorld
 	std::vector<WallSegment> m_segments;
 	std::vector<CircleShape> m_circles;
 	std::vector<WalkingAgent> m_agents;
+	std::vector<SwingingDoor> m_doors;
 };
 }  // namespace featloc

@@ -5,20 +5,24 @@
 #include <vector>
 
 #include "featloc/sim/CircleShape.h"
+#include "featloc/sim/WallSegment.h"
 
 namespace featloc
 {
 /** A person walking along waypoints at a constant speed, pausing at each
  * waypoint, seen by a laser as two legs (two small circles swinging with
- * the gait) or as one body circle. Positions are analytic functions of
- * time, so a scan at any time sees the person exactly where it is. */
+ * the gait) or as one body circle; or a cart pushed along them, seen as a
+ * rectangle lengthwise along its heading. Positions are analytic functions
+ * of time, so a scan at any time sees the person exactly where it is. The
+ * simulated camera sees people, not carts. */
 class WalkingAgent
 {
    public:
 	enum class Shape
 	{
 		Legs,
-		Body
+		Body,
+		Cart
 	};
 	enum class Mode
 	{
@@ -40,6 +44,7 @@ class WalkingAgent
 		double legSeparation = 0.25;  //!< [m] between leg centres, across
 		double strideLength = 1.4;	//!< [m] walked per gait cycle
 		double stepAmplitude = 0.15;  //!< [m] leg swing, along the heading
+		double cartLength = 1.0, cartWidth = 0.6;  //!< [m] Cart shape
 		std::string texture = "clothes";
 	};
 	struct State
@@ -54,8 +59,11 @@ class WalkingAgent
 
 	const Params& params() const { return m_params; }
 	State stateAt(double t) const;
-	/** Appends the circles the laser sees at time t. */
+	/** Appends the circles the laser sees at time t (none for a cart). */
 	void shapesAt(double t, std::vector<CircleShape>& out) const;
+	/** Appends the segments the laser sees at time t: a cart's four sides
+	 * (nothing for a person). */
+	void segmentsAt(double t, std::vector<WallSegment>& out) const;
 	/** Appends the cylinders a camera sees at time t: the laser's circles
 	 * (legs up to the hip, or the whole body) plus, for legs, a torso and a
 	 * head above them. */
