@@ -17,7 +17,8 @@
 # surface of the world at the reference scan's time) that each CF-IDC
 # variant kept for its final IDC, against the other points kept.
 # "As published" is the paper exactly as far as switches go
-# (doc/cfidc-matcher.md lists what cannot be switched off).
+# (doc/cfidc-matcher.md lists what cannot be switched off); it also runs
+# with U_k read as 5 cm and 1 cm instead of 1.0 m.
 # Usage: scripts/bench-cfidc-ablation.sh [OUTDIR]   (about 5 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
@@ -28,6 +29,8 @@ PAPER_CFIDC="$PAPER_IDC;pairing_gate=false;pairing_fallback=false;segment_gate=0
 M="IDC as published=featloc::IdcMatcher{$PAPER_IDC}"
 M="$M,CF-IDC as published=featloc::CfIdcMatcher{$PAPER_CFIDC}"
 M="$M,CF-IDC as published - curvature pairing=featloc::CfIdcMatcher{$PAPER_CFIDC;curvature_pairing=false}"
+M="$M,CF-IDC as published U_k 5 cm=featloc::CfIdcMatcher{$PAPER_CFIDC;curvature_U_k=0.05}"
+M="$M,CF-IDC as published U_k 1 cm=featloc::CfIdcMatcher{$PAPER_CFIDC;curvature_U_k=0.01}"
 M="$M,CF-IDC featloc=featloc::CfIdcMatcher"
 M="$M,CF-IDC featloc - curvature pairing=featloc::CfIdcMatcher{curvature_pairing=false}"
 M="$M,CF-IDC featloc - pairing gate=featloc::CfIdcMatcher{pairing_gate=false}"

@@ -608,6 +608,33 @@ TEST(FeatlocBench, ErrorsBesideTheCramerRaoBoundOfTheSimulatedWorld)
 		<< noTruth.output;
 }
 
+// With the world, featloc-bench also counts the current points on things
+// that moved since the reference scan (people here) that CF-IDC kept for
+// IDC: its segment gate drops most of them and keeps nearly all the rest;
+// matchers that report no parts (ICP) are said to.
+TEST(FeatlocBench, PointsOnThingsThatMovedAreCountedWithTheWorld)
+{
+	TempDir dir;
+	const std::string sim = std::string(FEATLOC_SOURCE_DIR) + "/rawlogs/sim/";
+	const CommandResult r = runCommand(shellQuote(FEATLOC_BENCH_EXE) + " " + shellQuote(kConfig) +
+		" " + shellQuote(sim + "corridor-people.rawlog") + " -g " +
+		shellQuote(sim + "corridor-people.gt.txt") + " --world " +
+		shellQuote(std::string(FEATLOC_SOURCE_DIR) + "/worlds/corridor-people.ini") +
+		" --max-pairs 80 -q -j " + shellQuote(dir.file("b.json")) +
+		" -m featloc::CfIdcMatcher,featloc::IcpMatcher");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("| corridor-people.rawlog | featloc::IcpMatcher | (no parts reported) |"),
+		std::string::npos)
+		<< r.output;
+	const auto j = readJson(dir.file("b.json"));
+	const auto& k = j["results"][0]["points_kept"];
+	const double moved = k["moved_seen"].get<double>(), still = k["still_seen"].get<double>();
+	ASSERT_GT(moved, 50) << k;
+	EXPECT_LT(k["moved_kept"].get<double>() / moved, 0.5) << k;
+	EXPECT_GT(k["still_kept"].get<double>() / still, 0.9) << k;
+	EXPECT_FALSE(j["results"][1].contains("points_kept"));
+}
+
 // Every pair counts: a failed pair with its guess's error, so a matcher
 // that fails everything scores exactly the guesses' errors; a matcher that
 // succeeds wrongly is a silent gross error. The basin curve is drawn.
