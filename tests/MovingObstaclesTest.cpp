@@ -11,7 +11,6 @@
 #include "featloc/core/ConfigError.h"
 #include "featloc/sim/MovedSurfaceBeams.h"
 #include "featloc/sim/RangeScanFisherInformation.h"
-#include "featloc/sim/RayCaster.h"
 #include "featloc/sim/SimWorld.h"
 #include "support/ErrorMessage.h"
 
@@ -55,12 +54,8 @@ mrpt::obs::CObservation2DRangeScan exactScan(const SimWorld& w, const CPose2D& r
 	s.maxRange = 30;
 	s.stdError = 0.01f;
 	s.resizeScan(361);
-	std::vector<CircleShape> circles;
-	w.circlesAt(t, circles);
-	std::vector<WallSegment> scratch;
 	std::vector<double> r;
-	RayCaster::cast(robot.asTPose(), -s.aperture / 2.0, s.aperture / 360.0, 361, 30,
-		w.segmentsAt(t, scratch), circles, r);
+	w.castScan(t, robot, s, r);
 	for (size_t i = 0; i < 361; i++)
 	{
 		s.setScanRange(i, static_cast<float>(std::isfinite(r[i]) ? r[i] : 30));

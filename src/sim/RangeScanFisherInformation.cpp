@@ -24,22 +24,18 @@ RangeScanFisherInformation::Result RangeScanFisherInformation::of(const SimWorld
 
 	const mrpt::poses::CPose2D mount(scan.sensorPose);
 	const mrpt::poses::CPose2D sensor = robot + mount;
-	// The exact ranges, cast as the simulator casts them: beams from
-	// -aperture / 2, left-turning (a right-to-left scan's index order).
+	// The exact ranges, and what each beam hit.
 	const double first = -scan.aperture / 2.0;
 	const double step = scan.aperture / static_cast<double>(n - 1);
-	std::vector<CircleShape> circles;
-	world.circlesAt(t, circles);
-	std::vector<WallSegment> moving;
-	const auto& segments = world.segmentsAt(t, moving);
 	std::vector<double> ranges;
 	std::vector<RayCaster::Hit> hits;
-	RayCaster::cast(sensor.asTPose(), first, step, n, scan.maxRange, segments, circles, ranges,
-		&hits);
+	world.castScan(t, sensor, scan, ranges, &hits);
+	std::vector<WallSegment> scratch;
+	const size_t segmentsNow = world.segmentsAt(t, scratch).size();
 	// Static shapes come first among the segments and among the circles.
 	auto isStatic = [&](size_t shape) {
 		return shape < world.segments().size() ||
-			(shape >= segments.size() && shape - segments.size() < world.circles().size());
+			(shape >= segmentsNow && shape - segmentsNow < world.circles().size());
 	};
 
 	// d s / d theta: the mount's lever arm turned with the robot.

@@ -310,6 +310,40 @@ double SimWorld::clearance(const TPoint2D& p) const
 	return best;
 }
 
+std::vector<double> SimWorld::distancesToSurfaces(
+	const std::vector<TPoint2D>& points, double t) const
+{
+	std::vector<WallSegment> scratch;
+	const auto& segments = segmentsAt(t, scratch);
+	std::vector<CircleShape> circles;
+	circlesAt(t, circles);
+	std::vector<double> out;
+	out.reserve(points.size());
+	for (const auto& p : points)
+	{
+		double best = std::numeric_limits<double>::infinity();
+		for (const auto& s : segments) best = std::min(best, pointSegmentDistance(p, s.a, s.b));
+		for (const auto& c : circles)
+			best = std::min(best, std::abs(std::hypot(p.x - c.centre.x, p.y - c.centre.y) - c.radius));
+		out.push_back(best);
+	}
+	return out;
+}
+
+void SimWorld::castScan(double t, const mrpt::poses::CPose2D& sensor,
+	const mrpt::obs::CObservation2DRangeScan& scan, std::vector<double>& ranges,
+	std::vector<RayCaster::Hit>* hits) const
+{
+	const size_t n = scan.getScanSize();
+	ranges.clear();
+	if (n < 2) return;
+	std::vector<CircleShape> circles;
+	circlesAt(t, circles);
+	std::vector<WallSegment> scratch;
+	RayCaster::cast(sensor.asTPose(), -scan.aperture / 2.0, scan.aperture / static_cast<double>(n - 1),
+		n, scan.maxRange, segmentsAt(t, scratch), circles, ranges, hits);
+}
+
 bool SimWorld::pathIsClear(const TPoint2D& a, const TPoint2D& b, double clearance) const
 {
 	for (const auto& s : m_segments)

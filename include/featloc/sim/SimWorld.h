@@ -4,7 +4,11 @@
 
 #include <vector>
 
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+
 #include "featloc/sim/CircleShape.h"
+#include "featloc/sim/RayCaster.h"
 #include "featloc/sim/SwingingDoor.h"
 #include "featloc/sim/WalkingAgent.h"
 #include "featloc/sim/WallSegment.h"
@@ -50,6 +54,20 @@ class SimWorld
 
 	/** Distance from p to the nearest static wall or obstacle [m]. */
 	double clearance(const mrpt::math::TPoint2D& p) const;
+	/** Distance from each point to the nearest surface at time t [m]:
+	 * walls, obstacles, and people, carts and doors where they are then (a
+	 * circle counts by its outline, inside or out). */
+	std::vector<double> distancesToSurfaces(
+		const std::vector<mrpt::math::TPoint2D>& points, double t) const;
+
+	/** The exact ranges of a 2-D scan's beams from `sensor` at time t, in
+	 * the simulator's beam order (from -aperture / 2, turning left:
+	 * index k is the scan's k if it is right-to-left, else n - 1 - k), and
+	 * with `hits` what each hit (RayCaster::Hit: segmentsAt(t), then
+	 * circlesAt(t)). */
+	void castScan(double t, const mrpt::poses::CPose2D& sensor,
+		const mrpt::obs::CObservation2DRangeScan& scan, std::vector<double>& ranges,
+		std::vector<RayCaster::Hit>* hits = nullptr) const;
 	/** True when the straight path a-b stays at least `clearance` away from
 	 * every static wall and obstacle. */
 	bool pathIsClear(
