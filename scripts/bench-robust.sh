@@ -18,7 +18,8 @@
 #  - On the simulated scenes (--world), each matcher's mean error beside
 #    the pairs' Cramer-Rao bound (issue 15 item 6).
 #  - The whole-run cost: featloc-run on MRPT's 5 cm-noise simulated log with
-#    ICP and coarse_search off / on (ATE against its ground truth).
+#    ICP and coarse_search off / on (ATE against its ground truth), and the
+#    same over the office and lab with four seeds each (ICP and IDC).
 # Usage: scripts/bench-robust.sh [OUTDIR]   (about 30 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
@@ -94,5 +95,32 @@ for est in matcher ekf; do
     echo "| $est | $on | $(fmt "$(jq -r '.evaluation.ate_m.rmse' "$j")") | $(jq -r '.counts.match_failures' "$j") of $(jq -r '.counts.matches' "$j") | $(jq -r '.counts.ambiguous_matches_used' "$j") | $(fmt "$(jq -r '.match_time_s.mean * 1000' "$j")" 2) |"
   done
 done
+echo
+echo "### Whole runs: office and lab, 1 cm noise, four seeds each (matcher chain)"
+echo
+echo "One trajectory is one draw of a random walk: the same comparison over eight."
+echo
+echo "| scene | seed | IcpMatcher off | on | IdcMatcher off | on | match time ICP off / on [ms] |"
+echo "|---|---|---|---|---|---|---|"
+for scene in office lab; do
+  for seed in 1 2 3 4; do
+    "$BIN/featloc-sim" "$ROOT/worlds/$scene.ini" --out "$OUT/$scene-seed$seed" --seed "$seed" -q \
+      --set Laser:range_noise=0.01 > /dev/null
+    row="| $scene | $seed"
+    for m in IcpMatcher IdcMatcher; do
+      for on in false true; do
+        r="$OUT/run-$scene-seed$seed-$m-$on"
+        "$BIN/featloc-run" "$ROOT/config.ini" "$OUT/$scene-seed$seed.rawlog" --out "$r" -q \
+          --set "ScanMatcher:class=featloc::$m" --set "ScanMatcher.$m:coarse_search=$on" \
+          --set "Evaluation:ground_truth=$OUT/$scene-seed$seed.gt.txt" \
+          --set Output:write_scene=false --set Output:write_rawlog=false > /dev/null
+        row="$row | $(fmt "$(jq -r '.evaluation.ate_m.rmse * 1000' "$r/summary.json")" 1)"
+      done
+    done
+    row="$row | $(fmt "$(jq -r '.match_time_s.mean * 1000' "$OUT/run-$scene-seed$seed-IcpMatcher-false/summary.json")" 2) / $(fmt "$(jq -r '.match_time_s.mean * 1000' "$OUT/run-$scene-seed$seed-IcpMatcher-true/summary.json")" 2) |"
+    echo "$row"
+  done
+done
+echo "(ATE rmse in mm)"
 echo
 echo "(raw outputs and basin plots in $OUT)"

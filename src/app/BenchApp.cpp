@@ -251,8 +251,10 @@ void printWorldTables(const std::string& name, const std::vector<ScanPairBenchma
 			std::printf("| %s | %s | (no parts reported) | |\n", name.c_str(), r.matcher.c_str());
 			continue;
 		}
-		std::printf("| %s | %s | %s of %zu | %s of %zu |\n", name.c_str(), r.matcher.c_str(),
-			percent(r.movedKept, r.movedSeen).c_str(), r.movedSeen,
+		const std::string moved = r.movedSeen == 0
+			? "(nothing moved)"
+			: percent(r.movedKept, r.movedSeen) + " of " + std::to_string(r.movedSeen);
+		std::printf("| %s | %s | %s | %s of %zu |\n", name.c_str(), r.matcher.c_str(), moved.c_str(),
 			percent(r.stillKept, r.stillSeen).c_str(), r.stillSeen);
 	}
 }
