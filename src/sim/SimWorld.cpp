@@ -1,6 +1,8 @@
 #include "featloc/sim/SimWorld.h"
 
 #include <mrpt/core/bits_math.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
 
 #include <algorithm>
 #include <cmath>

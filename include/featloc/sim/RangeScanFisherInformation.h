@@ -9,7 +9,7 @@ namespace featloc
 {
 /** The Fisher information that a simulated 2-D range scan carries about the
  * robot pose that took it, against the world's true surfaces (Censi, "On
- * achievable accuracy for range-finder localization", ICRA 2007, eqs. 8-10):
+ * achievable accuracy for range-finder localization", ICRA 2007):
  *
  *   I = sum_i g_i g_i^T / sigma^2,   g_i = d r_i / d (x, y, theta),
  *

@@ -4,19 +4,26 @@
 
 #include <vector>
 
-#include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt/poses/CPose2D.h>
-
 #include "featloc/sim/CircleShape.h"
 #include "featloc/sim/RayCaster.h"
 #include "featloc/sim/SwingingDoor.h"
 #include "featloc/sim/WalkingAgent.h"
 #include "featloc/sim/WallSegment.h"
 
+namespace mrpt::obs
+{
+class CObservation2DRangeScan;
+}
+namespace mrpt::poses
+{
+class CPose2D;
+}
+
 namespace featloc
 {
 /** The simulated world: static walls and obstacles (segments and circles,
- * each with a texture name) and people walking through it.
+ * each with a texture name), and what moves: people walking through it,
+ * carts pushed through it and doors that swing.
  *
  * World file sections (ini, or YAML with the same names, see
  * doc/simulator.md):
