@@ -34,6 +34,7 @@
 #include "support/FreePort.h"
 #include "support/DocumentedKeys.h"
 #include "support/TempDir.h"
+#include "support/TextFile.h"
 
 using namespace featloc;
 using namespace featloc::test;
@@ -83,11 +84,6 @@ Delivered emulatorDelivered(const std::string& emulatorOutput)
 	return {std::stoul(laser[1]) - std::stoul(laser[2]), std::stoul(odo[1])};
 }
 
-std::string readText(const std::string& file)
-{
-	std::ifstream f(file);
-	return std::string(std::istreambuf_iterator<char>(f), {});
-}
 }  // namespace
 
 TEST(OdometryLine, FormatsAndParsesTheDocumentedLines)

@@ -18,6 +18,7 @@
 #include "support/CommandRunner.h"
 #include "support/JsonFile.h"
 #include "support/TempDir.h"
+#include "support/TextFile.h"
 #include "support/TestRawlog.h"
 
 using namespace featloc;
@@ -26,6 +27,7 @@ using featloc::test::readJson;
 using featloc::test::runCommand;
 using featloc::test::shellQuote;
 using featloc::test::TempDir;
+using featloc::test::readText;
 using featloc::test::TestRawlog;
 using mrpt::poses::CPose2D;
 
@@ -132,6 +134,34 @@ TEST(FeatlocRun, SimulatedLogMatcherBeatsOdometryAgainstExactGroundTruth)
 	ASSERT_EQ(ev.exitCode, 0) << ev.output;
 	EXPECT_NEAR(nlohmann::json::parse(ev.output)["ate_m"]["rmse"].get<double>(),
 		ateMatcher, 1e-9);
+}
+
+// config_used.ini is a configuration that runs again from any folder: its
+// relative paths (the shipped config.ini's bundled log and ground truth)
+// are written resolved, comments kept, and the second run gives the same
+// trajectory.
+TEST(FeatlocRun, ConfigUsedRunsAgainFromAnotherFolder)
+{
+	TempDir dir;
+	const CommandResult first = featlocRun(shellQuote(kConfig) + " --out " +
+		shellQuote(dir.file("first")) + " --set Pipeline:estimator=odometry" +
+		" --set Output:write_scene=false --set Output:write_rawlog=false");
+	ASSERT_EQ(first.exitCode, 0) << first.output;
+	const std::string used = readText(dir.file("first/config_used.ini"));
+	const std::string root = std::string(FEATLOC_SOURCE_DIR);
+	EXPECT_NE(used.find("rawlog = " + std::filesystem::path(root + "/rawlogs/mrpt-simul/simul.rawlog")
+									 .lexically_normal()
+									 .string() +
+				"  // bundled default log"),
+		std::string::npos)
+		<< used.substr(0, 800);
+	EXPECT_NE(used.find("ground_truth = /"), std::string::npos);
+
+	const CommandResult again = runCommand("cd " + shellQuote(dir.path().string()) + " && " +
+		shellQuote(kRun) + " " + shellQuote(dir.file("first/config_used.ini")) + " --out " +
+		shellQuote(dir.file("again")) + " -q");
+	ASSERT_EQ(again.exitCode, 0) << again.output;
+	EXPECT_EQ(readText(dir.file("first/trajectory.tum")), readText(dir.file("again/trajectory.tum")));
 }
 
 TEST(FeatlocRun, EstimatedRawlogHoldsInputAndOnePosePerScan)

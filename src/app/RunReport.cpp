@@ -38,9 +38,16 @@ RunReport::Reference RunReport::readGroundTruth(const TrackedConfig& cfg, const 
 
 void RunReport::writeUsedConfig(const TrackedConfig& cfg, const std::string& path)
 {
+	// The run's own path keys, whether or not the run has resolved them yet
+	// (the plugins resolve theirs when they load).
+	for (const auto& [section, key] : {std::make_pair(InputOptions::kSection, "rawlog"),
+			 std::make_pair(OutputOptions::kSection, "dir"),
+			 std::make_pair(EvaluationOptions::kSection, "ground_truth")})
+		cfg.resolvePath(section, key, cfg.read_string(section, key, ""));
 	writeWholeFile(path, [&](const std::string& file) {
 		std::ofstream f(file);
-		f << "# effective configuration of this run (ini + --set)\n" << cfg.content();
+		f << "# effective configuration of this run (ini + --set); relative paths made absolute\n"
+		  << cfg.contentWithResolvedPaths();
 		f.close();
 		if (!f) throw std::runtime_error("cannot write '" + path + "'");
 	});

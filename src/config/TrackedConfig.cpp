@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -255,12 +256,51 @@ std::string TrackedConfig::resolvePath(
 	const std::string& section, const std::string& key,
 	const std::string& value) const
 {
+	m_pathKeys.insert(makeKey(section, key));
 	if (value.empty() || value[0] == '/') return value;
 	const auto it = m_origins.find(makeKey(section, key));
 	const std::string base =
 		it == m_origins.end() ? std::string(".") : it->second.baseDir;
 	if (base == "." || base.empty()) return value;
 	return base + (base.back() == '/' ? "" : "/") + value;
+}
+
+std::string TrackedConfig::contentWithResolvedPaths() const
+{
+	// A line-by-line rewrite of the ini text, so that its layout and
+	// comments stay: "key = value  // comment" of a path key whose value is
+	// relative becomes "key = /absolute/value  // comment".
+	std::istringstream in(content());
+	std::ostringstream out;
+	std::string line, section;
+	while (std::getline(in, line))
+	{
+		const std::string trimmed = mrpt::system::trim(line);
+		if (!trimmed.empty() && trimmed.front() == '[' && trimmed.back() == ']')
+			section = trimmed.substr(1, trimmed.size() - 2);
+		const size_t eq = line.find('=');
+		if (eq != std::string::npos && !trimmed.empty() && trimmed[0] != '#' && trimmed[0] != ';')
+		{
+			const std::string key = mrpt::system::trim(line.substr(0, eq));
+			if (m_pathKeys.count(makeKey(section, key)))
+			{
+				std::string rest = line.substr(eq + 1);
+				const size_t comment = rest.find("//");
+				const std::string value = mrpt::system::trim(rest.substr(0, comment));
+				if (!value.empty() && value[0] != '/')
+				{
+					const std::string absolute =
+						std::filesystem::absolute(resolvePath(section, key, value))
+							.lexically_normal()
+							.string();
+					line = line.substr(0, eq + 1) + " " + absolute +
+						(comment == std::string::npos ? "" : "  " + rest.substr(comment));
+				}
+			}
+		}
+		out << line << "\n";
+	}
+	return out.str();
 }
 
 std::vector<std::pair<std::string, std::string>> TrackedConfig::unreadKeys()

@@ -60,7 +60,8 @@ class TrackedConfig : public mrpt::config::CConfigFileBase
 
 	/** Resolves a path-valued key: absolute paths stay, relative ones are
 	 * taken relative to the folder of the file the value came from (or the
-	 * working directory for --set). Empty stays empty. */
+	 * working directory for --set). Empty stays empty. The key is
+	 * remembered as a path (contentWithResolvedPaths). */
 	std::string resolvePath(
 		const std::string& section, const std::string& key,
 		const std::string& value) const;
@@ -86,6 +87,10 @@ class TrackedConfig : public mrpt::config::CConfigFileBase
 
 	/** The whole configuration as ini text. */
 	std::string content() const { return m_values.getContent(); }
+	/** The same, with every key resolved as a path so far (resolvePath)
+	 * written as an absolute path, its comment kept: a copy that runs from
+	 * any folder (a run's config_used.ini). */
+	std::string contentWithResolvedPaths() const;
 
 	void getAllSections(std::vector<std::string>& sections) const override;
 	void getAllKeys(const std::string& section, std::vector<std::string>& keys)
@@ -118,6 +123,7 @@ class TrackedConfig : public mrpt::config::CConfigFileBase
 	mrpt::config::CConfigFileMemory m_values;
 	std::string m_sourceName;
 	std::map<Key, Origin> m_origins;
+	mutable std::set<Key> m_pathKeys;  //!< keys resolvePath was asked about
 	struct QueriedSection
 	{
 		std::string name;  //!< as spelled by the component
