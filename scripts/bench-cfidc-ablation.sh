@@ -19,7 +19,9 @@
 # "As published" is the paper exactly as far as switches go
 # (doc/cfidc-matcher.md lists what cannot be switched off); it also runs
 # with U_k read as 5 cm and 1 cm instead of 1.0 m.
-# Usage: scripts/bench-cfidc-ablation.sh [OUTDIR]   (about 5 min on 2 cores)
+# Then the curvature_pairing switch alone on the static office and lab and
+# the real Radish logs (if ../shared/data/laser2d or $FEATLOC_LASER2D is there).
+# Usage: scripts/bench-cfidc-ablation.sh [OUTDIR]   (about 2 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-cfidc-ablation "$@"
@@ -57,6 +59,26 @@ for world in room-moving-objects corridor-people hall-people; do
       --world "$ROOT/worlds/$world.ini" --seed 1 -q -m "$M" $P --header --name "$world" \
       -j "$OUT/$world-$protocol.json"
   done
+done
+
+# The same switch on scenes that did not decide it: the static office and
+# lab (1 cm noise) and the real Radish logs, Borges & Aldon's protocol.
+LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
+echo
+echo "### curvature_pairing on the static scenes and the real logs (+-0.3 m / +-10 deg)"
+echo
+for scene in office lab; do
+  "$BIN/featloc-sim" "$ROOT/worlds/$scene.ini" --out "$OUT/$scene-1cm" -q --set Laser:range_noise=0.01 > /dev/null
+done
+HEADER=--header
+for data in "$OUT/office-1cm.rawlog" "$OUT/lab-1cm.rawlog" "$LASER2D"/*-corrected.log.gz; do
+  [ -e "$data" ] || continue
+  GT=()
+  case "$data" in *.rawlog) GT=(-g "${data%.rawlog}.gt.txt") ;; esac
+  "$BIN/featloc-bench" "$ROOT/config.ini" "$data" "${GT[@]}" --perturb-xy 0.3 --perturb-yaw-deg 10 \
+    --seed 1 -q $HEADER -m "CF-IDC featloc=featloc::CfIdcMatcher,CF-IDC featloc - curvature pairing=featloc::CfIdcMatcher{curvature_pairing=false}" \
+    -j "$OUT/curvature-$(basename "$data").json"
+  HEADER=
 done
 echo
 echo "(raw outputs in $OUT)"
