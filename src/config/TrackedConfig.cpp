@@ -59,6 +59,35 @@ std::string closest(const std::string& word, const std::set<std::string>& pool)
 	return best;
 }
 
+/** Walks ini text as MRPT's parser reads it: "[section]", "key = value //
+ * comment", whole-line comments starting with '#' or ';' (a line starting
+ * with "//" and holding an '=' is a key to MRPT's parser). Calls
+ * onKey(section, key, lineNo, line) for every key line (lineNo from 1),
+ * which may rewrite `line`, and returns the text with those rewrites. */
+template <typename OnKey>
+std::string forEachKeyLine(const std::string& text, OnKey&& onKey)
+{
+	std::istringstream in(text);
+	std::ostringstream out;
+	std::string line, section;
+	for (int lineNo = 1; std::getline(in, line); lineNo++)
+	{
+		const std::string t = mrpt::system::trim(line);
+		if (!t.empty() && t[0] == '[')
+		{
+			const auto close = t.find(']');
+			section = t.substr(1, close == std::string::npos ? std::string::npos : close - 1);
+		}
+		else if (!t.empty() && t[0] != '#' && t[0] != ';')
+		{
+			const auto eq = t.find('=');
+			if (eq != std::string::npos) onKey(section, t.substr(0, eq), lineNo, line);
+		}
+		out << line << "\n";
+	}
+	return out.str();
+}
+
 std::string joined(const std::set<std::string>& items)
 {
 	std::string out;
@@ -203,28 +232,11 @@ void TrackedConfig::loadText(
 	m_sourceName = originName;
 	m_origins.clear();
 
-	// Remember the line of every key, for error messages. This mirrors the
-	// MRPT ini syntax: "[section]", "key = value // comment", whole-line
-	// comments starting with '#' or ';' (a line starting with "//" and
-	// holding an '=' is a key to MRPT's parser).
-	std::istringstream in(text);
-	std::string line, section;
-	for (int lineNo = 1; std::getline(in, line); lineNo++)
-	{
-		const std::string t = mrpt::system::trim(line);
-		if (t.empty() || t[0] == '#' || t[0] == ';') continue;
-		if (t[0] == '[')
-		{
-			const auto close = t.find(']');
-			section = t.substr(1, close == std::string::npos ? std::string::npos
-															 : close - 1);
-			continue;
-		}
-		const auto eq = t.find('=');
-		if (eq == std::string::npos) continue;
-		m_origins[makeKey(section, t.substr(0, eq))] = {
-			originName + ":" + std::to_string(lineNo), baseDir};
-	}
+	// Remember the line of every key, for error messages.
+	forEachKeyLine(text, [&](const std::string& section, const std::string& key, int lineNo,
+							 std::string&) {
+		m_origins[makeKey(section, key)] = {originName + ":" + std::to_string(lineNo), baseDir};
+	});
 }
 
 void TrackedConfig::applyOverride(const std::string& spec)
@@ -270,37 +282,18 @@ std::string TrackedConfig::contentWithResolvedPaths() const
 	// A line-by-line rewrite of the ini text, so that its layout and
 	// comments stay: "key = value  // comment" of a path key whose value is
 	// relative becomes "key = /absolute/value  // comment".
-	std::istringstream in(content());
-	std::ostringstream out;
-	std::string line, section;
-	while (std::getline(in, line))
-	{
-		const std::string trimmed = mrpt::system::trim(line);
-		if (!trimmed.empty() && trimmed.front() == '[' && trimmed.back() == ']')
-			section = trimmed.substr(1, trimmed.size() - 2);
+	return forEachKeyLine(content(), [&](const std::string& section, const std::string& key, int,
+										 std::string& line) {
+		if (!m_pathKeys.count(makeKey(section, key))) return;
 		const size_t eq = line.find('=');
-		if (eq != std::string::npos && !trimmed.empty() && trimmed[0] != '#' && trimmed[0] != ';')
-		{
-			const std::string key = mrpt::system::trim(line.substr(0, eq));
-			if (m_pathKeys.count(makeKey(section, key)))
-			{
-				std::string rest = line.substr(eq + 1);
-				const size_t comment = rest.find("//");
-				const std::string value = mrpt::system::trim(rest.substr(0, comment));
-				if (!value.empty() && value[0] != '/')
-				{
-					const std::string absolute =
-						std::filesystem::absolute(resolvePath(section, key, value))
-							.lexically_normal()
-							.string();
-					line = line.substr(0, eq + 1) + " " + absolute +
-						(comment == std::string::npos ? "" : "  " + rest.substr(comment));
-				}
-			}
-		}
-		out << line << "\n";
-	}
-	return out.str();
+		const std::string rest = line.substr(eq + 1);
+		const size_t comment = rest.find("//");
+		const std::string value = mrpt::system::trim(rest.substr(0, comment));
+		if (value.empty() || value[0] == '/') return;
+		line = line.substr(0, eq + 1) + " " +
+			std::filesystem::absolute(resolvePath(section, key, value)).lexically_normal().string() +
+			(comment == std::string::npos ? "" : "  " + rest.substr(comment));
+	});
 }
 
 std::vector<std::pair<std::string, std::string>> TrackedConfig::unreadKeys()
