@@ -30,12 +30,10 @@ RangeScanFisherInformation::Result RangeScanFisherInformation::of(const SimWorld
 	std::vector<double> ranges;
 	std::vector<RayCaster::Hit> hits;
 	world.castScan(t, sensor, scan, ranges, &hits);
-	std::vector<WallSegment> scratch;
-	const size_t segmentsNow = world.segmentsAt(t, scratch).size();
-	// Static shapes come first among the segments and among the circles.
-	auto isStatic = [&](size_t shape) {
-		return shape < world.segments().size() ||
-			(shape >= segmentsNow && shape - segmentsNow < world.circles().size());
+	// Static shapes come first among the segments and among the circles
+	// (SimWorld::segmentsAt, circlesAt).
+	auto isStatic = [&](const RayCaster::Hit& h) {
+		return h.index < (h.circle ? world.circles().size() : world.segments().size());
 	};
 
 	// d s / d theta: the mount's lever arm turned with the robot.
@@ -47,7 +45,7 @@ RangeScanFisherInformation::Result RangeScanFisherInformation::of(const SimWorld
 		if (!scan.getScanRangeValidity(i)) continue;
 		res.beamsValid++;
 		if (!(std::abs(scan.getScanRange(i) - ranges[k]) <= 5 * sigma)) res.beamsOff++;
-		if (!std::isfinite(ranges[k]) || !isStatic(hits[k].shape)) continue;
+		if (!std::isfinite(ranges[k]) || !isStatic(hits[k])) continue;
 		const double a = sensor.phi() + first + step * static_cast<double>(k);
 		const double vx = std::cos(a), vy = std::sin(a);
 		const double nx = std::cos(hits[k].normal), ny = std::sin(hits[k].normal);

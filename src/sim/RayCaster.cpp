@@ -80,7 +80,7 @@ void RayCaster::cast(
 			if (t > 0 && u >= 0 && u <= 1 && t < ranges[i])
 			{
 				ranges[i] = t;
-				if (hits) (*hits)[i] = {k, std::atan2(ex, -ey)};
+				if (hits) (*hits)[i] = {false, k, std::atan2(ex, -ey)};
 			}
 		});
 	}
@@ -104,8 +104,7 @@ void RayCaster::cast(
 				ranges[i] = t;
 				// The normal at the hit: from the centre through it.
 				if (hits)
-					(*hits)[i] = {segments.size() + k,
-						std::atan2(t * dy[i] - cy, t * dx[i] - cx)};
+					(*hits)[i] = {true, k, std::atan2(t * dy[i] - cy, t * dx[i] - cx)};
 			}
 		});
 	}

@@ -26,8 +26,8 @@ class RayCaster
 	/** What a beam hit (when its range is finite). */
 	struct Hit
 	{
-		/** segments[shape], or circles[shape - segments.size()]. */
-		size_t shape = 0;
+		bool circle = false;  //!< circles[index], else segments[index]
+		size_t index = 0;
 		double normal = 0;	//!< [rad] world angle of the surface's normal there
 	};
 

@@ -70,8 +70,8 @@ class SimWorld
 	/** The exact ranges of a 2-D scan's beams from `sensor` at time t, in
 	 * the simulator's beam order (from -aperture / 2, turning left:
 	 * index k is the scan's k if it is right-to-left, else n - 1 - k), and
-	 * with `hits` what each hit (RayCaster::Hit: segmentsAt(t), then
-	 * circlesAt(t)). */
+	 * with `hits` what each hit (RayCaster::Hit: an index into
+	 * segmentsAt(t) or circlesAt(t), whose static shapes come first). */
 	void castScan(double t, const mrpt::poses::CPose2D& sensor,
 		const mrpt::obs::CObservation2DRangeScan& scan, std::vector<double>& ranges,
 		std::vector<RayCaster::Hit>* hits = nullptr) const;
