@@ -358,8 +358,8 @@ void IterativeDualCorrespondence::run(
 		{
 			// Lu & Milios: rotation of the range rule, translation of the
 			// closest-point rule's own solution.
-			const double w2 = rigidMotion(m_mrp.size() >= 2 ? m_mrp : m_cp).phi;
 			const mrpt::math::TPose2D closest = rigidMotion(m_cp);
+			const double w2 = m_mrp.size() >= 2 ? rigidMotion(m_mrp).phi : closest.phi;
 			const Eigen::Vector2d T1(closest.x, closest.y);
 			const double c2 = std::cos(w2), s2 = std::sin(w2);
 			x = mrpt::math::TPose2D(c2 * x.x - s2 * x.y + T1.x(), s2 * x.x + c2 * x.y + T1.y(),
