@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "featloc/config/ConfigValues.h"
 #include "featloc/features/LineFit.h"
@@ -195,7 +196,31 @@ void LineEllipseExtractor::refine(const ScanPoints& s)
 	}
 }
 
+bool LineEllipseExtractor::Parameters::operator==(const Parameters& o) const
+{
+	auto fields = [](const Parameters& p) {
+		return std::tie(p.max_point_gap, p.split_distance_min, p.split_sigmas, p.trim_sigmas,
+			p.merge_sigmas, p.max_line_sigma, p.min_points, p.min_length, p.ellipse_max_length,
+			p.refine_iterations, p.min_point_sigma, p.ellipse_shape_sigma_ratio);
+	};
+	return fields(*this) == fields(o);
+}
+
 void LineEllipseExtractor::extract(const ScanPoints& s, std::vector<ScanFeature>& out)
+{
+	if (m_memo.valid && m_memo.params == params && m_memo.scan.samePointsAs(s))
+	{
+		out = m_memo.features;
+		return;
+	}
+	extractAnew(s, out);
+	m_memo.valid = true;
+	m_memo.params = params;
+	m_memo.scan = s;
+	m_memo.features = out;
+}
+
+void LineEllipseExtractor::extractAnew(const ScanPoints& s, std::vector<ScanFeature>& out)
 {
 	out.clear();
 	m_runs.clear();

@@ -35,6 +35,18 @@ ScanPoints ScanPoints::fromScan(const mrpt::obs::CObservation2DRangeScan& scan)
 	return out;
 }
 
+bool ScanPoints::samePointsAs(const ScanPoints& o) const
+{
+	if (points.size() != o.points.size() || angularStep != o.angularStep ||
+		maxRange != o.maxRange)
+		return false;
+	return std::equal(points.begin(), points.end(), o.points.begin(),
+		[](const ScanPoint& a, const ScanPoint& b) {
+			return a.x == b.x && a.y == b.y && a.range == b.range && a.bearing == b.bearing &&
+				a.beam == b.beam;
+		});
+}
+
 ScanPoints ScanPoints::fromPointsMap(const mrpt::maps::CPointsMap& map)
 {
 	ScanPoints out;

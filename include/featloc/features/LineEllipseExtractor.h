@@ -79,11 +79,17 @@ class LineEllipseExtractor
 		void saveToConfigFile(
 			mrpt::config::CConfigFileBase& c,
 			const std::string& s) const override;
+		/** Every field equal (a new field must be added here). */
+		bool operator==(const Parameters& o) const;
 	};
 
 	Parameters params;
 
-	/** Replaces `out` with the features of `scan` (reusing its storage). */
+	/** Replaces `out` with the features of `scan` (reusing its storage).
+	 * The last call's scan and features are kept: a matcher of consecutive
+	 * scans extracts each scan once, as the current scan, and gets the same
+	 * features back when that scan is the next pair's reference (same
+	 * points, bit for bit, and same parameters). */
 	void extract(const ScanPoints& scan, std::vector<ScanFeature>& out);
 
    private:
@@ -92,6 +98,17 @@ class LineEllipseExtractor
 	void mergeRuns(const ScanPoints& s);
 	void setCovariances(const ScanPoints& s, std::vector<ScanFeature>& features) const;
 	void refine(const ScanPoints& s);
+
+	void extractAnew(const ScanPoints& scan, std::vector<ScanFeature>& out);
+
+	/** The last extraction (extract()'s memo). */
+	struct Memo
+	{
+		bool valid = false;
+		Parameters params;
+		ScanPoints scan;
+		std::vector<ScanFeature> features;
+	} m_memo;
 
 	std::vector<Run> m_runs;  // reused buffers: no allocation per call
 	std::vector<double> m_runNoise;	 //!< per run: its cluster's noise

@@ -42,6 +42,10 @@ struct ScanPoints
 	bool empty() const { return points.empty(); }
 	const ScanPoint& operator[](size_t i) const { return points[i]; }
 
+	/** The same points (coordinates, ranges, bearings and beam indices
+	 * bit for bit) and the same sensor figures. */
+	bool samePointsAs(const ScanPoints& o) const;
+
 	/** Valid readings of a scan, in its sensor frame (sensorPose is NOT
 	 * applied). A scan of fewer than two beams gives no points. */
 	static ScanPoints fromScan(const mrpt::obs::CObservation2DRangeScan& scan);
