@@ -265,6 +265,8 @@ nlohmann::json toJson(const ScanPairBenchmark::Result& r)
 		{"failures_by_kind", r.failuresByKind}, {"ambiguous_used", r.ambiguousUsed},
 		{"flagged", r.flagged()}, {"silent_gross_errors", r.silentGross},
 		{"matcher_fallbacks", r.matcherFallbacks},
+		{"fallback_matcher_matches", r.fallbackMatches},
+		{"fallback_matcher_successes", r.fallbackSuccesses},
 		{"success_rate", r.successRate()}, {"mae_x_m", r.maeX}, {"mae_y_m", r.maeY},
 		{"mae_yaw_deg", mrpt::RAD2DEG(r.maeYaw)}, {"mean_trans_err_m", r.meanTrans},
 		{"median_trans_err_m", r.medianTrans}, {"p95_trans_err_m", r.p95Trans},
@@ -477,6 +479,12 @@ int BenchApp::main(int argc, char** argv)
 		printRow(name, r);
 		j["results"].push_back(toJson(r));
 	}
+	for (size_t m = 0; m < results.size(); m++)
+		if (results[m].fallbackMatches > 0)
+			std::printf("\n%s: the fallback %s made %zu of %zu pairs after the matcher failed "
+						"(%zu of them succeeded; counted above as its results)\n",
+				results[m].matcher.c_str(), matchers[m]->fallback()->className().c_str(),
+				results[m].fallbackMatches, results[m].pairs, results[m].fallbackSuccesses);
 	if (argWorld.isSet()) printWorldTables(name, results);
 	if (argBasin.isSet())
 	{

@@ -74,15 +74,26 @@ ScanMatcher::Ptr MatcherVariant::create(TrackedConfig& cfg) const
 		return m;
 	}
 	// The section as the ini has it, the overrides on top, in a config of its
-	// own: a key the class does not read is reported as for --set.
+	// own: a key the class does not read is reported as for --set. The other
+	// matchers' sections come along for a fallback_class to read.
 	TrackedConfig own;
-	std::string text = "[" + section + "]\n";
-	std::vector<std::string> keys;
-	cfg.getAllKeys(section, keys);
-	for (const auto& k : keys) text += k + " = " + cfg.read_string(section, k, "") + "\n";
+	std::string text;
+	std::vector<std::string> sections;
+	cfg.getAllSections(sections);
+	for (const auto& sec : sections)
+	{
+		if (sec.rfind(std::string(ScanMatcherFactory::kSection) + ".", 0) != 0) continue;
+		text += "[" + sec + "]\n";
+		std::vector<std::string> keys;
+		cfg.getAllKeys(sec, keys);
+		for (const auto& k : keys) text += k + " = " + cfg.read_string(sec, k, "") + "\n";
+	}
+	if (text.find("[" + section + "]\n") == std::string::npos) text += "[" + section + "]\n";
 	own.loadText(text, cfg.sourceName());
 	for (const auto& [k, value] : overrides) own.applyOverride(section + ":" + k + "=" + value);
 	m->loadParams(own, section);
+	for (const auto& sec : sections)
+		if (sec != section) own.acceptSection(sec);
 	own.requireAllKeysRead();
 	return m;
 }

@@ -104,6 +104,11 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			a.time.push_back(r.timeSeconds);
 			a.iterations += r.iterations;
 			if (!r.matcherFallback.empty()) res[m].matcherFallbacks++;
+			if (!r.primaryFailure.empty())
+			{
+				res[m].fallbackMatches++;
+				if (r.success) res[m].fallbackSuccesses++;
+			}
 			// Every pair counts: a failed match with the guess, which is what
 			// the pipeline then uses.
 			const auto& e = r.success ? r.estimate.mean : guess.mean;

@@ -154,6 +154,9 @@ std::string MatchPanel::runMatcher(const std::string& className, const std::stri
 		<< "covariance: " << describeSigmas(r.estimate.cov) << "\n";
 	if (!r.success) out << "reason: " << r.failureReason << "\n";
 	if (!r.guessGateOverruled.empty()) out << "guess gate: " << r.guessGateOverruled << "\n";
+	if (r.success && !r.primaryFailure.empty())
+		out << "made by the fallback " << matcher->fallback()->className()
+			<< " (fallback_class) after " << r.primaryFailure << "\n";
 	return out.str() + usedText;
 }
 

@@ -380,12 +380,12 @@ void CfIdcMatcher::matchPoints(
 		? 0.0
 		: static_cast<double>(r.pairs) / static_cast<double>(current.size());
 }
-MatchInspection CfIdcMatcher::inspectLastMatch(const ScanPoints& reference,
+MatchInspection CfIdcMatcher::inspectOwnMatch(const ScanPoints& reference,
 	const ScanPoints& current, const mrpt::poses::CPose2D& sensorEstimate) const
 {
 	// IDC's pairs as the base class finds them, plus every segment of both
 	// scans with the curvature-function decision of section 3.
-	MatchInspection out = ScanMatcher::inspectLastMatch(reference, current, sensorEstimate);
+	MatchInspection out = ScanMatcher::inspectOwnMatch(reference, current, sensorEstimate);
 	auto addParts = [&](const std::vector<SegmentReport>& report, const ScanPoints& scan,
 						bool isCurrent) {
 		for (const auto& r : report)

@@ -424,7 +424,7 @@ void PcmFeatureMatcher::matchPoints(
 		}
 	result.success = true;
 }
-MatchInspection PcmFeatureMatcher::inspectLastMatch(const ScanPoints& reference,
+MatchInspection PcmFeatureMatcher::inspectOwnMatch(const ScanPoints& reference,
 	const ScanPoints& current, const mrpt::poses::CPose2D&) const
 {
 	// The features of both scans and the pairs of the last PCM iteration,

@@ -3,13 +3,17 @@
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
+#include <mrpt/system/string_utils.h>
 
 #include <Eigen/Dense>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
+#include "featloc/config/ConfigValues.h"
+#include "featloc/core/ConfigError.h"
 #include "featloc/math/PoseDifference.h"
+#include "featloc/matchers/ScanMatcherFactory.h"
 
 namespace featloc
 {
@@ -28,14 +32,58 @@ mrpt::poses::CPose2D planar(const mrpt::poses::CPose3D& p)
 
 void ScanMatcher::loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
 {
+	loadParams(cfg, section, true);
+}
+
+void ScanMatcher::loadParams(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section, bool followFallback)
+{
 	m_coarse.options.loadFromConfigFile(cfg, section);
+	config::read(cfg, section, "fallback_class", m_fallbackClass);
+	m_fallbackClass = mrpt::system::trim(m_fallbackClass);
+	m_fallback.reset();
+	if (followFallback && !m_fallbackClass.empty())
+	{
+		try
+		{
+			m_fallback = ScanMatcherFactory::create(m_fallbackClass);
+		}
+		catch (const ConfigError& e)
+		{
+			config::fail(cfg, section, "fallback_class", e.what());
+		}
+		if (m_fallback->className() == className())
+			config::fail(cfg, section, "fallback_class",
+				"names the matcher itself (" + className() +
+					"); a fallback must be another class");
+		m_fallback->loadParams(
+			cfg, ScanMatcherFactory::paramsSection(m_fallback->className()), false);
+	}
 	loadOwnParams(cfg, section);
 }
 
 void ScanMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const
 {
 	m_coarse.options.saveToConfigFile(cfg, section);
+	config::write(cfg, section, "fallback_class", m_fallbackClass,
+		"matcher that takes over when this one fails, with its own section's parameters "
+		"(empty: none; a fallback's own fallback_class is not followed)");
 	saveOwnParams(cfg, section);
+}
+
+template <typename Run>
+MatchResult ScanMatcher::tryFallback(MatchResult r, Run&& run)
+{
+	m_lastMatchByFallback = false;
+	if (r.success || !m_fallback || r.failureKind == "too_few_points") return r;
+	MatchResult f = run(*m_fallback);
+	f.primaryFailure = className() + ": " + r.failureReason;
+	if (!f.success)
+		f.failureReason = "the fallback " + m_fallback->className() + " failed too: " +
+			f.failureReason + " (after " + f.primaryFailure + ")";
+	f.timeSeconds += r.timeSeconds;
+	m_lastMatchByFallback = true;
+	return f;
 }
 
 std::string ScanMatcher::className() const
@@ -85,7 +133,9 @@ MatchResult ScanMatcher::match(
 	r.timeSeconds =
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
 			.count();
-	return r;
+	return tryFallback(std::move(r), [&](ScanMatcher& f) {
+		return f.match(reference, current, initialGuess, gateAllowance);
+	});
 }
 
 void ScanMatcher::arbitrateGuessGate(const ScanPoints& reference, const ScanPoints& current,
@@ -136,7 +186,8 @@ MatchResult ScanMatcher::match(
 	r.timeSeconds =
 		std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
 			.count();
-	return r;
+	return tryFallback(std::move(r),
+		[&](ScanMatcher& f) { return f.match(reference, current, initialGuess); });
 }
 
 void ScanMatcher::checkAgainstGuess(
@@ -233,6 +284,14 @@ void ScanMatcher::matchFromCoarseSearch(const ScanPoints& reference, const ScanP
 }
 
 MatchInspection ScanMatcher::inspectLastMatch(const ScanPoints& reference,
+	const ScanPoints& current, const mrpt::poses::CPose2D& sensorEstimate) const
+{
+	return m_lastMatchByFallback
+		? m_fallback->inspectLastMatch(reference, current, sensorEstimate)
+		: inspectOwnMatch(reference, current, sensorEstimate);
+}
+
+MatchInspection ScanMatcher::inspectOwnMatch(const ScanPoints& reference,
 	const ScanPoints& current, const mrpt::poses::CPose2D& sensorEstimate) const
 {
 	MatchInspection out;

@@ -27,6 +27,11 @@ void MatchTableWriter::onStep(const StepRecord& r)
 	std::string reason = m.success ? r.fallbackReason : m.failureReason;
 	if (overruled)
 		reason = m.guessGateOverruled + (reason.empty() ? "" : "; not used: " + reason);
+	// A success of the fallback matcher says so, and why the configured
+	// matcher gave up (a failure's reason already names both).
+	if (m.success && !m.primaryFailure.empty())
+		reason = "made by the fallback matcher after " + m.primaryFailure +
+			(reason.empty() ? "" : "; not used: " + reason);
 	const auto& g = m.guess.mean;
 	const auto& e = m.estimate.mean;
 	std::string row(4096, '\0');

@@ -41,6 +41,8 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"ambiguous_matches_used", s.ambiguousMatches},
 		{"guess_gate_overruled", s.guessGateOverruled},
 		{"matcher_fallbacks", s.matcherFallbacks},
+		{"fallback_matcher_matches", s.fallbackMatcherMatches},
+		{"fallback_matcher_successes", s.fallbackMatcherSuccesses},
 		{"fallbacks_to_odometry", s.fallbacks},
 		{"ignored_observations", s.ignoredObservations}};
 	if (s.stereoFrames)

@@ -261,6 +261,11 @@ void Pipeline::processStep(
 			if (match.ambiguous) stats.ambiguousMatches++;
 			if (!match.guessGateOverruled.empty()) stats.guessGateOverruled++;
 			if (!match.matcherFallback.empty()) stats.matcherFallbacks++;
+			if (!match.primaryFailure.empty())
+			{
+				stats.fallbackMatcherMatches++;
+				if (match.success) stats.fallbackMatcherSuccesses++;
+			}
 			if (!match.success)
 			{
 				stats.matchFailures++;

@@ -79,6 +79,9 @@ class ScanPairBenchmark
 		 * covariance (MatchResult::ambiguous): flagged, never silent. */
 		size_t ambiguousUsed = 0;
 		size_t matcherFallbacks = 0;  //!< the matcher took its own fallback (MatchResult)
+		/** Pairs the fallback matcher made after the matcher failed
+		 * (MatchResult::primaryFailure), and of those the successes. */
+		size_t fallbackMatches = 0, fallbackSuccesses = 0;
 		size_t silentGross = 0;	 //!< other successes off by > grossTrans or > grossYaw
 		/** Over every pair (failures at the guess's error). */
 		double maeX = 0, maeY = 0, maeYaw = 0;	//!< [m], [m], [rad]

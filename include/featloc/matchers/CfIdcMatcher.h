@@ -104,13 +104,12 @@ class CfIdcMatcher : public ScanMatcher
 
 	Parameters params;
 
-
 	const std::vector<SegmentReport>& lastCurrentSegments() const { return m_currentReport; }
 	const std::vector<SegmentReport>& lastReferenceSegments() const { return m_referenceReport; }
-	MatchInspection inspectLastMatch(const ScanPoints& reference, const ScanPoints& current,
-		const mrpt::poses::CPose2D& sensorEstimate) const override;
 
    protected:
+	MatchInspection inspectOwnMatch(const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPose2D& sensorEstimate) const override;
 	void loadOwnParams(
 		const mrpt::config::CConfigFileBase& cfg,
 		const std::string& section) override;

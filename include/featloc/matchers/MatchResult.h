@@ -46,6 +46,11 @@ struct MatchResult
 	 * started from every segment). Counted by summary.json and
 	 * featloc-bench. */
 	std::string matcherFallback;
+	/** Non-empty when the configured matcher failed and its fallback
+	 * (`fallback_class`) made this result: "<class>: <why it failed>".
+	 * Everything else in the result is the fallback's. Counted by
+	 * summary.json and featloc-bench. */
+	std::string primaryFailure;
 	/** The share of points on the reference at the coarse search's best
 	 * pose (CorrelativeScanSearch; 0 when it did not run). */
 	double coarseScore = 0;

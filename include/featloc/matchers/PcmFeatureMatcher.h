@@ -99,14 +99,13 @@ class PcmFeatureMatcher : public ScanMatcher
 
 	Parameters params;
 
-
 	/** Features of the last match (sensor frames), for inspection. */
 	const std::vector<ScanFeature>& lastReferenceFeatures() const { return m_reference; }
 	const std::vector<ScanFeature>& lastCurrentFeatures() const { return m_current; }
-	MatchInspection inspectLastMatch(const ScanPoints& reference, const ScanPoints& current,
-		const mrpt::poses::CPose2D& sensorEstimate) const override;
 
    protected:
+	MatchInspection inspectOwnMatch(const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPose2D& sensorEstimate) const override;
 	void loadOwnParams(
 		const mrpt::config::CConfigFileBase& cfg,
 		const std::string& section) override;

@@ -4,6 +4,7 @@
 #include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/rtti/CObject.h>
 
+#include <memory>
 #include <string>
 
 #include "featloc/matchers/CorrelativeScanSearch.h"
@@ -48,6 +49,10 @@ class ScanMatcher : public mrpt::rtti::CObject
 	/** Writes every parameter, with its unit and meaning as a comment. */
 	void saveParams(mrpt::config::CConfigFileBase& cfg, const std::string& section) const;
 
+	/** The matcher that takes over when this one fails (`fallback_class`;
+	 * null when none). */
+	const std::shared_ptr<ScanMatcher>& fallback() const { return m_fallback; }
+
 	/** The wide-basin stage's parameters (`coarse_*` keys). */
 	CorrelativeScanSearch::Options& coarseSearchOptions() { return m_coarse.options; }
 
@@ -72,12 +77,9 @@ class ScanMatcher : public mrpt::rtti::CObject
 
 	/** What the last match() used, for the viewer (MatchInspection), given
 	 * that match's scans as points in their sensor frames and its estimate
-	 * in the sensor frames (S1^-1 (+) X (+) S2). The default pairs each
-	 * current point with its nearest reference point at the estimate
-	 * (within kInspectionPairDistance); matchers that keep their own
-	 * pairs, features or segments report those. */
-	virtual MatchInspection inspectLastMatch(
-		const ScanPoints& reference, const ScanPoints& current,
+	 * in the sensor frames (S1^-1 (+) X (+) S2): the fallback's, when the
+	 * fallback made that match (inspectOwnMatch). */
+	MatchInspection inspectLastMatch(const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPose2D& sensorEstimate) const;
 	static constexpr double kInspectionPairDistance = 0.3;	//!< [m]
 
@@ -85,6 +87,13 @@ class ScanMatcher : public mrpt::rtti::CObject
 	std::string className() const;
 
    protected:
+	/** inspectLastMatch() of a match this matcher made. The default pairs
+	 * each current point with its nearest reference point at the estimate
+	 * (within kInspectionPairDistance); matchers that keep their own
+	 * pairs, features or segments report those. */
+	virtual MatchInspection inspectOwnMatch(const ScanPoints& reference,
+		const ScanPoints& current, const mrpt::poses::CPose2D& sensorEstimate) const;
+
 	/** The matcher's own parameters (the paper's and featloc's additions). */
 	virtual void loadOwnParams(
 		const mrpt::config::CConfigFileBase& cfg, const std::string& section) = 0;
@@ -107,6 +116,18 @@ class ScanMatcher : public mrpt::rtti::CObject
 		MatchResult& result) = 0;
 
    private:
+	/** loadParams(); `followFallback` false for a fallback itself, whose
+	 * own fallback_class is read but not followed (one level: no cycle). */
+	void loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+		bool followFallback);
+
+	/** A failed match `r` handed to the fallback (`run` makes the
+	 * fallback's match from the same input): its result, which says whose
+	 * it is (MatchResult::primaryFailure), or `r` when no fallback applies.
+	 * A failure for too few points stays: no matcher can do better. */
+	template <typename Run>
+	MatchResult tryFallback(MatchResult r, Run&& run);
+
 	/** Point checks, the coarse search over `window`'s 3 sigma (the guess
 	 * with the gate allowance) and matchPoints(); no timing, no guess
 	 * check. */
@@ -132,6 +153,9 @@ class ScanMatcher : public mrpt::rtti::CObject
 	void arbitrateGuessGate(const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPose2D& guess, const mrpt::poses::CPose2D& estimate, MatchResult& r);
 	CorrelativeScanSearch m_coarse;
+	std::string m_fallbackClass;  //!< `fallback_class` as written ("" none)
+	std::shared_ptr<ScanMatcher> m_fallback;
+	bool m_lastMatchByFallback = false;	 //!< for inspectLastMatch()
 	void checkAgainstGuess(const mrpt::poses::CPosePDFGaussian& guess, MatchResult& r) const;
 };
 

@@ -56,6 +56,10 @@ struct RunStats
 	/** Matches where the matcher took its own fallback
 	 * (MatchResult::matcherFallback). */
 	size_t matcherFallbacks = 0;
+	/** Matches the fallback matcher made after the configured one failed
+	 * (MatchResult::primaryFailure), and how many of those succeeded. */
+	size_t fallbackMatcherMatches = 0;
+	size_t fallbackMatcherSuccesses = 0;
 	size_t fallbacks = 0;  //!< steps where the estimator used odometry
 	/** A few failure examples: "scan 123: reason". */
 	std::vector<std::string> failureExamples;

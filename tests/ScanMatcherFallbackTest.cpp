@@ -1,0 +1,166 @@
+// A matcher's fallback (`fallback_class`): the other matcher that makes the
+// match when the configured one fails.
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <string>
+
+#include "featloc/core/ConfigError.h"
+#include "featloc/math/DiagonalPoseGaussian.h"
+#include "featloc/matchers/ScanMatcherFactory.h"
+#include "featloc/registerClasses.h"
+#include "featloc/scan/ScanPoints.h"
+#include "support/MatcherTestHelpers.h"
+#include "support/SyntheticRoom.h"
+
+using namespace featloc;
+using featloc::test::SyntheticRoom;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+/** A corridor (walls y = +-1) with door jambs: 8 cm stubs, too short for a
+ * PCM line or cluster, which fix the position along it for point matchers
+ * only. */
+SyntheticRoom corridorWithJambs()
+{
+	SyntheticRoom r = SyntheticRoom::corridor();
+	for (double x : {-3.0, 1.5, 4.0})
+	{
+		r.add(x, 1, x, 0.92);
+		r.add(x, -1, x, -0.92);
+	}
+	return r;
+}
+
+ScanMatcher::Ptr fromIni(const std::string& cls, const std::string& ini)
+{
+	registerClasses();
+	mrpt::config::CConfigFileMemory cfg;
+	cfg.setContent(ini);
+	auto m = ScanMatcherFactory::create(cls);
+	m->loadParams(cfg, ScanMatcherFactory::paramsSection(cls));
+	return m;
+}
+
+std::string configErrorOf(const std::string& cls, const std::string& ini)
+{
+	try
+	{
+		fromIni(cls, ini);
+	}
+	catch (const ConfigError& e)
+	{
+		return e.what();
+	}
+	return "(no error)";
+}
+}  // namespace
+
+TEST(ScanMatcherFallback, ThePointMatcherTakesOverWherePcmHasOnlyParallelLines)
+{
+	const SyntheticRoom corridor = corridorWithJambs();
+	const auto ref = corridor.scan(CPose2D(0, 0, 0));
+	const CPose2D truth(0.3, 0.05, 0.02);
+	const auto cur = corridor.scan(truth);
+	const auto guess = diagonalPoseGaussian(CPose2D(0.25, 0.02, 0.01), 0.05, 0.02);
+
+	auto alone = fromIni("featloc::PcmFeatureMatcher", "");
+	const MatchResult failed = alone->match(*ref, *cur, guess);
+	ASSERT_FALSE(failed.success);
+	EXPECT_TRUE(failed.primaryFailure.empty());
+
+	auto withFallback = fromIni("featloc::PcmFeatureMatcher",
+		"[ScanMatcher.PcmFeatureMatcher]\nfallback_class = IdcMatcher\n");
+	ASSERT_TRUE(withFallback->fallback());
+	EXPECT_EQ(withFallback->fallback()->className(), "featloc::IdcMatcher");
+	const MatchResult r = withFallback->match(*ref, *cur, guess);
+	ASSERT_TRUE(r.success) << r.failureReason;
+	EXPECT_NEAR(r.estimate.mean.x(), truth.x(), 0.005);
+	EXPECT_NEAR(r.estimate.mean.y(), truth.y(), 0.005);
+	EXPECT_NEAR(r.estimate.mean.phi(), truth.phi(), 0.002);
+	// Whose result it is, and why the configured matcher gave it up.
+	EXPECT_NE(r.primaryFailure.find("featloc::PcmFeatureMatcher: "), std::string::npos)
+		<< r.primaryFailure;
+	EXPECT_NE(r.primaryFailure.find(failed.failureReason), std::string::npos) << r.primaryFailure;
+
+	// The inspection is the fallback's (nearest-neighbour pairs), not PCM's
+	// features, and PCM's again after a match PCM made itself.
+	const ScanPoints rp = ScanPoints::fromScan(*ref), cp = ScanPoints::fromScan(*cur);
+	const MatchInspection byFallback = withFallback->inspectLastMatch(rp, cp, r.estimate.mean);
+	EXPECT_TRUE(byFallback.parts.empty());
+	EXPECT_FALSE(byFallback.pairs.empty());
+	const SyntheticRoom office = SyntheticRoom::office();
+	const auto a = office.scan(CPose2D(0, 0, 0)), b = office.scan(CPose2D(0.1, 0, 0.01));
+	const MatchResult own = withFallback->match(
+		*a, *b, diagonalPoseGaussian(CPose2D(0.1, 0, 0.01), 0.05, 0.02));
+	ASSERT_TRUE(own.success) << own.failureReason;
+	EXPECT_TRUE(own.primaryFailure.empty());
+	EXPECT_FALSE(withFallback
+					 ->inspectLastMatch(ScanPoints::fromScan(*a), ScanPoints::fromScan(*b),
+						 own.estimate.mean)
+					 .parts.empty());
+}
+
+TEST(ScanMatcherFallback, WhenBothFailTheReasonNamesBoth)
+{
+	// Two bare walls: nothing fixes the position along them, for any matcher.
+	const SyntheticRoom corridor = SyntheticRoom::corridor();
+	const auto ref = corridor.scan(CPose2D(0, 0, 0));
+	const auto cur = corridor.scan(CPose2D(0.3, 0.05, 0.02));
+	auto m = fromIni("featloc::PcmFeatureMatcher",
+		"[ScanMatcher.PcmFeatureMatcher]\nfallback_class = featloc::IdcMatcher\n");
+	const MatchResult r =
+		m->match(*ref, *cur, diagonalPoseGaussian(CPose2D(0.25, 0, 0), 0.1, 0.05));
+	ASSERT_FALSE(r.success);
+	EXPECT_NE(r.failureReason.find("the fallback featloc::IdcMatcher failed too"),
+		std::string::npos)
+		<< r.failureReason;
+	EXPECT_NE(r.failureReason.find("featloc::PcmFeatureMatcher: "), std::string::npos)
+		<< r.failureReason;
+}
+
+TEST(ScanMatcherFallback, TooFewPointsIsNotHandedOn)
+{
+	SyntheticRoom nothing;
+	nothing.add(1, 0, 1, 0.01);
+	const auto s = nothing.scan(CPose2D());
+	auto m = fromIni("featloc::PcmFeatureMatcher",
+		"[ScanMatcher.PcmFeatureMatcher]\nfallback_class = IcpMatcher\n");
+	const MatchResult r = m->match(*s, *s, diagonalPoseGaussian(CPose2D(), 0.1, 0.1));
+	EXPECT_FALSE(r.success);
+	EXPECT_EQ(r.failureKind, "too_few_points");
+	EXPECT_TRUE(r.primaryFailure.empty());
+}
+
+TEST(ScanMatcherFallback, TheFallbackReadsItsOwnSectionAndIsOneLevelDeep)
+{
+	// Each names the other: no cycle, the fallback's own fallback_class is
+	// read (a valid key) and not followed; the fallback's parameters are
+	// its section's.
+	auto m = fromIni("featloc::PcmFeatureMatcher",
+		"[ScanMatcher.PcmFeatureMatcher]\nfallback_class = IdcMatcher\n"
+		"[ScanMatcher.IdcMatcher]\nfallback_class = PcmFeatureMatcher\ncoarse_search = true\n");
+	ASSERT_TRUE(m->fallback());
+	EXPECT_FALSE(m->fallback()->fallback());
+	EXPECT_TRUE(m->fallback()->coarseSearchOptions().enabled);
+	EXPECT_FALSE(m->coarseSearchOptions().enabled);
+
+	const std::string self = configErrorOf("featloc::PcmFeatureMatcher",
+		"[ScanMatcher.PcmFeatureMatcher]\nfallback_class = PcmFeatureMatcher\n");
+	EXPECT_NE(self.find("fallback_class"), std::string::npos) << self;
+	EXPECT_NE(self.find("ScanMatcher.PcmFeatureMatcher"), std::string::npos) << self;
+	EXPECT_NE(self.find("names the matcher itself"), std::string::npos) << self;
+
+	const std::string unknown = configErrorOf("featloc::IcpMatcher",
+		"[ScanMatcher.IcpMatcher]\nfallback_class = IdcMatchr\n");
+	EXPECT_NE(unknown.find("fallback_class"), std::string::npos) << unknown;
+	EXPECT_NE(unknown.find("IdcMatchr"), std::string::npos) << unknown;
+	EXPECT_NE(unknown.find("featloc::IdcMatcher"), std::string::npos) << unknown;  // known ones
+
+	// A bad value in the fallback's section names that section.
+	const std::string bad = configErrorOf("featloc::PcmFeatureMatcher",
+		"[ScanMatcher.PcmFeatureMatcher]\nfallback_class = IdcMatcher\n"
+		"[ScanMatcher.IdcMatcher]\nmin_pairs = -3\n");
+	EXPECT_NE(bad.find("ScanMatcher.IdcMatcher"), std::string::npos) << bad;
+}
