@@ -19,6 +19,7 @@
 #include "support/JsonFile.h"
 #include "support/TempDir.h"
 #include "support/TextFile.h"
+#include "support/SyntheticRoom.h"
 #include "support/TestRawlog.h"
 
 using namespace featloc;
@@ -703,4 +704,56 @@ TEST(FeatlocBench, EveryPairCountsAndTheBasinCurveIsDrawn)
 	const CommandResult bad = runCommand(common + " --basin x.png --basin-levels 0.1-2");
 	EXPECT_EQ(bad.exitCode, 2);
 	EXPECT_NE(bad.output.find("--basin-levels: '0.1-2'"), std::string::npos) << bad.output;
+}
+
+// fallback_class in a run: along a corridor whose only cross features are
+// door jambs, PCM fails where they are far (too few points for a feature)
+// and ICP makes those matches, and only those; summary.json counts them and
+// matches.txt says whose they are.
+TEST(FeatlocRun, TheFallbackMatcherMakesTheMatchesPcmCannot)
+{
+	registerClasses();
+	TempDir dir;
+	featloc::test::SyntheticRoom corridor = featloc::test::SyntheticRoom::corridor();
+	for (double x : {-2.0, 0.7, 1.9, 3.2})
+	{
+		corridor.add(x, 1, x, 0.92);
+		corridor.add(x, -1, x, -0.92);
+	}
+	TestRawlog log;
+	log.scans = 12;
+	log.path = [](double t) { return CPose2D(0.5 * t, 0.02 * t, 0.01 * t); };
+	log.editScan = [&](size_t k, mrpt::obs::CObservation2DRangeScan& s) {
+		auto c = corridor.scan(log.path(log.scanPeriod * static_cast<double>(k)));
+		c->sensorLabel = s.sensorLabel;
+		c->timestamp = s.timestamp;
+		c->sensorPose = s.sensorPose;
+		s = *c;
+	};
+	log.write(dir.file("corridor.rawlog"));
+	const std::string common = shellQuote(kConfig) + " " + shellQuote(dir.file("corridor.rawlog")) +
+		" --set ScanMatcher:class=PcmFeatureMatcher --set Pipeline:estimator=matcher"
+		" --set Pipeline:keyframe_distance=0 --set Pipeline:keyframe_angle_DEG=0"
+		" --set Output:write_scene=false";
+	const CommandResult alone = featlocRun(
+		common + " --out " + shellQuote(dir.file("alone")) +
+		" --set ScanMatcher.PcmFeatureMatcher:fallback_class=");
+	ASSERT_EQ(alone.exitCode, 0) << alone.output;
+	const auto a = readJson(dir.file("alone/summary.json"));
+	const int pcmFailures = a["counts"]["match_failures"].get<int>();
+	EXPECT_GE(pcmFailures, 3);
+	EXPECT_EQ(a["counts"]["fallback_matcher_matches"], 0);
+
+	const CommandResult r = featlocRun(common + " --out " + shellQuote(dir.file("out")) +
+		" --set ScanMatcher.PcmFeatureMatcher:fallback_class=IcpMatcher");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto s = readJson(dir.file("out/summary.json"));
+	EXPECT_EQ(s["counts"]["matches"], 11);
+	EXPECT_EQ(s["counts"]["match_failures"], 0);
+	EXPECT_EQ(s["counts"]["fallback_matcher_matches"], pcmFailures);
+	EXPECT_EQ(s["counts"]["fallback_matcher_successes"], pcmFailures);
+	const std::string matches = readText(dir.file("out/matches.txt"));
+	EXPECT_NE(matches.find("made by the fallback matcher after featloc::PcmFeatureMatcher: "),
+		std::string::npos)
+		<< matches.substr(0, 2000);
 }

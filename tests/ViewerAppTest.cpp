@@ -177,8 +177,11 @@ TEST(Viewer, MatchViewShowsPcmFeaturesAndCfIdcSegments)
 	{
 		SCOPED_TRACE(cls);
 		const std::string dir = tmp.file(cls);
+		// PCM without its fallback: step 100 is a corridor stretch where
+		// its lines fail it, and the view shows its features anyway.
 		const CommandResult run = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) +
-			" --out " + shellQuote(dir) + " -q --set ScanMatcher:class=featloc::" + cls + " 2>&1");
+			" --out " + shellQuote(dir) + " -q --set ScanMatcher:class=featloc::" + cls +
+			" --set ScanMatcher.PcmFeatureMatcher:fallback_class= 2>&1");
 		ASSERT_EQ(run.exitCode, 0) << run.output;
 		const CommandResult r = viewer(shellQuote(dir) + " --view match --step 100 --screenshot " +
 			shellQuote(tmp.file(cls + ".png")));
@@ -189,6 +192,22 @@ TEST(Viewer, MatchViewShowsPcmFeaturesAndCfIdcSegments)
 			EXPECT_NE(r.output.find("PCM feature pairs"), std::string::npos) << r.output;
 		}
 	}
+	// With config.ini's fallback (ICP) that match is ICP's, and the view
+	// says so, in the run's row and when run again.
+	const std::string dir = tmp.file("pcm-fallback");
+	const CommandResult run = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " --out " +
+		shellQuote(dir) + " -q --set ScanMatcher:class=featloc::PcmFeatureMatcher 2>&1");
+	ASSERT_EQ(run.exitCode, 0) << run.output;
+	const CommandResult r = viewer(shellQuote(dir) + " --view match --step 100 --screenshot " +
+		shellQuote(tmp.file("pcm-fallback.png")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	EXPECT_NE(r.output.find("reason: made by the fallback matcher after featloc::PcmFeatureMatcher: "),
+		std::string::npos)
+		<< r.output;
+	EXPECT_NE(r.output.find("featloc::PcmFeatureMatcher: success by its fallback featloc::IcpMatcher"),
+		std::string::npos)
+		<< r.output;
+	EXPECT_EQ(r.output.find("PCM feature pairs"), std::string::npos) << r.output;
 }
 
 TEST(Viewer, PlotsShowErrorNeesAndMatchTime)

@@ -117,6 +117,10 @@ void RunReport::printSummary(const RunStats& s)
 			"match mean %.2f ms, median %.2f ms, p95 %.2f ms\n",
 			s.matchesAttempted, s.matchFailures, s.fallbacks, t.mean * 1e3, t.median * 1e3,
 			t.p95 * 1e3);
+		if (s.fallbackMatcherMatches)
+			std::printf("    %zu made by the fallback matcher after %s failed (%zu of them succeeded; "
+						"fallback_class)\n",
+				s.fallbackMatcherMatches, s.matcherClass.c_str(), s.fallbackMatcherSuccesses);
 		for (const auto& ex : s.failureExamples) std::printf("    failed: %s\n", ex.c_str());
 		for (const auto& ex : s.rejectionExamples) std::printf("    not used: %s\n", ex.c_str());
 	}

@@ -146,17 +146,19 @@ std::string MatchPanel::runMatcher(const std::string& className, const std::stri
 	panel.setMatch(ref.scan, step.scan, r.estimate.mean.asTPose(), std::move(used), caption);
 	std::ostringstream out;
 	out << className << ": "
-		<< (r.success ? (r.guessGateOverruled.empty() ? "success" : "success, guess gate overruled")
+ 		<< (r.success ? (r.guessGateOverruled.empty() ? "success" : "success, guess gate overruled")
 					  : r.rejectedByGuessGate ? "rejected by the guess gate"
 											  : "failed")
+		<< (r.success && !r.primaryFailure.empty()
+				   ? " by its fallback " + matcher->fallback()->className()
+				   : std::string())
 		<< ", " << r.iterations << " iterations, " << r.timeSeconds * 1e3 << " ms\n"
 		<< "estimate: " << describeMotion(r.estimate.mean.asTPose()) << "\n"
 		<< "covariance: " << describeSigmas(r.estimate.cov) << "\n";
 	if (!r.success) out << "reason: " << r.failureReason << "\n";
 	if (!r.guessGateOverruled.empty()) out << "guess gate: " << r.guessGateOverruled << "\n";
 	if (r.success && !r.primaryFailure.empty())
-		out << "made by the fallback " << matcher->fallback()->className()
-			<< " (fallback_class) after " << r.primaryFailure << "\n";
+		out << "fallback_class took over after " << r.primaryFailure << "\n";
 	return out.str() + usedText;
 }
 

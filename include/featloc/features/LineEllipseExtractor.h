@@ -64,7 +64,7 @@ class LineEllipseExtractor
 		double split_distance_min = 0.02;  //!< [m] split/merge threshold floor
 		double split_sigmas = 4;  //!< threshold in estimated noise sigmas
 		double trim_sigmas = 3;	 //!< end trimming, in estimated noise sigmas
-		double merge_sigmas = 1.5;	//!< merge test, in estimated noise sigmas
+		double merge_sigmas = 3;	//!< merge test, in estimated noise sigmas
 		double max_line_sigma = 0.05;  //!< [m] sigma of eq. (8)
 		unsigned int min_points = 5;
 		double min_length = 0.2;  //!< [m]
