@@ -14,6 +14,8 @@
 #    $FEATLOC_LASER2D).
 #  - Whole runs (featloc-run, matcher chain): the office and lab with four
 #    seeds each, and MRPT's 5 cm-noise simulated log with both estimators.
+#  - PCM's signed errors over the office's consecutive matches against the
+#    spread its covariance predicts (scripts/match-errors.py --all).
 # Usage: scripts/bench-pcm-fallback.sh [OUTDIR]   (about 3 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
@@ -102,5 +104,13 @@ for est in matcher ekf; do
   run "MRPT's simul.rawlog (5 cm), $est" "$D/simul.rawlog" "$D/simul.rawlog.GT.txt" \
     --set "Pipeline:estimator=$est"
 done
+echo
+echo "### PCM's errors on the office's consecutive matches (featloc-run, every scan a keyframe): bias or variance"
+echo
+"$BIN/featloc-run" "$ROOT/config.ini" "$OUT/office-1cm.rawlog" --out "$OUT/run-office-consecutive" -q \
+  --set ScanMatcher:class=$PCM --set Pipeline:keyframe_distance=0 --set Pipeline:keyframe_angle_DEG=0 \
+  --set Output:write_scene=false --set Output:write_rawlog=false > /dev/null
+python3 "$ROOT/scripts/match-errors.py" "$OUT/run-office-consecutive/matches.txt" "$OUT/office-1cm.gt.txt" --all \
+  | grep '^# successful'
 echo
 echo "(raw outputs in $OUT)"

@@ -8,8 +8,11 @@ match with --all -- prints the converged estimate's error and the initial
 guess's (odometry's) error against the ground truth's relative motion
 between the reference scan's time and the current scan's, so that a guess
 gate's rejection can be told right (the estimate is wrong) or wrong (the
-estimate is right and the guess is not). GT: 't x y yaw' rows (MRPT's
-.GT.txt) or TUM; nearest row within 10 ms.
+estimate is right and the guess is not). With --all it ends with the
+successful matches' signed errors (mean and standard deviation: a bias
+shows in the mean) beside the standard deviation their covariances
+predict. GT: 't x y yaw' rows (MRPT's .GT.txt) or TUM; nearest row within
+10 ms.
 """
 import bisect
 import math
@@ -36,6 +39,7 @@ def main():
     every = "--all" in sys.argv
     print("t ref_t status used | estimate error m deg | guess error m deg | reason")
     counts = {}
+    signed = []  # successful matches: (error x, y [m], yaw [rad]), predicted sigmas
     for line in open(sys.argv[1]):
         if line.startswith("#"):
             continue
@@ -51,12 +55,25 @@ def main():
         guess = tuple(map(float, f[9:12]))
         est = tuple(map(float, f[12:15]))
         ee, ge = error(est, truth), error(guess, truth)
+        if status in ("ok", "overruled"):
+            cov = list(map(float, f[15:21]))  # c_xx c_xy c_xyaw c_yy c_yyaw c_yawyaw
+            signed.append(((est[0] - truth[0], est[1] - truth[1], wrap(est[2] - truth[2])),
+                           (math.sqrt(cov[0]), math.sqrt(cov[3]), math.sqrt(cov[5]))))
         right = ee[0] <= 0.05 and abs(ee[1]) <= 1.0
         counts[(status, right)] = counts.get((status, right), 0) + 1
         print(f"{t:.3f} {ref_t:.3f} {status} {used} | {ee[0]:.3f} {ee[1]:+.2f} | "
               f"{ge[0]:.3f} {ge[1]:+.2f} | {' '.join(f[33:])[:90]}")
     for (status, right), n in sorted(counts.items()):
         print(f"# {status}: {n} with the estimate {'within' if right else 'outside'} 0.05 m / 1 deg of the truth")
+    if every and signed:
+        n = len(signed)
+        for k, (name, scale, unit) in enumerate((("x", 1e3, "mm"), ("y", 1e3, "mm"), ("yaw", math.degrees(1), "deg"))):
+            e = [v[0][k] * scale for v in signed]
+            mean = sum(e) / n
+            sd = math.sqrt(sum((x - mean) ** 2 for x in e) / n)
+            predicted = math.sqrt(sum((v[1][k] * scale) ** 2 for v in signed) / n)
+            print(f"# successful matches ({n}), {name} error: mean {mean:+.4f} {unit}, sd {sd:.4f} {unit}; "
+                  f"the covariances' sigma (rms) {predicted:.4f} {unit}")
 
 
 if __name__ == "__main__":
