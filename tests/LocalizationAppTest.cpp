@@ -344,3 +344,44 @@ TEST(LocalizationApp, IdenticalRoomsAreNotConfirmedUntilTheScansTellThemApart)
 	// Measured: found at scan 48, at the door facing the corridor.
 	EXPECT_LT(t[1], 1.0) << "found inside the room, where the two rooms look alike: " << r.output;
 }
+
+// The same rooms, but the west one has a desk the robot, in the east one,
+// would see in front of it: its end points fit both rooms' walls, and only
+// the beams that room A's desk would stop tell them apart (the scores'
+// see-through share, LocalizationMap::shareSeenThrough). With it the robot
+// is found inside room B; with the end points alone
+// (global_see_through = false) only at the door, as in identical rooms.
+TEST(LocalizationApp, ADeskTheBeamsPassThroughTellsLookAlikeRoomsApart)
+{
+	TempDir dir;
+	const std::string world =
+		std::string(FEATLOC_SOURCE_DIR) + "/tests/data/worlds/twin-rooms-desk.ini";
+	const std::string p = dir.file("twin");
+	CommandResult r = runCommand(shellQuote(kSim) + " " + shellQuote(world) + " --out " + shellQuote(p) + " -q");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	std::vector<size_t> foundAt;
+	for (const std::string seeThrough : {"true", "false"})
+	{
+		SCOPED_TRACE(seeThrough);
+		const std::string out = dir.file("run-" + seeThrough);
+		r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " + shellQuote(p + ".rawlog") +
+			" --out " + shellQuote(out) +
+			" -q --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global --set Localization:map=" +
+			shellQuote(world) + " --set Localization:global_see_through=" + seeThrough +
+			" --set Evaluation:ground_truth=" + shellQuote(p + ".gt.txt") + " --set Evaluation:align=false");
+		ASSERT_EQ(r.exitCode, 0) << r.output;
+		const auto events = eventsOf(out);
+		ASSERT_EQ(events.size(), 1u) << r.output;
+		ASSERT_EQ(events[0].kind, "found");
+		const auto t = truthAt(p + ".gt.txt", events[0].scan);
+		EXPECT_TRUE(near(events[0], t)) << r.output;
+		// Measured: scan 16 at (8.0, 3.1) inside room B; scan 49 at the door.
+		if (seeThrough == "true")
+			EXPECT_GT(t[1], 1.0) << "found only at the door: " << r.output;
+		else
+			EXPECT_LT(t[1], 1.0) << "found inside: " << r.output;
+		foundAt.push_back(events[0].scan);
+	}
+	ASSERT_EQ(foundAt.size(), 2u);
+	EXPECT_LT(foundAt[0] + 20, foundAt[1]);
+}

@@ -76,3 +76,40 @@ TEST(LocalizationMap, VirtualScanOfAWorldFileGivesTheExactRangesWithoutBias)
 	EXPECT_LT(std::abs(mean), 0.003);
 	EXPECT_LT(median, 0.008);
 }
+
+// A beam that ends beyond where the map stops it passes through something
+// the map has there (negative information, the beam model's half the end
+// points' score leaves out): at the pose the scan was taken from, no beam
+// does; one room over, where the map has a desk the scan does not show, the
+// beams through the desk do.
+TEST(LocalizationMap, BeamsThatPassThroughTheMapAreCounted)
+{
+	LocalizationOptions o;
+	o.map = std::string(FEATLOC_SOURCE_DIR) + "/tests/data/worlds/twin-rooms-desk.ini";
+	const LocalizationMap map = LocalizationMapFile::load(o);
+	mrpt::config::CConfigFile cfg(o.map);
+	const SimWorld world = SimWorld::fromConfig(cfg);
+	// The scan of room B (no desk), facing north from its middle.
+	const mrpt::poses::CPose2D inB(8, 2, M_PI / 2);
+	auto scan = sickLike();
+	std::vector<double> exact;
+	RayCaster::cast((inB + mrpt::poses::CPose2D(0.2, 0, 0)).asTPose(), -M_PI / 2, M_PI / 360, 361,
+		30, world.segments(), world.circles(), exact);
+	for (size_t i = 0; i < exact.size(); i++)
+	{
+		scan.setScanRange(i, std::isfinite(exact[i]) ? static_cast<float>(exact[i]) : 30.f);
+		scan.setScanRangeValidity(i, std::isfinite(exact[i]));
+	}
+	EXPECT_EQ(map.shareSeenThrough(scan, inB), 0.0);
+	// Room A is room B moved 6 m west, with a desk 1.2 m in front of the
+	// robot (1 m wide): the beams that end on A's north wall pass through
+	// it. The end points themselves all lie on A's walls.
+	const mrpt::poses::CPose2D inA(2, 2, M_PI / 2);
+	const double share = map.shareSeenThrough(scan, inA);
+	EXPECT_GT(share, 0.1) << share;
+	EXPECT_LT(share, 0.4) << share;
+	// A scan that ends nowhere (no valid beam) sees through nothing.
+	auto blind = sickLike();
+	for (size_t i = 0; i < blind.getScanSize(); i++) blind.setScanRangeValidity(i, false);
+	EXPECT_EQ(map.shareSeenThrough(blind, inA), 0.0);
+}

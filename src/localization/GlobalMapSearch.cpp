@@ -103,14 +103,28 @@ GlobalMapSearch::Result GlobalMapSearch::search(const mrpt::obs::CObservation2DR
 	r.best = best.front().pose;
 	r.best.normalizePhi();
 	r.bestScore = best.front().score;
-	const auto rival = m_tables.search(x, y, w, 1.0, [&](const mrpt::poses::CPose2D& p) {
-		return posesWithin(p, r.best, m_options.distinctXY, m_options.distinctYaw);
-	});
-	if (!rival.empty())
+	// Every pose away from the best that scores nearly as well, best first;
+	// of those, the distinct places (a look-alike room each).
+	const auto others = m_tables.search(x, y, w,
+		m_options.maxContenders > 0 ? m_options.contenderRatio : 1.0,
+		[&](const mrpt::poses::CPose2D& p) {
+			return posesWithin(p, r.best, m_options.distinctXY, m_options.distinctYaw);
+		});
+	for (const auto& c : others)
 	{
-		r.rival = rival.front().pose;
-		r.rival.normalizePhi();
-		r.rivalScore = rival.front().score;
+		if (r.contenders.size() > m_options.maxContenders) break;
+		bool distinct = true;
+		for (const auto& k : r.contenders)
+			distinct = distinct && !posesWithin(c.pose, k.pose, m_options.distinctXY, m_options.distinctYaw);
+		if (!distinct) continue;
+		r.contenders.push_back(c);
+		r.contenders.back().pose.normalizePhi();
+	}
+	if (!r.contenders.empty())
+	{
+		r.rival = r.contenders.front().pose;
+		r.rivalScore = r.contenders.front().score;
+		r.contenders.erase(r.contenders.begin());
 	}
 	r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	return r;

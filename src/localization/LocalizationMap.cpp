@@ -3,6 +3,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace featloc
@@ -45,6 +46,24 @@ mrpt::obs::CObservation2DRangeScan LocalizationMap::virtualScan(
 	for (size_t i = 0; i < v.getScanSize(); i++)
 		if (v.getScanRangeValidity(i)) v.setScanRange(i, v.getScanRange(i) + extra);
 	return v;
+}
+
+double LocalizationMap::shareSeenThrough(
+	const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose) const
+{
+	const auto expected = virtualScan(scan, robotPose);
+	size_t valid = 0, through = 0;
+	for (size_t i = 0; i < scan.getScanSize(); i++)
+	{
+		if (!scan.getScanRangeValidity(i)) continue;
+		const double r = scan.getScanRange(i);
+		if (!(r > 0) || r >= scan.maxRange) continue;
+		valid++;
+		if (!expected.getScanRangeValidity(i)) continue;  // the map has nothing on that beam
+		const double e = expected.getScanRange(i);
+		if (r > e + std::max(kSeeThroughMargin, kSeeThroughShare * e)) through++;
+	}
+	return valid ? static_cast<double>(through) / static_cast<double>(valid) : 0.0;
 }
 
 std::string LocalizationMap::describe() const

@@ -22,6 +22,7 @@ void LocalizationOptions::loadFromConfigFile(
 	read(c, s, "global_confirm_scans", global_confirm_scans);
 	read(c, s, "global_min_score", global_min_score);
 	read(c, s, "global_min_evidence", global_min_evidence);
+	read(c, s, "global_see_through", global_see_through);
 	read(c, s, "lost_after_scans", lost_after_scans);
 	require(global_resolution >= 0.01 && global_resolution <= 0.5, c, s, "global_resolution",
 		"in [0.01, 0.5] [m]");
@@ -71,6 +72,8 @@ void LocalizationOptions::saveToConfigFile(
 		"global: ...at least this share of the scan on the map...");
 	write(c, s, "global_min_evidence", global_min_evidence,
 		"global: ...and whose scores over the search's scans exceed every other hypothesis's by this in total");
+	write(c, s, "global_see_through", global_see_through,
+		"global: a hypothesis's score on a scan is less the share of the scan's beams that pass through the map there (false: the end points alone)");
 	write(c, s, "lost_after_scans", lost_after_scans,
 		"tracking is lost after this many scans in a row without a usable map match (0: never)");
 }

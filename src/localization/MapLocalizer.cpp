@@ -47,9 +47,9 @@ void MapLocalizer::track(const EstimationStep& step, PoseEstimator& estimator, O
 	// anywhere in the map.
 	globalSearch();
 	// (Both on the sharp table: the search's own scores are on its wide one.)
-	const auto here = m_global->refine(*step.scan, estimator.pose().mean, kTrackXY, kTrackYaw);
+	const auto here = placed(*step.scan, estimator.pose().mean);
 	out.global = m_global->search(*step.scan);
-	const auto there = m_global->refine(*step.scan, out.global->best, kTrackXY, kTrackYaw);
+	const auto there = placed(*step.scan, out.global->best);
 	if (here.score >= m_options.global_min_score &&
 		here.score >= there.score - m_options.global_min_evidence / m_options.global_confirm_scans)
 	{
@@ -70,6 +70,14 @@ void MapLocalizer::track(const EstimationStep& step, PoseEstimator& estimator, O
 	m_misses = 0;
 }
 
+GlobalMapSearch::Local MapLocalizer::placed(
+	const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& around) const
+{
+	auto local = m_global->refine(scan, around, kTrackXY, kTrackYaw);
+	if (m_options.global_see_through) local.score -= m_map->shareSeenThrough(scan, local.pose);
+	return local;
+}
+
 double MapLocalizer::Hypothesis::total() const
 {
 	double sum = 0;
@@ -77,15 +85,19 @@ double MapLocalizer::Hypothesis::total() const
 	return sum;
 }
 
-MapLocalizer::Hypothesis MapLocalizer::backdated(const mrpt::poses::CPose2D& pose, double score) const
+MapLocalizer::Hypothesis MapLocalizer::backdated(const mrpt::poses::CPose2D& pose) const
 {
-	Hypothesis h{pose, {score}};
-	mrpt::poses::CPose2D at = pose;
+	// Scored on the sharp table on the last scan too, as the hypotheses
+	// moved by odometry are: the search's own score is on its wide table,
+	// higher, and would give a new hypothesis a head start.
+	const auto last = placed(*m_window.back().scan, pose);
+	Hypothesis h{last.pose, {last.score}};
+	mrpt::poses::CPose2D at = last.pose;
 	for (size_t j = m_window.size() - 1; j-- > 0;)
 	{
 		// Scan j+1 = scan j (+) odometry: back to scan j.
 		at = at + (mrpt::poses::CPose2D() - m_window[j + 1].odometryFromPrevious);
-		const auto local = m_global->refine(*m_window[j].scan, at, kTrackXY, kTrackYaw);
+		const auto local = placed(*m_window[j].scan, at);
 		at = local.pose;
 		h.scores.push_front(local.score);
 	}
@@ -122,7 +134,7 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 	// Every hypothesis moved by the odometry and put back on the map.
 	for (auto& h : m_hypotheses)
 	{
-		const auto local = m_global->refine(*step.scan, h.pose + m_odometrySince, kTrackXY, kTrackYaw);
+		const auto local = placed(*step.scan, h.pose + m_odometrySince);
 		h.pose = local.pose;
 		h.scores.push_back(local.score);
 	}
@@ -156,12 +168,13 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 		if (score < m_options.global_min_score) return;
 		for (const auto& h : m_hypotheses)
 			if (same(p, h.pose)) return;
-		m_hypotheses.push_back(backdated(p, score));
+		m_hypotheses.push_back(backdated(p));
 	};
 	if (g.valid)
 	{
 		add(g.best, g.bestScore);
 		add(g.rival, g.rivalScore);
+		for (const auto& c : g.contenders) add(c.pose, c.score);
 	}
 	const Hypothesis* h = confirmed();
 	if (!h) return;

@@ -33,6 +33,12 @@ class GlobalMapSearch
 		 * similar places apart (the search's wide table makes its basin). */
 		double refineResolution = 0.025;  //!< [m]
 		double refineHitSigma = 0.04;  //!< [m]
+		/** search() also returns up to this many other distinct places
+		 * (`contenders`) scoring at least contenderRatio x the best: the
+		 * look-alike rooms a hypothesis tracker must keep in view. 0: the
+		 * rival only. */
+		unsigned int maxContenders = 10;
+		double contenderRatio = 0.85;
 	};
 
 	GlobalMapSearch(const LocalizationMap& map, const Options& options);
@@ -44,6 +50,8 @@ class GlobalMapSearch
 		double bestScore = 0;  //!< share of the scan's points on the map [0-1]
 		mrpt::poses::CPose2D rival;
 		double rivalScore = 0;	//!< 0 when nothing else scores
+		/** Further distinct places, best first, after the rival. */
+		std::vector<CorrelationTables::Candidate> contenders;
 		double seconds = 0;
 	};
 	Result search(const mrpt::obs::CObservation2DRangeScan& scan) const;

@@ -38,6 +38,17 @@ class LocalizationMap
 	mrpt::obs::CObservation2DRangeScan virtualScan(
 		const mrpt::obs::CObservation2DRangeScan& like, const mrpt::poses::CPose2D& robotPose) const;
 
+	/** The share of `scan`'s valid beams that reach farther than this map
+	 * lets them from `robotPose` (virtualScan) by more than
+	 * kSeeThroughMargin, or kSeeThroughShare of the map's range if that is
+	 * more (a slightly wrong pose moves a grazing beam's end a long way):
+	 * beams that pass through a wall or an obstacle the map has there. 0
+	 * for a scan without valid beams. */
+	double shareSeenThrough(
+		const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose) const;
+	static constexpr double kSeeThroughMargin = 0.3;  //!< [m]
+	static constexpr double kSeeThroughShare = 0.1;
+
 	/** Centres of the occupied cells (map frame), for pictures and the
 	 * global search; found once, when the map is made. */
 	const std::vector<mrpt::math::TPoint2D>& occupiedCells() const { return m_occupied; }

@@ -59,6 +59,11 @@ struct LocalizationOptions : public mrpt::config::CLoadableOptions
 	/** ...and whose scores over the search's scans exceed every other
 	 * hypothesis's by this in total (a sum of shares of points). */
 	double global_min_evidence = 0.2;
+	/** Each hypothesis's score on a scan is less the share of the scan's
+	 * beams that pass through the map there
+	 * (LocalizationMap::shareSeenThrough); false: the end points' score
+	 * alone. */
+	bool global_see_through = true;
 	/** Tracking is lost after this many scans in a row without a usable
 	 * map match (failed or rejected by the gate); 0: never. */
 	unsigned int lost_after_scans = 5;

@@ -116,9 +116,18 @@ class MapLocalizer
 	};
 	std::vector<Hypothesis> m_hypotheses;
 	mrpt::poses::CPose2D m_odometrySince;
-	/** A hypothesis made at the last scan at `pose`, carried back through
-	 * the odometry and scored on every window scan. */
-	Hypothesis backdated(const mrpt::poses::CPose2D& pose, double score) const;
+	/** `around` put on the map by GlobalMapSearch::refine, and its score
+	 * there less the share of the scan's beams that see through the map
+	 * there (LocalizationMap::shareSeenThrough): the end points' score alone
+	 * counts against a place what its map lacks (a desk the robot sees
+	 * where the map has none) but not what it has and the robot does not
+	 * see (a desk the beams pass through); two rooms that differ by a desk
+	 * differ twice as much with both. */
+	GlobalMapSearch::Local placed(
+		const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& around) const;
+	/** A hypothesis made at the last scan at `pose`, put on the map there,
+	 * carried back through the odometry and scored on every window scan. */
+	Hypothesis backdated(const mrpt::poses::CPose2D& pose) const;
 	/** The hypothesis that is found, or null. */
 	const Hypothesis* confirmed() const;
 };
