@@ -61,9 +61,10 @@ void MapLocalizer::track(const EstimationStep& step, PoseEstimator& estimator, O
 	m_window.clear();
 	m_odometrySince = mrpt::poses::CPose2D();
 	out.event = "lost";
-	char buf[160];
+	char buf[200];
 	std::snprintf(buf, sizeof(buf),
-		"; %.0f%% of the scan on the map at the estimate, %.0f%% at the best place in the map",
+		"; the scan scores %.0f%% at the estimate, %.0f%% at the best place in the map (its points "
+		"on the map less its beams through the map)",
 		100 * here.score, 100 * there.score);
 	out.message = std::to_string(m_misses) + " scans in a row without a usable map match (last: " +
 		out.reason + ")" + buf;
@@ -192,7 +193,8 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 	const double n = static_cast<double>(h->scores.size());
 	char buf[240];
 	std::snprintf(buf, sizeof(buf),
-		"%.0f%% of %zu scans' points on the map there; the next of %zu hypotheses %.0f%%",
+		"scored %.0f%% over %zu scans (points on the map less beams through it); the next of %zu "
+		"hypotheses %.0f%%",
 		100 * h->total() / n, h->scores.size(), m_hypotheses.size(),
 		runnerUp < 0 ? 0.0 : 100 * runnerUp / n);
 	const std::string evidence = buf;
