@@ -144,15 +144,17 @@ for world in office lab; do
   loc "$OUT/$world-b" "$OUT/$world-b-world" "$ROOT/worlds/$world.ini"
   loc "$OUT/$world-b" "$OUT/$world-b-simplemap" "$MAP"
   loc "$OUT/$world-b" "$OUT/$world-b-nomap" ""
+  loc "$OUT/$world-b" "$OUT/$world-b-pcm" "$MAP" --set ScanMatcher:class=featloc::PcmFeatureMatcher
   pf "$OUT/$world-b" "$MAP" "$OUT/$world-b-pf"
   echo "| $world | (mapping run A, in the world file) | $(ate "$OUT/$world-a-mapping") | $(used "$OUT/$world-a-mapping") | $(maptime "$OUT/$world-a-mapping") | $(perscan "$OUT/$world-a-mapping") |"
   echo "| $world | featloc, the world file | $(ate "$OUT/$world-b-world") | $(used "$OUT/$world-b-world") | $(maptime "$OUT/$world-b-world") | $(perscan "$OUT/$world-b-world") |"
   echo "| $world | featloc, run A's map.simplemap | $(ate "$OUT/$world-b-simplemap") | $(used "$OUT/$world-b-simplemap") | $(maptime "$OUT/$world-b-simplemap") | $(perscan "$OUT/$world-b-simplemap") |"
+  echo "| $world | featloc, run A's map.simplemap, PCM scan-to-scan too | $(ate "$OUT/$world-b-pcm") | $(used "$OUT/$world-b-pcm") | $(maptime "$OUT/$world-b-pcm") | $(perscan "$OUT/$world-b-pcm") |"
   echo "| $world | pf-localization, run A's map.simplemap | $(pf_ate "$OUT/$world-b-pf") | - | - | $(pf_time "$OUT/$world-b-pf") (filter step) |"
   echo "| $world | featloc, no map (EKF from the start) | $(ate "$OUT/$world-b-nomap") | - | - | $(perscan "$OUT/$world-b-nomap") |"
 done
 echo
-echo "| office run B in the world file: [Localization] matcher_class | ATE RMSE / max [mm] | map matches used / failed / rejected | map match [ms] (median) |"
+echo "| office run B in the world file: [Localization] matcher_class (config.ini: PcmFeatureMatcher) | ATE RMSE / max [mm] | map matches used / failed / rejected | map match [ms] (median) |"
 echo "|---|---|---|---|"
 for m in IcpMatcher IdcMatcher CfIdcMatcher PcmFeatureMatcher; do
   loc "$OUT/office-b" "$OUT/office-b-world-$m" "$ROOT/worlds/office.ini" --set Localization:matcher_class=featloc::$m

@@ -22,10 +22,11 @@ namespace
 const char* kMatchers[] = {"featloc::IcpMatcher", "featloc::PcmFeatureMatcher",
 	"featloc::IdcMatcher", "featloc::CfIdcMatcher"};
 
-/** A matcher with the coarse search on (unless the overrides say off). */
+/** A matcher with the coarse search on (unless the overrides say off),
+ * without a fallback matcher: these tests are about what the search flags. */
 ScanMatcher::Ptr matcher(const std::string& cls, const std::string& overrides = "coarse_search=true")
 {
-	return test::configuredMatcher(cls, overrides);
+	return test::configuredMatcher(cls, overrides + "\nfallback_class=");
 }
 
 /** 1 cm of range noise: noise-free scans of the same walls put the current

@@ -13,6 +13,7 @@
 #include "featloc/matchers/PcmMotionUpdate.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/registerClasses.h"
+#include "support/MatcherTestHelpers.h"
 #include "support/SyntheticRoom.h"
 
 using namespace featloc;
@@ -22,6 +23,13 @@ using mrpt::poses::CPose2D;
 
 namespace
 {
+/** PCM without its fallback matcher: these tests are about PCM's own
+ * answers and failures. */
+ScanMatcher::Ptr pcmAlone()
+{
+	return featloc::test::configuredMatcher("featloc::PcmFeatureMatcher", "fallback_class=");
+}
+
 ScanFeature line(double rho, double alpha)
 {
 	ScanFeature f;
@@ -195,7 +203,7 @@ TEST(PcmFeatureMatcher, NoiseFreePairRecoveredFromLargeInitialErrors)
 {
 	registerClasses();
 	const SyntheticRoom room = linesRoom();
-	auto m = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
+	auto m = pcmAlone();
 	auto& pcm = dynamic_cast<PcmFeatureMatcher&>(*m);
 	pcm.params.initial_bounds_source = "config";  // the paper's protocol bounds
 	mrpt::random::CRandomGenerator rng(5);
@@ -227,7 +235,7 @@ TEST(PcmFeatureMatcher, CovarianceIsConsistentOverNoisyTrials)
 {
 	registerClasses();
 	const SyntheticRoom room = linesRoom();
-	auto m = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
+	auto m = pcmAlone();
 	mrpt::random::CRandomGenerator rng(11);
 	const double noise = 0.01;
 	auto noisy = [&](mrpt::obs::CObservation2DRangeScan::Ptr s) {
@@ -267,7 +275,7 @@ TEST(PcmFeatureMatcher, CorridorIsFlaggedWithItsUnconstrainedDirection)
 {
 	registerClasses();
 	const SyntheticRoom corridor = SyntheticRoom::corridor();  // walls y = +-1
-	auto m = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
+	auto m = pcmAlone();
 	const auto ref = corridor.scan(CPose2D(0, 0, 0));
 	const auto cur = corridor.scan(CPose2D(0.3, 0.05, 0.02));
 	const MatchResult r = m->match(*ref, *cur, diagonalPoseGaussian(CPose2D(0.25, 0, 0), 0.1, 0.05));
@@ -285,7 +293,7 @@ TEST(PcmFeatureMatcher, TooFewFeaturesIsAReportedFailure)
 	registerClasses();
 	SyntheticRoom pole;
 	pole.add(1, -0.05, 1, 0.05);  // a 10 cm stub: no feature
-	auto m = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
+	auto m = pcmAlone();
 	const auto s = pole.scan(CPose2D());
 	const MatchResult r = m->match(*s, *s, diagonalPoseGaussian(CPose2D(), 0.1, 0.1));
 	EXPECT_FALSE(r.success);
@@ -308,7 +316,7 @@ TEST(PcmFeatureMatcher, AsPublishedSwitchesTurnOffTheWindowAndTheEightCorners)
 	// truth is 0.35 m away in x, beyond 2 Delta_0. PCM finds it.
 	const auto guess = diagonalPoseGaussian(CPose2D(), 0.05, mrpt::DEG2RAD(2));
 	auto run = [&](double window) {
-		auto m = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
+		auto m = pcmAlone();
 		dynamic_cast<PcmFeatureMatcher&>(*m).params.motion_window_bounds = window;
 		return m->match(*ref, *cur, guess);
 	};
@@ -326,7 +334,7 @@ TEST(PcmFeatureMatcher, AsPublishedSwitchesTurnOffTheWindowAndTheEightCorners)
 	// iterations take longer to the same answer.
 	const auto sure = diagonalPoseGaussian(CPose2D(), 0.02, mrpt::DEG2RAD(1));
 	auto iterations = [&](const std::string& dmax) {
-		auto m = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
+		auto m = pcmAlone();
 		auto& pcm = dynamic_cast<PcmFeatureMatcher&>(*m);
 		pcm.params.dmax_corners = dmax;
 		pcm.params.motion_window_bounds = 0;

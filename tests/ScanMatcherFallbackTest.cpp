@@ -65,7 +65,8 @@ TEST(ScanMatcherFallback, ThePointMatcherTakesOverWherePcmHasOnlyParallelLines)
 	const auto cur = corridor.scan(truth);
 	const auto guess = diagonalPoseGaussian(CPose2D(0.25, 0.02, 0.01), 0.05, 0.02);
 
-	auto alone = fromIni("featloc::PcmFeatureMatcher", "");
+	auto alone = fromIni(
+		"featloc::PcmFeatureMatcher", "[ScanMatcher.PcmFeatureMatcher]\nfallback_class =\n");
 	const MatchResult failed = alone->match(*ref, *cur, guess);
 	ASSERT_FALSE(failed.success);
 	EXPECT_TRUE(failed.primaryFailure.empty());
@@ -163,4 +164,29 @@ TEST(ScanMatcherFallback, TheFallbackReadsItsOwnSectionAndIsOneLevelDeep)
 		"[ScanMatcher.PcmFeatureMatcher]\nfallback_class = IdcMatcher\n"
 		"[ScanMatcher.IdcMatcher]\nmin_pairs = -3\n");
 	EXPECT_NE(bad.find("ScanMatcher.IdcMatcher"), std::string::npos) << bad;
+}
+
+// PCM's default fallback is MRPT's ICP: a PCM made by class name and used
+// without a configuration falls back too (with ICP's defaults), and one
+// whose configuration empties fallback_class does not.
+TEST(ScanMatcherFallback, PcmFallsBackOnIcpByDefault)
+{
+	registerClasses();
+	const SyntheticRoom corridor = corridorWithJambs();
+	const auto ref = corridor.scan(CPose2D(0, 0, 0));
+	const auto cur = corridor.scan(CPose2D(0.3, 0.05, 0.02));
+	const auto guess = diagonalPoseGaussian(CPose2D(0.25, 0.02, 0.01), 0.05, 0.02);
+	auto byName = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
+	const MatchResult r = byName->match(*ref, *cur, guess);
+	ASSERT_TRUE(r.success) << r.failureReason;
+	EXPECT_NE(r.primaryFailure.find("featloc::PcmFeatureMatcher: "), std::string::npos);
+	ASSERT_TRUE(byName->fallback());
+	EXPECT_EQ(byName->fallback()->className(), "featloc::IcpMatcher");
+	auto configured = fromIni("featloc::PcmFeatureMatcher", "");
+	ASSERT_TRUE(configured->fallback());
+	EXPECT_EQ(configured->fallback()->className(), "featloc::IcpMatcher");
+	auto none = fromIni(
+		"featloc::PcmFeatureMatcher", "[ScanMatcher.PcmFeatureMatcher]\nfallback_class =\n");
+	EXPECT_FALSE(none->fallback());
+	EXPECT_FALSE(none->match(*ref, *cur, guess).success);
 }

@@ -42,6 +42,7 @@ void ScanMatcher::loadParams(
 	config::read(cfg, section, "fallback_class", m_fallbackClass);
 	m_fallbackClass = mrpt::system::trim(m_fallbackClass);
 	m_fallback.reset();
+	m_followFallback = followFallback;
 	if (followFallback && !m_fallbackClass.empty())
 	{
 		try
@@ -75,7 +76,15 @@ template <typename Run>
 MatchResult ScanMatcher::tryFallback(MatchResult r, Run&& run)
 {
 	m_lastMatchByFallback = false;
-	if (r.success || !m_fallback || r.failureKind == "too_few_points") return r;
+	if (r.success || r.failureKind == "too_few_points") return r;
+	// A matcher used without loadParams() has its default fallback, with
+	// that class's default parameters.
+	if (!m_fallback && m_followFallback && !m_fallbackClass.empty())
+	{
+		m_fallback = ScanMatcherFactory::create(m_fallbackClass);
+		m_fallback->m_followFallback = false;
+	}
+	if (!m_fallback) return r;
 	MatchResult f = run(*m_fallback);
 	f.primaryFailure = className() + ": " + r.failureReason;
 	if (!f.success)

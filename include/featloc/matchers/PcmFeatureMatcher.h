@@ -61,6 +61,10 @@ class PcmFeatureMatcher : public ScanMatcher
 	DEFINE_MRPT_OBJECT(PcmFeatureMatcher, featloc)
 
    public:
+	/** With MRPT's ICP as its fallback (fallback_class): PCM's features
+	 * cannot place a scan along parallel walls; the points can. */
+	PcmFeatureMatcher() : ScanMatcher("featloc::IcpMatcher") {}
+
 	struct Parameters : public mrpt::config::CLoadableOptions
 	{
 		LineEllipseExtractor::Parameters extraction;

@@ -87,6 +87,13 @@ class ScanMatcher : public mrpt::rtti::CObject
 	std::string className() const;
 
    protected:
+	/** `defaultFallbackClass`: the fallback_class of a matcher whose
+	 * configuration does not name one (PCM: ICP). */
+	explicit ScanMatcher(std::string defaultFallbackClass = {})
+		: m_fallbackClass(std::move(defaultFallbackClass))
+	{
+	}
+
 	/** inspectLastMatch() of a match this matcher made. The default pairs
 	 * each current point with its nearest reference point at the estimate
 	 * (within kInspectionPairDistance); matchers that keep their own
@@ -155,6 +162,7 @@ class ScanMatcher : public mrpt::rtti::CObject
 	CorrelativeScanSearch m_coarse;
 	std::string m_fallbackClass;  //!< `fallback_class` as written ("" none)
 	std::shared_ptr<ScanMatcher> m_fallback;
+	bool m_followFallback = true;  //!< false for a fallback itself
 	bool m_lastMatchByFallback = false;	 //!< for inspectLastMatch()
 	void checkAgainstGuess(const mrpt::poses::CPosePDFGaussian& guess, MatchResult& r) const;
 };
