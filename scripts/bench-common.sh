@@ -15,3 +15,11 @@ fmt() { printf "%.${2:-3}f" "$1"; }
 machine_line() {
   echo "machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p'), $(date -u +%Y-%m-%d)"
 }
+# The Radish logs held out from calibration: every *-corrected.log.gz in
+# $LASER2D but orebro's (the calibration log), one path per line.
+held_out_radish_logs() {
+  local f
+  for f in "$LASER2D"/*-corrected.log.gz; do
+    [ "$(basename "$f")" = orebro-corrected.log.gz ] || echo "$f"
+  done
+}

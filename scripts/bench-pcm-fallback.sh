@@ -62,8 +62,7 @@ done
 bench "corridor-people +-0.5/15" "$OUT/corridor-people.rawlog" -g "$OUT/corridor-people.gt.txt" \
   --perturb-xy 0.5 --perturb-yaw-deg 15 --world "$ROOT/worlds/corridor-people.ini"
 if [ -d "$LASER2D" ]; then
-  for f in "$LASER2D"/*-corrected.log.gz; do
-    [ "$(basename "$f")" = orebro-corrected.log.gz ] && continue
+  for f in $(held_out_radish_logs); do
     bench "$(basename "$f" -corrected.log.gz)" "$f" --perturb-xy 0.3 --perturb-yaw-deg 10
   done
 else

@@ -72,8 +72,7 @@ bench "hall-people +-0.3/10" "$OUT/hall-people.rawlog" -g "$OUT/hall-people.gt.t
   --perturb-xy 0.3 --perturb-yaw-deg 10 --world "$ROOT/worlds/hall-people.ini"
 HEADER=--header
 if [ -d "$LASER2D" ]; then
-  for f in "$LASER2D"/*-corrected.log.gz; do
-    [ "$(basename "$f")" = orebro-corrected.log.gz ] && continue
+  for f in $(held_out_radish_logs); do
     bench "$(basename "$f" -corrected.log.gz) +-0.3/10" "$f" --perturb-xy 0.3 --perturb-yaw-deg 10
   done
 else

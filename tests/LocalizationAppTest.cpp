@@ -268,6 +268,18 @@ bool near(const Event& e, const std::array<double, 3>& t)
 	return std::hypot(e.x - t[0], e.y - t[1]) < 0.2 &&
 		std::abs(mrpt::RAD2DEG(mrpt::math::wrapToPi(mrpt::DEG2RAD(e.yawDeg - t[2])))) < 5;
 }
+
+/** featloc-run on `prefix`.rawlog from a global start in `world` (EKF,
+ * evaluated in the map's frame), into `out`; `extra`: more arguments. */
+CommandResult globalRun(const std::string& prefix, const std::string& world, const std::string& out,
+	const std::string& extra = "")
+{
+	return runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " + shellQuote(prefix + ".rawlog") +
+		" --out " + shellQuote(out) +
+		" -q --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global --set Localization:map=" +
+		shellQuote(world) + " --set Evaluation:ground_truth=" + shellQuote(prefix + ".gt.txt") +
+		" --set Evaluation:align=false " + extra);
+}
 }  // namespace
 
 // The pose unknown at the start (initial_pose = global): found in the
@@ -282,11 +294,7 @@ TEST(LocalizationApp, GlobalStartAndAKidnappedRobotAreFoundInTheMap)
 		"--seed 9 --set 'Robot:waypoints=[3 8; 15 8; 17.6 8; 17.6 11; 18.5 13.5]' "
 		"--set 'Robot:kidnap_waypoints=[30 8; 22 8; 21 8; 21 8.5; 27.5 8; 27.5 5.5; 29.5 3]'");
 	const std::string out = dir.file("global");
-	const CommandResult r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " +
-		shellQuote(p + ".rawlog") + " --out " + shellQuote(out) +
-		" -q --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global --set Localization:map=" +
-		shellQuote(kOffice) + " --set Evaluation:ground_truth=" + shellQuote(p + ".gt.txt") +
-		" --set Evaluation:align=false");
+	const CommandResult r = globalRun(p, kOffice, out);
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	EXPECT_NE(r.output.find("global localization: evaluated from"), std::string::npos) << r.output;
 	const auto events = eventsOf(out);
@@ -330,11 +338,7 @@ TEST(LocalizationApp, IdenticalRoomsAreNotConfirmedUntilTheScansTellThemApart)
 	CommandResult r = runCommand(shellQuote(kSim) + " " + shellQuote(world) + " --out " + shellQuote(p) + " -q");
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	const std::string out = dir.file("run");
-	r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " + shellQuote(p + ".rawlog") +
-		" --out " + shellQuote(out) +
-		" -q --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global --set Localization:map=" +
-		shellQuote(world) + " --set Evaluation:ground_truth=" + shellQuote(p + ".gt.txt") +
-		" --set Evaluation:align=false");
+	r = globalRun(p, world, out);
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	const auto events = eventsOf(out);
 	ASSERT_EQ(events.size(), 1u) << r.output;
@@ -364,11 +368,7 @@ TEST(LocalizationApp, ADeskTheBeamsPassThroughTellsLookAlikeRoomsApart)
 	{
 		SCOPED_TRACE(seeThrough);
 		const std::string out = dir.file("run-" + seeThrough);
-		r = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " " + shellQuote(p + ".rawlog") +
-			" --out " + shellQuote(out) +
-			" -q --set Pipeline:estimator=ekf --set Pipeline:initial_pose=global --set Localization:map=" +
-			shellQuote(world) + " --set Localization:global_see_through=" + seeThrough +
-			" --set Evaluation:ground_truth=" + shellQuote(p + ".gt.txt") + " --set Evaluation:align=false");
+		r = globalRun(p, world, out, "--set Localization:global_see_through=" + seeThrough);
 		ASSERT_EQ(r.exitCode, 0) << r.output;
 		const auto events = eventsOf(out);
 		ASSERT_EQ(events.size(), 1u) << r.output;
