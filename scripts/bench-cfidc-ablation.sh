@@ -68,7 +68,7 @@ echo
 echo "### curvature_pairing on the static scenes and the real logs (+-0.3 m / +-10 deg)"
 echo
 for scene in office lab; do
-  "$BIN/featloc-sim" "$ROOT/worlds/$scene.ini" --out "$OUT/$scene-1cm" -q --set Laser:range_noise=0.01 > /dev/null
+  sim_1cm "$scene"
 done
 HEADER=--header
 for data in "$OUT/office-1cm.rawlog" "$OUT/lab-1cm.rawlog" "$LASER2D"/*-corrected.log.gz; do

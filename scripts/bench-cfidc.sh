@@ -54,8 +54,7 @@ echo "### 2. Consecutive scans of whole logs, initial errors 50 mm / 5 deg"
 echo
 HEADER=--header
 for scene in office lab; do
-  "$BIN/featloc-sim" "$ROOT/worlds/$scene.ini" --out "$OUT/$scene-1cm" -q \
-    --set Laser:range_noise=0.01 > /dev/null
+  sim_1cm "$scene"
   bench "sim $scene (1 cm)" "$OUT/$scene-1cm.rawlog" -g "$OUT/$scene-1cm.gt.txt"
 done
 "$BIN/featloc-sim" "$ROOT/worlds/corridor-people.ini" --out "$OUT/corridor-people" -q > /dev/null

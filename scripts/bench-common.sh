@@ -23,3 +23,8 @@ held_out_radish_logs() {
     [ "$(basename "$f")" = orebro-corrected.log.gz ] || echo "$f"
   done
 }
+# featloc-sim's log of worlds/SCENE.ini with 1 cm range noise, as
+# $OUT/SCENE-1cm.rawlog (+ .gt.txt): the static calibration scenes.
+sim_1cm() { # scene
+  "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$1-1cm" -q --set Laser:range_noise=0.01 > /dev/null
+}

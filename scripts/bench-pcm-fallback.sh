@@ -45,8 +45,7 @@ echo
 echo "### Calibration scenes"
 echo
 for scene in office lab; do
-  "$BIN/featloc-sim" "$ROOT/worlds/$scene.ini" --out "$OUT/$scene-1cm" -q \
-    --set Laser:range_noise=0.01 > /dev/null
+  sim_1cm "$scene"
   bench "sim $scene (1 cm)" "$OUT/$scene-1cm.rawlog" -g "$OUT/$scene-1cm.gt.txt" \
     --perturb-xy 0.3 --perturb-yaw-deg 10 --world "$ROOT/worlds/$scene.ini"
 done

@@ -36,8 +36,7 @@ bench() { # name, data, extra args...
 machine_line
 echo
 for scene in office lab; do
-  "$BIN/featloc-sim" "$ROOT/worlds/$scene.ini" --out "$OUT/$scene-1cm" -q \
-    --set Laser:range_noise=0.01 > /dev/null
+  sim_1cm "$scene"
   bench "sim $scene (1 cm)" "$OUT/$scene-1cm.rawlog" -g "$OUT/$scene-1cm.gt.txt"
 done
 if [ -d "$LASER2D" ]; then

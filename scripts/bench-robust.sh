@@ -44,8 +44,7 @@ echo
 echo "### Calibration scenes (1 cm noise, +-0.3 m / +-10 deg)"
 echo
 for scene in office lab; do
-  "$BIN/featloc-sim" "$ROOT/worlds/$scene.ini" --out "$OUT/$scene-1cm" -q \
-    --set Laser:range_noise=0.01 > /dev/null
+  sim_1cm "$scene"
 done
 bench "sim office (1 cm)" "$OUT/office-1cm.rawlog" -g "$OUT/office-1cm.gt.txt" \
   --perturb-xy 0.3 --perturb-yaw-deg 10 --basin "$OUT/basin-office.png" --world "$ROOT/worlds/office.ini"

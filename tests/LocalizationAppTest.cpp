@@ -269,6 +269,21 @@ bool near(const Event& e, const std::array<double, 3>& t)
 		std::abs(mrpt::RAD2DEG(mrpt::math::wrapToPi(mrpt::DEG2RAD(e.yawDeg - t[2])))) < 5;
 }
 
+/** The run in `out` has one event, a "found" within 0.2 m / 5 deg of the
+ * ground truth `gt` there: its scan and the truth (x, y, yaw [deg]) there.
+ * Fatal failures otherwise (ASSERT_NO_FATAL_FAILURE); `output` is the
+ * run's console, shown with them. */
+void expectFoundOnceRight(const std::string& out, const std::string& gt, const std::string& output,
+	size_t& scan, std::array<double, 3>& truth)
+{
+	const auto events = eventsOf(out);
+	ASSERT_EQ(events.size(), 1u) << output;
+	ASSERT_EQ(events[0].kind, "found");
+	scan = events[0].scan;
+	truth = truthAt(gt, scan);
+	ASSERT_TRUE(near(events[0], truth)) << output;
+}
+
 /** featloc-run on `prefix`.rawlog from a global start in `world` (EKF,
  * evaluated in the map's frame), into `out`; `extra`: more arguments. */
 CommandResult globalRun(const std::string& prefix, const std::string& world, const std::string& out,
@@ -340,11 +355,9 @@ TEST(LocalizationApp, IdenticalRoomsAreNotConfirmedUntilTheScansTellThemApart)
 	const std::string out = dir.file("run");
 	r = globalRun(p, world, out);
 	ASSERT_EQ(r.exitCode, 0) << r.output;
-	const auto events = eventsOf(out);
-	ASSERT_EQ(events.size(), 1u) << r.output;
-	ASSERT_EQ(events[0].kind, "found");
-	const auto t = truthAt(p + ".gt.txt", events[0].scan);
-	EXPECT_TRUE(near(events[0], t)) << r.output;
+	size_t scan = 0;
+	std::array<double, 3> t{};
+	ASSERT_NO_FATAL_FAILURE(expectFoundOnceRight(out, p + ".gt.txt", r.output, scan, t));
 	// Measured: found at scan 48, at the door facing the corridor.
 	EXPECT_LT(t[1], 1.0) << "found inside the room, where the two rooms look alike: " << r.output;
 }
@@ -370,17 +383,15 @@ TEST(LocalizationApp, ADeskTheBeamsPassThroughTellsLookAlikeRoomsApart)
 		const std::string out = dir.file("run-" + seeThrough);
 		r = globalRun(p, world, out, "--set Localization:global_see_through=" + seeThrough);
 		ASSERT_EQ(r.exitCode, 0) << r.output;
-		const auto events = eventsOf(out);
-		ASSERT_EQ(events.size(), 1u) << r.output;
-		ASSERT_EQ(events[0].kind, "found");
-		const auto t = truthAt(p + ".gt.txt", events[0].scan);
-		EXPECT_TRUE(near(events[0], t)) << r.output;
+		size_t scan = 0;
+		std::array<double, 3> t{};
+		ASSERT_NO_FATAL_FAILURE(expectFoundOnceRight(out, p + ".gt.txt", r.output, scan, t));
 		// Measured: scan 16 at (8.0, 3.1) inside room B; scan 49 at the door.
 		if (seeThrough == "true")
 			EXPECT_GT(t[1], 1.0) << "found only at the door: " << r.output;
 		else
 			EXPECT_LT(t[1], 1.0) << "found inside: " << r.output;
-		foundAt.push_back(events[0].scan);
+		foundAt.push_back(scan);
 	}
 	ASSERT_EQ(foundAt.size(), 2u);
 	EXPECT_LT(foundAt[0] + 20, foundAt[1]);
