@@ -110,21 +110,22 @@ GlobalMapSearch::Result GlobalMapSearch::search(const mrpt::obs::CObservation2DR
 		[&](const mrpt::poses::CPose2D& p) {
 			return posesWithin(p, r.best, m_options.distinctXY, m_options.distinctYaw);
 		});
+	std::vector<CorrelationTables::Candidate> places;  // the rival, then the contenders
 	for (const auto& c : others)
 	{
-		if (r.contenders.size() > m_options.maxContenders) break;
+		if (places.size() > m_options.maxContenders) break;
 		bool distinct = true;
-		for (const auto& k : r.contenders)
+		for (const auto& k : places)
 			distinct = distinct && !posesWithin(c.pose, k.pose, m_options.distinctXY, m_options.distinctYaw);
 		if (!distinct) continue;
-		r.contenders.push_back(c);
-		r.contenders.back().pose.normalizePhi();
+		places.push_back(c);
+		places.back().pose.normalizePhi();
 	}
-	if (!r.contenders.empty())
+	if (!places.empty())
 	{
-		r.rival = r.contenders.front().pose;
-		r.rivalScore = r.contenders.front().score;
-		r.contenders.erase(r.contenders.begin());
+		r.rival = places.front().pose;
+		r.rivalScore = places.front().score;
+		r.contenders.assign(places.begin() + 1, places.end());
 	}
 	r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	return r;
