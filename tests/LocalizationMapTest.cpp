@@ -10,6 +10,7 @@
 #include "featloc/localization/LocalizationMapFile.h"
 #include "featloc/sim/RayCaster.h"
 #include "featloc/sim/SimWorld.h"
+#include "support/SyntheticRoom.h"
 
 using namespace featloc;
 
@@ -87,19 +88,10 @@ TEST(LocalizationMap, BeamsThatPassThroughTheMapAreCounted)
 	LocalizationOptions o;
 	o.map = std::string(FEATLOC_SOURCE_DIR) + "/tests/data/worlds/twin-rooms-desk.ini";
 	const LocalizationMap map = LocalizationMapFile::load(o);
-	mrpt::config::CConfigFile cfg(o.map);
-	const SimWorld world = SimWorld::fromConfig(cfg);
 	// The scan of room B (no desk), facing north from its middle.
 	const mrpt::poses::CPose2D inB(8, 2, M_PI / 2);
-	auto scan = sickLike();
-	std::vector<double> exact;
-	RayCaster::cast((inB + mrpt::poses::CPose2D(0.2, 0, 0)).asTPose(), -M_PI / 2, M_PI / 360, 361,
-		30, world.segments(), world.circles(), exact);
-	for (size_t i = 0; i < exact.size(); i++)
-	{
-		scan.setScanRange(i, std::isfinite(exact[i]) ? static_cast<float>(exact[i]) : 30.f);
-		scan.setScanRangeValidity(i, std::isfinite(exact[i]));
-	}
+	const auto scan = *featloc::test::SyntheticRoom::fromWorldFile(o.map, 0).scan(
+		inB, mrpt::poses::CPose2D(0.2, 0, 0));
 	EXPECT_EQ(map.shareSeenThrough(scan, inB), 0.0);
 	// Room A is room B moved 6 m west, with a desk 1.2 m in front of the
 	// robot (1 m wide): the beams that end on A's north wall pass through
