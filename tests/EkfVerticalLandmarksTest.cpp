@@ -59,6 +59,24 @@ VerticalLandmarkObservation startable(
 	z.startCovariance = Eigen::Vector2d(1, 0) * Eigen::Vector2d(1, 0).transpose() * sigmaAlong * sigmaAlong;
 	return z;
 }
+
+/** featloc's wall observation of the wall y = 4 (x from -3 to 3) from
+ * robot X, exact, in the plane frame the Monte-Carlo's plane errors use:
+ * origin at the robot, s along robot y, w along robot x (J = [1 s] moves a
+ * point's robot x). */
+StereoWallObservation wallSeen(const Eigen::Vector3d& X, const Eigen::Matrix2d& cov, size_t wall = 0)
+{
+	StereoWallObservation w;
+	w.wall = wall;
+	w.mapA = {-3, 4};
+	w.mapB = {3, 4};
+	w.origin = Eigen::Vector2d::Zero();
+	w.e = Eigen::Vector2d::UnitY();
+	w.n = Eigen::Vector2d::UnitX();
+	w.line = w.predict(X);
+	w.covariance = cov;
+	return w;
+}
 }  // namespace
 
 TEST(EkfVerticalLandmarks, ConstraintJacobiansMatchFiniteDifferences)
@@ -153,6 +171,119 @@ TEST(EkfVerticalLandmarks, UpdateEqualsDenseEkfWithNumericJacobians)
 	EXPECT_LT((f.state() - x1).cwiseAbs().maxCoeff(), 1e-9);
 	EXPECT_LT((f.covariance() - P1).cwiseAbs().maxCoeff(), 1e-9);
 	EXPECT_NEAR(u.jointMahalanobis2, G(x0).dot(S.ldlt().solve(G(x0))), 1e-6);
+}
+
+TEST(EkfVerticalLandmarks, WallPredictionJacobianMatchesFiniteDifferences)
+{
+	StereoWallObservation w;
+	w.mapA = {-1.0, 3.5};
+	w.mapB = {2.5, 4.2};
+	w.origin = {0.1, 0.3};
+	w.e = Eigen::Vector2d(0.2, -1).normalized();
+	w.n = {-w.e.y(), w.e.x()};
+	for (const Eigen::Vector3d& X : {Eigen::Vector3d(0.4, -0.3, 1.4), Eigen::Vector3d(-0.2, 0.5, 1.9)})
+	{
+		Eigen::Matrix<double, 2, 3> H;
+		const Eigen::Vector2d h = w.predict(X, &H);
+		for (int k = 0; k < 3; k++)
+		{
+			Eigen::Vector3d a = X, b = X;
+			a[k] += 1e-6;
+			b[k] -= 1e-6;
+			EXPECT_LT(((w.predict(a) - w.predict(b)) / 2e-6 - H.col(k)).norm(), 1e-7) << k;
+		}
+		// The map's wall in the plane frame: its ends satisfy w = a + b s.
+		for (const auto& p : {w.mapA, w.mapB})
+		{
+			const double c = std::cos(X.z()), s = std::sin(X.z());
+			const Eigen::Vector2d d = p - X.head<2>();
+			const Eigen::Vector2d pr(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
+			EXPECT_NEAR(w.n.dot(pr - w.origin), h.x() + h.y() * w.e.dot(pr - w.origin), 1e-12);
+		}
+	}
+}
+
+// A wall and the landmarks on it in one update: the filter's result equals
+// the dense EKF whose R carries the wall fit's share of each landmark
+// observation (Cov(position_i, fit) = J_i Sigma_ab).
+TEST(EkfVerticalLandmarks, AWallAndItsLandmarksEqualTheDenseEkfWithTheirSharedFit)
+{
+	EkfLocalizer f;
+	f.reset(gaussian(CPose2D(0, 0, 0.1), 0.04, 0.003));
+	const Eigen::Vector4d l1(1.0, 4.0, 0.1, 1.8);
+	f.updateVerticalLandmarks({startable({0, 0, 0.1}, l1, 0.03)});
+	f.predict(gaussian(CPose2D(0.5, 0.1, 0.05), 0.01, 0.001));
+	const Eigen::VectorXd x0 = f.state();
+	const Eigen::MatrixXd P0 = f.covariance();
+	const Eigen::Vector3d truth(0.52, 0.1, 0.16);
+	const Eigen::Matrix2d planeCov = Eigen::Vector2d(2e-4, 4e-5).asDiagonal();
+	auto z = seen(truth, l1, 0.03, 0.02);
+	z.planeJacobian << 0.9, 0.4, 0.1, -0.2;
+	z.planeCovariance = planeCov;
+	z.covariance += z.planeJacobian * planeCov * z.planeJacobian.transpose();
+	auto w = wallSeen(truth, planeCov);
+	w.line += Eigen::Vector2d(0.01, -0.005);
+	const auto u = f.updateVerticalLandmarks({z}, {w});
+	ASSERT_EQ(u.used, 1u);
+	ASSERT_EQ(u.wallsUsed, 1u);
+	EXPECT_EQ(u.wallsObserved, 1u);
+
+	const Eigen::Index n = x0.size();
+	// Stacked as the filter's nu = -G: landmark rows G = h - z, wall rows h - z.
+	auto G = [&](const Eigen::VectorXd& s) {
+		Eigen::VectorXd out(6);
+		out << VerticalLandmarkConstraint(z).evaluate(s.head<3>(), s.segment<4>(f.landmarkIndex(0))),
+			w.predict(s.head<3>()) - w.line;
+		return out;
+	};
+	Eigen::MatrixXd H(6, n);
+	for (Eigen::Index k = 0; k < n; k++)
+	{
+		Eigen::VectorXd a = x0, b = x0;
+		a[k] += 1e-6;
+		b[k] -= 1e-6;
+		H.col(k) = (G(a) - G(b)) / 2e-6;
+	}
+	Eigen::MatrixXd R = Eigen::MatrixXd::Zero(6, 6);
+	R.block(0, 0, 4, 4) = VerticalLandmarkConstraint(z).noise();
+	R.block(4, 4, 2, 2) = planeCov;
+	R.block(0, 4, 2, 2) = z.planeJacobian * planeCov;
+	R.block(4, 0, 2, 2) = R.block(0, 4, 2, 2).transpose();
+	const Eigen::MatrixXd S = H * P0 * H.transpose() + R;
+	const Eigen::MatrixXd K = P0 * H.transpose() * S.inverse();
+	const Eigen::VectorXd x1 = x0 - K * G(x0);
+	const Eigen::MatrixXd P1 = (Eigen::MatrixXd::Identity(n, n) - K * H) * P0;
+	EXPECT_LT((f.state() - x1).cwiseAbs().maxCoeff(), 1e-9);
+	EXPECT_LT((f.covariance() - P1).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+// A wall observation tells the robot's distance to the wall and its heading
+// to it, not where along the wall it is; one that disagrees with the map
+// beyond its gate is not used.
+TEST(EkfVerticalLandmarks, AWallObservesDistanceAndHeadingNotPositionAlongIt)
+{
+	EkfLocalizer f;
+	const Eigen::Vector3d truth(0, 0, M_PI / 2);  // facing the wall y = 4
+	f.reset(gaussian(CPose2D(0.05, -0.05, M_PI / 2 + 0.03), 0.01, 0.001));
+	const Eigen::Matrix2d cov = Eigen::Vector2d(1e-6, 1e-7).asDiagonal();
+	const auto u = f.updateVerticalLandmarks({}, {wallSeen(truth, cov)});
+	EXPECT_EQ(u.wallsUsed, 1u);
+	const auto r = f.robotPose();
+	EXPECT_NEAR(r.mean.y(), 0, 0.003);
+	EXPECT_NEAR(r.mean.phi(), M_PI / 2, 0.001);
+	EXPECT_NEAR(r.mean.x(), 0.05, 0.005);  // along the wall: the prior's
+	EXPECT_LT(r.cov(1, 1), 1.1e-6);	 // the wall's 1 mm
+	EXPECT_NEAR(r.cov(0, 0), 0.01, 0.002);
+
+	// 10 cm nearer the wall than the map says, 1 mm sigma: rejected.
+	EkfLocalizer g;
+	g.reset(gaussian(CPose2D(0, 0, M_PI / 2), 1e-6, 1e-8));
+	auto off = wallSeen(truth, cov);
+	off.line.x() -= 0.1;
+	const auto v = g.updateVerticalLandmarks({}, {off});
+	EXPECT_EQ(v.wallsUsed, 0u);
+	EXPECT_EQ(v.wallsRejected, 1u);
+	EXPECT_EQ(g.robotPose().mean.y(), 0.0);
 }
 
 TEST(EkfVerticalLandmarks, StartsOnTheWallUncorrelatedWithTheRobotAndConstrainsIt)
@@ -353,7 +484,7 @@ namespace
  * share their plane fit's error (eq. 11), each declared to the filter
  * (startSharedCovariance, planeJacobian/planeCovariance); `declared`
  * false draws the same errors but declares them as independent. */
-double monteCarloNees(bool shared, bool declared)
+double monteCarloNees(bool shared, bool declared, bool wall = false)
 {
 	// Its own generator: MRPT's global one carries state (a cached Gaussian
 	// draw) from earlier tests in the process past randomize(), which made
@@ -373,6 +504,7 @@ double monteCarloNees(bool shared, bool declared)
 		EkfLocalizer f;
 		Eigen::Vector3d X(0, 0, M_PI / 2);	// true pose; the filter starts exact
 		f.reset(gaussian(CPose2D(X.x(), X.y(), X.z()), 1e-8, 1e-10));
+		std::vector<StereoWallObservation> walls;
 		auto observe = [&](bool start) {
 			std::vector<VerticalLandmarkObservation> z;
 			const Eigen::Vector2d planeErr(rng.drawGaussian1D(0, sPlaneA), rng.drawGaussian1D(0, sPlaneB));
@@ -407,6 +539,13 @@ double monteCarloNees(bool shared, bool declared)
 				}
 				z.push_back(o);
 			}
+			// The wall's own fit: the same error the observations share.
+			walls.clear();
+			if (wall)
+			{
+				walls.push_back(wallSeen(X, planeCov));
+				walls.back().line += planeErr;
+			}
 			return z;
 		};
 		f.updateVerticalLandmarks(observe(true));
@@ -421,7 +560,8 @@ double monteCarloNees(bool shared, bool declared)
 			const CPose2D next = CPose2D(X.x(), X.y(), X.z()) + CPose2D(noisy.x(), noisy.y(), noisy.z());
 			X = {next.x(), next.y(), next.phi()};
 			f.predict(gaussian(CPose2D(u.x(), u.y(), u.z()), sOdo * sOdo, sYaw * sYaw));
-			f.updateVerticalLandmarks(observe(false));
+			const auto z = observe(false);
+			f.updateVerticalLandmarks(z, walls);
 		}
 		const auto r = f.robotPose();
 		Eigen::Vector3d e(r.mean.x() - X.x(), r.mean.y() - X.y(), mrpt::math::wrapToPi(r.mean.phi() - X.z()));
@@ -456,4 +596,16 @@ TEST(EkfVerticalLandmarks, MonteCarloNeesIsConsistentWithSharedBoundaryAndPlaneE
 	EXPECT_GT(nees, lo);
 	EXPECT_LT(nees, hi);
 	EXPECT_GT(monteCarloNees(true, false), hi);
+}
+
+// With the wall's own fit observed too (featloc's wall observations): still
+// consistent when its error is declared shared with the observations
+// constrained to it, overconfident when it is not.
+TEST(EkfVerticalLandmarks, MonteCarloNeesIsConsistentWithTheWallFitObservedToo)
+{
+	const auto [lo, hi] = neesBand(200);
+	const double nees = monteCarloNees(true, true, true);
+	EXPECT_GT(nees, lo);
+	EXPECT_LT(nees, hi);
+	EXPECT_GT(monteCarloNees(true, false, true), hi);
 }

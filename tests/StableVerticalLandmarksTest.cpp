@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <set>
 
 #include "featloc/registerClasses.h"
 #include "featloc/sim/SimConfiguration.h"
@@ -206,6 +207,49 @@ TEST(StableVerticalLandmarks, ReferencePlanesAreFittedWhereTheyAre)
 		fitted++;
 	}
 	EXPECT_EQ(fitted, 2u);
+}
+
+// featloc's wall observations: the walls the camera sees face on become
+// observations of the pose, each fit within 3 sigma of the map's wall seen
+// from the true pose; the room's side walls, at a grazing angle at the
+// image's edges, do not.
+TEST(StableVerticalLandmarks, WallsSeenFaceOnAreObservationsOfThePose)
+{
+	const mrpt::poses::CPose2D pose(0, 0, M_PI / 2);
+	const auto s = look(pose);
+	const auto x = extractor();
+	const Eigen::Vector3d X(pose.x(), pose.y(), pose.phi());
+	std::set<std::string> observed;
+	for (const auto& w : s.out.walls)
+	{
+		const auto& name = x.walls[w.wall].name;
+		observed.insert(name);
+		const Eigen::Vector2d r = w.line - w.predict(X);
+		EXPECT_LT(r.dot(w.covariance.ldlt().solve(r)), 11.8) << name;  // chi2(2), 3 sigma
+		EXPECT_GE(w.viewAngle, 45 * M_PI / 180) << name;
+	}
+	EXPECT_TRUE(observed.count("Wall.partition#0"));
+	EXPECT_TRUE(observed.count("Wall.whiteboard#0"));
+	for (const auto& pl : s.out.planes)
+	{
+		const auto& name = x.walls[pl.wall].name;
+		if (!pl.fitted || observed.count(name)) continue;
+		// Fitted but not observed: one of the rules says why.
+		EXPECT_TRUE(pl.visibleColumns < StableVerticalLandmarks::kMinWallColumns ||
+			pl.visiblePixels < 0.9 * pl.pixels || pl.viewAngle < 45 * M_PI / 180)
+			<< name << ": " << pl.visibleColumns << " columns, " << pl.visiblePixels << " of " << pl.pixels
+			<< " pixels, " << pl.viewAngle * 180 / M_PI << " deg";
+	}
+	// The room's side walls (x = +-3.5 m) are seen only near the image's
+	// edges, at 23-33 deg.
+	EXPECT_FALSE(observed.count("Wall.room#1"));
+	EXPECT_FALSE(observed.count("Wall.room#3"));
+
+	// Off: none.
+	auto off = extractor();
+	off.options.wall_observations = false;
+	EXPECT_TRUE(off.process(s.frame.left, s.frame.right, moonLab().stereo.head(), robotAt(pose, 0.02, 0.5))
+					.walls.empty());
 }
 
 TEST(StableVerticalLandmarks, PlaneConstraintIsTheExactLinearGaussianPosterior)

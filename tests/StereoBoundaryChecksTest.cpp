@@ -142,3 +142,47 @@ TEST(StereoBoundaryChecks, NearerWallsHideWhatIsBehindThem)
 	const auto all = px.extract(walls[0], 0, head, Eigen::Vector3d::Zero(), S, disparity);
 	EXPECT_EQ(all.mask.at<uchar>(240, 320), 255);  // without the map's occlusion
 }
+
+// A recess's side face seen from outside the recess: the map's nearer wall
+// hides it from the predicted pose, but the 3-sigma window around the
+// corner still gives it pixels (those of the wall in front). None lies in
+// a column where the face itself is visible: it must not become an
+// observation of the pose (it put the robot 16 cm off along the stereo
+// corridor).
+TEST(StereoBoundaryChecks, AFaceHiddenFromThePredictedPoseHasNoVisibleColumns)
+{
+	StereoHead head;
+	head.width = 640;
+	head.height = 480;
+	head.fx = head.fy = 500;
+	head.cx = 319.5;
+	head.cy = 239.5;
+	head.baseline = 0.12;
+	head.camZ = 1.0;
+	// The robot at the origin looks along +x; the corridor's wall is at
+	// x = 1.2 up to y = 0.5, where a recess goes 0.6 m deeper.
+	const std::vector<MapWall> walls = {{{1.2, -3}, {1.2, 0.5}, "wall"}, {{1.2, 0.5}, {1.8, 0.5}, "side"},
+		{{1.8, 0.5}, {1.8, 3}, "back"}};
+	const PlanarRegionExtractor px;
+	const Eigen::Vector3d X = Eigen::Vector3d::Zero();
+	const auto depth = px.nearestWallDepth(walls, head, X);
+	// The disparity image of what is there, from the true pose (= the prediction).
+	cv::Mat disparity(480, 640, CV_32F);
+	for (int u = 0; u < 640; u++) disparity.col(u).setTo(head.fx * head.baseline / depth[static_cast<size_t>(u)]);
+	// A wide prior (8 cm, 1 deg): the windows reach past the corner.
+	const Eigen::Matrix3d S = Eigen::Vector3d(0.08 * 0.08, 0.08 * 0.08, std::pow(M_PI / 180, 2)).asDiagonal();
+	const auto side = px.extract(walls[1], 1, head, X, S, disparity, &depth);
+	EXPECT_LE(side.visibleColumns, 1u);	 // the corner's own column at most
+	EXPECT_GT(side.pixels, 480u);  // the wall in front's, in the window past the corner
+	const auto wall = px.extract(walls[0], 0, head, X, S, disparity, &depth);
+	ASSERT_TRUE(wall.fitted) << wall.reason;
+	EXPECT_GT(wall.visibleColumns, 200u);
+	// The wall's observation is fitted to its visible columns alone: the
+	// wall is where the map puts it (exact disparities).
+	EXPECT_NEAR(wall.visibleLine.x(), 0, 0.002);
+	EXPECT_NEAR(wall.visibleLine.y(), 0, 0.002);
+	EXPECT_GT(wall.viewAngle, 45 * M_PI / 180);	 // seen face on, +-33 deg of the optical axis
+	const auto back = px.extract(walls[2], 2, head, X, S, disparity, &depth);
+	ASSERT_TRUE(back.fitted) << back.reason;
+	EXPECT_GT(back.visibleColumns, 100u);
+}

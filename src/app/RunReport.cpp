@@ -106,6 +106,9 @@ void RunReport::printSummary(const RunStats& s)
 			"%zu observations used; %.1f ms per pair (median)\n",
 			s.stereoFrames, s.stereoObservations, s.stereoSelected, s.stereoLandmarksStarted, s.stereoUpdates,
 			st.median * 1e3);
+		if (s.stereoWallsObserved)
+			std::printf("    %zu walls fitted: %zu used as observations of the pose, %zu failed their gate\n",
+				s.stereoWallsObserved, s.stereoWallsUsed, s.stereoWallsRejected);
 		if (s.stereoFramesWithoutWall)
 			std::printf("    %zu pairs saw no wall of the map '%s'\n", s.stereoFramesWithoutWall, s.stereoMap.c_str());
 	}

@@ -37,9 +37,21 @@ double EkfLocalizer::verticalDistance2(const Belief& b, const VerticalLandmarkOb
 	return nu.dot(S.ldlt().solve(nu));
 }
 
+double EkfLocalizer::wallDistance2(
+	const Belief& b, const StereoWallObservation& w, Eigen::Vector2d* nu, Eigen::Matrix<double, 2, 3>* H) const
+{
+	Eigen::Matrix<double, 2, 3> Hw;
+	const Eigen::Vector2d r = w.line - w.predict(b.x.segment<3>(kRobot), &Hw);
+	const Eigen::Matrix2d S = Hw * b.P.block<3, 3>(kRobot, kRobot) * Hw.transpose() + w.covariance;
+	if (nu) *nu = r;
+	if (H) *H = Hw;
+	return r.dot(S.ldlt().solve(r));
+}
+
 EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(const Belief& b,
 	const std::vector<VerticalLandmarkObservation>& obs, const std::vector<int>& pairing,
-	const std::vector<std::pair<double, size_t>>& paired) const
+	const std::vector<std::pair<double, size_t>>& paired,
+	const std::vector<const StereoWallObservation*>& wallsUsed) const
 {
 	// An observed end enters the update only where it agrees with the
 	// landmark's (1 dof gate): a shorter piece of the line moves neither.
@@ -62,6 +74,7 @@ EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(const Belief& b,
 	// Stacked constraint on [robot; landmarks used]: nu = -G, H = dG/dS.
 	VerticalStack st;
 	st.cols = {kRobot, kRobot + 1, kRobot + 2};
+	m += 2 * static_cast<Eigen::Index>(wallsUsed.size());
 	st.H = Eigen::MatrixXd::Zero(m, 3 + 4 * static_cast<Eigen::Index>(paired.size()));
 	st.nu.resize(m);
 	st.R = Eigen::MatrixXd::Zero(m, m);
@@ -95,11 +108,38 @@ EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(const Belief& b,
 		row += r;
 		col += 4;
 	}
+	// The walls: nu = z - h(X), H = dh/dX on the robot. The observations
+	// on a wall were constrained to its fit over all its pixels (3.1):
+	// position_i's error is planeJacobian_i times that fit's. The wall's
+	// own fit uses a subset of the same pixels (its visible columns), and a
+	// least-squares fit's covariance with a fit to a subset of its data is
+	// its own: Cov(position_i, wall fit) = planeJacobian_i planeCovariance.
+	for (const StereoWallObservation* w : wallsUsed)
+	{
+		Eigen::Vector2d nu;
+		Eigen::Matrix<double, 2, 3> Hw;
+		wallDistance2(b, *w, &nu, &Hw);
+		st.nu.segment<2>(row) = nu;
+		st.H.block<2, 3>(row, 0) = Hw;
+		st.R.block<2, 2>(row, row) = w->covariance;
+		Eigen::Index rowA = 0;
+		for (const auto& z : used)
+		{
+			if (z.wall == w->wall)
+			{
+				const Eigen::Matrix2d C = z.planeJacobian * z.planeCovariance;
+				st.R.block<2, 2>(rowA, row) = C;
+				st.R.block<2, 2>(row, rowA) = C.transpose();
+			}
+			rowA += VerticalLandmarkConstraint(z).size();
+		}
+		row += 2;
+	}
 	return st;
 }
 
 EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
-	const std::vector<VerticalLandmarkObservation>& obs)
+	const std::vector<VerticalLandmarkObservation>& obs, const std::vector<StereoWallObservation>& walls)
 {
 	m_verticalFrames++;
 	pruneLandmarks(true);
@@ -154,30 +194,49 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 	std::sort(paired.begin(), paired.end());
 	if (paired.size() > options.stereo_landmarks_per_frame) paired.resize(options.stereo_landmarks_per_frame);
 
-	// The pairs used must be jointly compatible (chi-square, all their
-	// rows): while they are not, the pair farthest from its prediction
-	// is dropped. Individually plausible pairs can still share one wrong
-	// cause (a landmark started from a misplaced boundary).
-	VerticalStack joint;  // of the pairs left: the update's terms
-	while (!paired.empty())
+	// Each fitted wall against the map, alone (2 dof).
+	out.wallsObserved = walls.size();
+	std::vector<const StereoWallObservation*> wallsUsed;
+	for (const auto& w : walls)
 	{
-		joint = stackVertical(b, obs, pairing, paired);
+		if (wallDistance2(b, w) <= gate2)
+			wallsUsed.push_back(&w);
+		else
+			out.wallsRejected++;
+	}
+
+	// The pairs and walls used must be jointly compatible (chi-square, all
+	// their rows): while they are not, the one farthest from its
+	// prediction is dropped. Individually plausible pairs can still share
+	// one wrong cause (a landmark started from a misplaced boundary).
+	VerticalStack joint;  // of the pairs left: the update's terms
+	while (!paired.empty() || !wallsUsed.empty())
+	{
+		joint = stackVertical(b, obs, pairing, paired, wallsUsed);
 		const double limit = mrpt::math::chi2inv(p, static_cast<unsigned>(joint.nu.size()));
 		const double d2 = joint.nu.dot(
 			(joint.H * b.P(joint.cols, joint.cols) * joint.H.transpose() + joint.R).ldlt().solve(joint.nu));
 		if (d2 <= limit) break;
 		size_t worst = 0;
 		double worstD2 = -1;
-		for (size_t a = 0; a < paired.size(); a++)
+		for (size_t a = 0; a < paired.size() + wallsUsed.size(); a++)
 		{
-			const double da = verticalDistance2(b, obs[paired[a].second], static_cast<size_t>(pairing[paired[a].second]));
+			const double da = a < paired.size()
+				? verticalDistance2(b, obs[paired[a].second], static_cast<size_t>(pairing[paired[a].second]))
+				: wallDistance2(b, *wallsUsed[a - paired.size()]);
 			if (da > worstD2) worstD2 = da, worst = a;
 		}
-		pairing[paired[worst].second] = -1;
-		paired.erase(paired.begin() + static_cast<long>(worst));
-		out.inconsistent++;
+		if (worst < paired.size())
+		{
+			pairing[paired[worst].second] = -1;
+			paired.erase(paired.begin() + static_cast<long>(worst));
+			out.inconsistent++;
+		}
+		else
+			wallsUsed.erase(wallsUsed.begin() + static_cast<long>(worst - paired.size()));
 	}
-	if (!paired.empty())
+	out.wallsUsed = wallsUsed.size();
+	if (!paired.empty() || !wallsUsed.empty())
 	{
 		out.jointMahalanobis2 = updateAtBelief(b, joint.cols, joint.H, joint.nu, joint.R);
 		for (const auto& pr : paired)

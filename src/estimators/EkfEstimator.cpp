@@ -99,7 +99,7 @@ void EkfEstimator::processStereo(const EstimationStep& step)
 	auto r = std::make_shared<StereoStepResult>();
 	r->frame = m_stereo->process(
 		step.stereoImages->left, step.stereoImages->right, head, m_filter.robotPose());
-	r->update = m_filter.updateVerticalLandmarks(r->frame.observations);
+	r->update = m_filter.updateVerticalLandmarks(r->frame.observations, r->frame.walls);
 	r->map = m_stereo->mapFile();
 	m_lastStereo = std::move(r);
 }

@@ -43,6 +43,9 @@ void countStereo(const StereoStepResult& r, RunStats& s)
 	for (const auto& f : r.frame.features) s.stereoSelected += f.selected ? 1 : 0;
 	s.stereoLandmarksStarted += r.update.added;
 	s.stereoUpdates += r.update.used;
+	s.stereoWallsObserved += r.update.wallsObserved;
+	s.stereoWallsUsed += r.update.wallsUsed;
+	s.stereoWallsRejected += r.update.wallsRejected;
 	s.stereoTimes.push_back(r.frame.seconds);
 }
 

@@ -15,6 +15,9 @@ constexpr double kChi2TwoDof3Sigma = 11.83;
 /** A wall is hidden where another is nearer by more than this fraction of
  * the depth plus this many metres. */
 constexpr double kOcclusionMargin = 0.05;
+/** [m] A wall is visible in a column from the predicted pose when no other
+ * wall meets the ray more than this before it. */
+constexpr double kVisibleTolerance = 0.01;
 }  // namespace
 
 namespace
@@ -120,9 +123,8 @@ PlanarRegion PlanarRegionExtractor::extract(
 
 	r.mask = cv::Mat::zeros(disparity.size(), CV_8U);
 	const double s2nu = 2 * s2img;	// eq. (7)
-	Eigen::Matrix2d N = Eigen::Matrix2d::Zero();
-	Eigen::Vector2d rhs = Eigen::Vector2d::Zero();
 	std::vector<double> ws, ss, vars;
+	std::vector<char> inVisibleColumn;
 	// Occlusion by nearer walls, kept only where it holds across the
 	// column's 3-sigma window (the nearest depth's maximum over it).
 	std::vector<double> hidden;
@@ -150,6 +152,14 @@ PlanarRegion PlanarRegionExtractor::extract(
 			occludedColumns++;
 			continue;
 		}
+		const double t = (c - ca).dot(cb - ca) / (cb - ca).squaredNorm();
+		const bool visible = nearest && static_cast<int>(nearest->size()) == disparity.cols && t >= 0 && t <= 1 &&
+			c.y() <= (*nearest)[static_cast<size_t>(u)] + kVisibleTolerance;
+		if (visible)
+		{
+			r.visibleColumns++;
+			r.viewAngle += std::asin(std::min(1.0, std::abs(c.normalized().x() * r.fit.e.y() - c.normalized().y() * r.fit.e.x())));
+		}
 		double sigmaD = 0;
 		const double dPred = predictedDisparity(head, X, SigmaX, c, s2nu, sigmaD);
 		for (int v = 0; v < disparity.rows; v++)
@@ -166,37 +176,57 @@ PlanarRegion PlanarRegionExtractor::extract(
 			// favour pixels whose noise brought them nearer.
 			const double dn = r.fit.n.dot(-c / dPred);
 			const double var = dn * dn * s2nu;
-			const double wgt = 1.0 / var;
-			N(0, 0) += wgt;
-			N(0, 1) += wgt * sw_.x();
-			N(1, 1) += wgt * sw_.x() * sw_.x();
-			rhs += wgt * Eigen::Vector2d(sw_.y(), sw_.y() * sw_.x());
+			if (visible) r.visiblePixels++;
+			inVisibleColumn.push_back(visible ? 1 : 0);
 			ss.push_back(sw_.x());
 			ws.push_back(sw_.y());
 			vars.push_back(var);
 			r.pixels++;
 		}
 	}
+	if (r.visibleColumns > 0) r.viewAngle /= static_cast<double>(r.visibleColumns);
 	if (r.pixels < options.min_pixels)
 	{
 		r.reason = "too few disparity pixels on it (" + std::to_string(r.pixels) + ")";
 		if (occludedColumns > 0) r.reason += ", " + std::to_string(occludedColumns) + " columns hidden by nearer walls";
 		return r;
 	}
-	N(1, 0) = N(0, 1);
-	const Eigen::Matrix2d Ninv = N.inverse();
-	r.fit.line = Ninv * rhs;
-	double chi2 = 0, sum2 = 0;
-	for (size_t i = 0; i < ws.size(); i++)
-	{
-		const double res = ws[i] - r.fit.line.x() - r.fit.line.y() * ss[i];
-		chi2 += res * res / vars[i];
-		sum2 += res * res;
-	}
-	const double dof = static_cast<double>(ws.size()) - 2;
-	r.rms = std::sqrt(sum2 / static_cast<double>(ws.size()));
-	r.fit.lineCovariance =
-		Ninv * std::max(1.0, chi2 / dof) * static_cast<double>(options.block_size * options.block_size);
+	// Eq. (11), weighted least squares of w = a + b s over the pixels
+	// `use` keeps; the covariance scaled by the residuals' chi2 per degree
+	// of freedom (at least 1) and by the block's pixels, which one SAD
+	// window makes dependent. Returns the weighted RMS.
+	const auto fitLine = [&](bool visibleOnly, Eigen::Vector2d& line, Eigen::Matrix2d& cov) {
+		Eigen::Matrix2d N = Eigen::Matrix2d::Zero();
+		Eigen::Vector2d rhs = Eigen::Vector2d::Zero();
+		size_t n = 0;
+		for (size_t i = 0; i < ws.size(); i++)
+		{
+			if (visibleOnly && !inVisibleColumn[i]) continue;
+			const double wgt = 1.0 / vars[i];
+			N(0, 0) += wgt;
+			N(0, 1) += wgt * ss[i];
+			N(1, 1) += wgt * ss[i] * ss[i];
+			rhs += wgt * Eigen::Vector2d(ws[i], ws[i] * ss[i]);
+			n++;
+		}
+		N(1, 0) = N(0, 1);
+		const Eigen::Matrix2d Ninv = N.inverse();
+		line = Ninv * rhs;
+		double chi2 = 0, sum2 = 0;
+		for (size_t i = 0; i < ws.size(); i++)
+		{
+			if (visibleOnly && !inVisibleColumn[i]) continue;
+			const double res = ws[i] - line.x() - line.y() * ss[i];
+			chi2 += res * res / vars[i];
+			sum2 += res * res;
+		}
+		const double dof = static_cast<double>(n) - 2;
+		cov = Ninv * std::max(1.0, chi2 / dof) * static_cast<double>(options.block_size * options.block_size);
+		return std::sqrt(sum2 / static_cast<double>(n));
+	};
+	r.rms = fitLine(false, r.fit.line, r.fit.lineCovariance);
+	if (r.visiblePixels >= options.min_pixels)
+		fitLine(true, r.visibleLine, r.visibleLineCovariance);
 
 	// The pixels are the wall's only if the fitted line is where the map
 	// puts the wall, within the robot's uncertainty (featloc's check: the

@@ -10,6 +10,7 @@
 #include "featloc/ekf/EkfOptions.h"
 #include "featloc/ekf/EstimatedLandmark.h"
 #include "featloc/ekf/LandmarkObservation.h"
+#include "featloc/stereo/StereoWallObservation.h"
 #include "featloc/stereo/VerticalLandmarkObservation.h"
 
 namespace featloc
@@ -94,6 +95,12 @@ namespace featloc
  *   (section 4: "a subset of stable landmarks with less uncertainty"),
  *   after dropping, while the subset is not jointly compatible, the pair
  *   farthest from its prediction.
+ *   The frame's fitted walls (StereoWallObservation: the line each wall's
+ *   disparity pixels make, against the map's wall seen from the robot)
+ *   join the same update, each gated alone at landmark_gate_probability
+ *   (2 dof) and then with the landmarks' pairs jointly; a wall's fit and
+ *   the observations constrained to it share its error (their
+ *   cross-covariance J_i Sigma_ab enters R).
  *   Selected features outside the new-landmark gate of every landmark (this
  *   frame's new ones included) start one on-line, at
  *   their position relative to the map's edge (eq. 15) with its rank-1
@@ -163,12 +170,16 @@ class EkfLocalizer
 		size_t observed = 0, associated = 0, used = 0, added = 0;
 		size_t ambiguous = 0;  //!< compatible with a landmark, left unpaired
 		size_t inconsistent = 0;  //!< paired, dropped by the joint gate
+		/** Fitted walls: handed in, used, failed their own gate (the rest
+		 * of those not used were dropped by the joint gate). */
+		size_t wallsObserved = 0, wallsUsed = 0, wallsRejected = 0;
 		double jointMahalanobis2 = 0;  //!< of the innovations used
 		/** Per observation: the landmark it updated or started (index
 		 * after the update), or -1. */
 		std::vector<int> landmarkOf;
 	};
-	VerticalUpdate updateVerticalLandmarks(const std::vector<VerticalLandmarkObservation>& observations);
+	VerticalUpdate updateVerticalLandmarks(const std::vector<VerticalLandmarkObservation>& observations,
+		const std::vector<StereoWallObservation>& walls = {});
 
 	/** Posterior views: the held match included. */
 	mrpt::poses::CPosePDFGaussian robotPose() const;
@@ -275,8 +286,13 @@ class EkfLocalizer
 	/** Mahalanobis^2 of vertical observation z against landmark j (robot and
 	 * landmark blocks only), and the constraint's terms. */
 	double verticalDistance2(const Belief& b, const VerticalLandmarkObservation& z, size_t j) const;
+	/** Mahalanobis^2 of wall observation w against the map (robot block
+	 * only), and its terms: nu = z - h, H = dh/dX. */
+	double wallDistance2(const Belief& b, const StereoWallObservation& w, Eigen::Vector2d* nu = nullptr,
+		Eigen::Matrix<double, 2, 3>* H = nullptr) const;
 	/** The stacked eq. (20) constraint of the pairs `paired` (landmark
-	 * pairing[i] for observation i = paired[a].second). */
+	 * pairing[i] for observation i = paired[a].second), then the rows of
+	 * the walls `wallsUsed`. */
 	struct VerticalStack
 	{
 		std::vector<Eigen::Index> cols;
@@ -285,7 +301,8 @@ class EkfLocalizer
 	};
 	VerticalStack stackVertical(const Belief& b,
 		const std::vector<VerticalLandmarkObservation>& obs, const std::vector<int>& pairing,
-		const std::vector<std::pair<double, size_t>>& paired) const;
+		const std::vector<std::pair<double, size_t>>& paired,
+		const std::vector<const StereoWallObservation*>& wallsUsed = {}) const;
 	void removeLandmark(size_t j);
 	/** Removes the landmarks of that kind seen once and past their probation. */
 	void pruneLandmarks(bool vertical);

@@ -24,6 +24,21 @@ struct PlanarRegion
 	 * plane's (eqs. 9-10): 255, else 0. Full image size. */
 	cv::Mat mask;
 	size_t pixels = 0;
+	/** Columns searched where, from the predicted pose itself, the ray
+	 * meets this wall between its ends with no other wall of the map in
+	 * front of it (1 cm), and the disparity pixels found in them: a fit
+	 * whose pixels lie elsewhere (in the 3-sigma margin around a corner,
+	 * or on a wall just in front) is another surface's. */
+	size_t visibleColumns = 0, visiblePixels = 0;
+	/** Eq. (11) over the pixels of those columns alone (in the frame of
+	 * `fit`; set when there are min_pixels of them): what a wall
+	 * observation measures. The fit over every pixel is the features'
+	 * plane (3.1). */
+	Eigen::Vector2d visibleLine = Eigen::Vector2d::Zero();
+	Eigen::Matrix2d visibleLineCovariance = Eigen::Matrix2d::Zero();
+	/** [rad] Mean angle between the view ray and the wall over the
+	 * visible columns (pi/2: seen face on; near 0: at a grazing angle). */
+	double viewAngle = 0;
 	bool fitted = false;
 	std::string reason;	 //!< why not fitted
 	PlaneFit fit;

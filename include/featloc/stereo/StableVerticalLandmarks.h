@@ -74,6 +74,13 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 		 * EKF's observations (section 5). */
 		double sigma_end_px = 2;
 		double min_length_similarity = 0.7;	 //!< paper, section 4 (threshold not given)
+		/** Hand the EKF every fitted wall as an observation of the robot
+		 * pose (StereoWallObservation; featloc's addition: the paper uses
+		 * the fit only to constrain the features on it). */
+		bool wall_observations = true;
+		/** [deg] Least mean angle between the view rays and a wall for its
+		 * fit to be a wall observation. */
+		double wall_min_view_angle_deg = 45;
 	};
 	Options options;
 	std::vector<MapWall> walls;	 //!< loaded from options.map
@@ -102,6 +109,10 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 	 * kCoplanarDistance). */
 	bool collinear(size_t w, size_t k) const;
 	static constexpr double kCoplanarAngle = 2 * M_PI / 180, kCoplanarDistance = 0.05;
+	/** A fitted wall is a wall observation only when it is the nearest
+	 * wall, from the predicted pose, in this many columns
+	 * (PlanarRegion::visibleColumns) with min_plane_pixels in them. */
+	static constexpr size_t kMinWallColumns = 20;
 
 	/** The SAD disparity image of stage 2 alone (CV_32F, <= 0 invalid),
 	 * searching minDisparity .. minDisparity + numDisparities - 1 (0: the

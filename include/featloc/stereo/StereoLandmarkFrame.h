@@ -9,6 +9,7 @@
 #include "featloc/stereo/ModelledFeature.h"
 #include "featloc/stereo/PlanarRegion.h"
 #include "featloc/stereo/SegmentMatch.h"
+#include "featloc/stereo/StereoWallObservation.h"
 #include "featloc/stereo/VerticalSegment.h"
 
 namespace featloc
@@ -40,6 +41,10 @@ struct StereoLandmarkFrame
 	 * found or not: the EKF's observations (section 5); the selected
 	 * features among them may start landmarks. */
 	std::vector<VerticalLandmarkObservation> observations;
+	/** Every map wall whose plane was fitted (2.3), as an observation of
+	 * the robot pose against the map (featloc's addition, option
+	 * wall_observations); empty when that is off. */
+	std::vector<StereoWallObservation> walls;
 	double seconds = 0, disparitySeconds = 0;
 };
 }  // namespace featloc
