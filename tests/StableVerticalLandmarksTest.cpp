@@ -236,9 +236,10 @@ TEST(StableVerticalLandmarks, WallsSeenFaceOnAreObservationsOfThePose)
 		if (!pl.fitted || observed.count(name)) continue;
 		// Fitted but not observed: one of the rules says why.
 		EXPECT_TRUE(pl.visibleColumns < StableVerticalLandmarks::kMinWallColumns ||
-			pl.visiblePixels < 0.9 * pl.pixels || pl.viewAngle < 45 * M_PI / 180)
-			<< name << ": " << pl.visibleColumns << " columns, " << pl.visiblePixels << " of " << pl.pixels
-			<< " pixels, " << pl.viewAngle * 180 / M_PI << " deg";
+			pl.visiblePixels < x.options.min_plane_pixels || pl.viewAngle < 45 * M_PI / 180 ||
+			pl.bandPixels < StableVerticalLandmarks::kMinWallCoverage * pl.bandRows)
+			<< name << ": " << pl.visibleColumns << " columns, " << pl.visiblePixels << " pixels, "
+			<< pl.viewAngle * 180 / M_PI << " deg, " << pl.bandPixels << " of " << pl.bandRows;
 	}
 	// The room's side walls (x = +-3.5 m) are seen only near the image's
 	// edges, at 23-33 deg.

@@ -186,3 +186,41 @@ TEST(StereoBoundaryChecks, AFaceHiddenFromThePredictedPoseHasNoVisibleColumns)
 	ASSERT_TRUE(back.fitted) << back.reason;
 	EXPECT_GT(back.visibleColumns, 100u);
 }
+
+// A table's face (0.75 m high) seen from a camera 1.1 m up: its disparity
+// pixels are all below the camera's height, where the table's top is seen
+// too. Above the camera it has none, so it is no wall observation, while
+// a wall's pixels fill the band above the camera.
+TEST(StereoBoundaryChecks, ALowSurfaceHasNoPixelsAboveTheCamera)
+{
+	StereoHead head;
+	head.width = 640;
+	head.height = 480;
+	head.fx = head.fy = 500;
+	head.cx = 319.5;
+	head.cy = 239.5;
+	head.baseline = 0.12;
+	head.camZ = 1.1;
+	const std::vector<MapWall> walls = {{{1.5, -0.5}, {1.5, 0.5}, "table"}, {{4, -3}, {4, 3}, "wall"}};
+	const PlanarRegionExtractor px;
+	const Eigen::Vector3d X = Eigen::Vector3d::Zero();
+	const auto depth = px.nearestWallDepth(walls, head, X);
+	// The table's face up to 0.75 m, the wall 4 m away above it and beside it.
+	cv::Mat disparity(480, 640, CV_32F);
+	for (int u = 0; u < 640; u++)
+		for (int v = 0; v < 480; v++)
+		{
+			const double d = depth[static_cast<size_t>(u)];
+			const bool table = d < 2 && head.heightAt(v, d) <= 0.75;
+			disparity.at<float>(v, u) = static_cast<float>(head.fx * head.baseline / (table ? d : 4.0));
+		}
+	const Eigen::Matrix3d S = Eigen::Vector3d(1e-4, 1e-4, 1e-6).asDiagonal();
+	const auto table = px.extract(walls[0], 0, head, X, S, disparity, &depth);
+	EXPECT_GT(table.pixels, 0u) << table.reason;	 // below the camera
+	EXPECT_GT(table.visibleColumns, 200u);
+	EXPECT_EQ(table.visiblePixels, 0u);
+	EXPECT_EQ(table.bandPixels, 0u);
+	const auto wall = px.extract(walls[1], 1, head, X, S, disparity, &depth);
+	ASSERT_TRUE(wall.fitted) << wall.reason;
+	EXPECT_GT(wall.bandPixels, 0.9 * wall.bandRows);
+}

@@ -252,16 +252,24 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 	if (options.wall_observations)
 		for (const auto& pl : f.planes)
 		{
-			// Only a wall seen from the predicted pose itself, over enough
-			// columns, and fitted to the pixels of those columns alone: the
-			// 3-sigma margin around a corner holds the wall in front's (a
-			// recess's side face seen from outside it gave a fit 16 cm off
-			// along a corridor) or a coplanar neighbour's.
-			// Nor one seen at a grazing angle: the block matcher's window
-			// spans many disparities there and its fit is biased (moon-lab's
-			// side wall at 28-32 deg: 0.9 sigma the same way in all 9 frames;
-			// the walls seen at 60-78 deg: 0.1-0.4 sigma).
-			if (!pl.fitted || pl.visibleColumns < kMinWallColumns ||
+			// A fitted wall observes the pose only when
+			// - it is seen from the predicted pose itself in kMinWallColumns
+			//   columns, and is fitted to their pixels above the camera
+			//   alone (PlanarRegion::visibleLine): the 3-sigma margin around
+			//   a corner holds the wall in front's pixels (a recess's side
+			//   face seen from outside put the robot 16 cm off along the
+			//   stereo corridor), and below the camera a low surface's top;
+			// - it is seen at wall_min_view_angle_deg or more: at a grazing
+			//   angle the block matcher's window spans many disparities and
+			//   the fit is biased (moon-lab's side wall at 28-32 deg: 0.9
+			//   sigma the same way in all 9 frames; walls at 60-78 deg:
+			//   0.1-0.4 sigma);
+			// - its pixels fill half of the band just above the camera: a
+			//   low surface (a table) has only the block matcher's stray
+			//   matches there (lab, left camera: a third of the fits under
+			//   10% were 3 sigma off the truth, none over 50%).
+			const double coverage = static_cast<double>(pl.bandPixels) / std::max(1.0, pl.bandRows);
+			if (!pl.fitted || pl.visibleColumns < kMinWallColumns || coverage < kMinWallCoverage ||
 				pl.viewAngle < options.wall_min_view_angle_deg * M_PI / 180 ||
 				pl.visiblePixels < options.min_plane_pixels)
 				continue;
@@ -275,6 +283,7 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			z.line = pl.visibleLine;
 			z.covariance = pl.visibleLineCovariance;
 			z.viewAngle = pl.viewAngle;
+			z.coverage = coverage;
 			f.walls.push_back(z);
 		}
 

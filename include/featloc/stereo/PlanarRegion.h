@@ -26,11 +26,19 @@ struct PlanarRegion
 	size_t pixels = 0;
 	/** Columns searched where, from the predicted pose itself, the ray
 	 * meets this wall between its ends with no other wall of the map in
-	 * front of it (1 cm), and the disparity pixels found in them: a fit
-	 * whose pixels lie elsewhere (in the 3-sigma margin around a corner,
-	 * or on a wall just in front) is another surface's. */
+	 * front of it (1 cm), and the disparity pixels found in them higher
+	 * than the camera: pixels elsewhere may be another surface's (in the
+	 * 3-sigma margin around a corner, on a wall just in front), and below
+	 * the camera a low surface's top is seen too. */
 	size_t visibleColumns = 0, visiblePixels = 0;
-	/** Eq. (11) over the pixels of those columns alone (in the frame of
+	/** Of those, the pixels in the band from the camera's height to 0.3 m
+	 * above it, and the rows the band spans at the wall's depth summed over
+	 * the visible columns: a wall at least that tall fills most of them; a
+	 * low surface (a table) has none of its own there, only the block
+	 * matcher's stray matches. */
+	size_t bandPixels = 0;
+	double bandRows = 0;
+	/** Eq. (11) over those pixels alone (in the frame of
 	 * `fit`; set when there are min_pixels of them): what a wall
 	 * observation measures. The fit over every pixel is the features'
 	 * plane (3.1). */

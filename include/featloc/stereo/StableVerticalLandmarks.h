@@ -113,6 +113,9 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 	 * wall, from the predicted pose, in this many columns
 	 * (PlanarRegion::visibleColumns) with min_plane_pixels in them. */
 	static constexpr size_t kMinWallColumns = 20;
+	/** ... and when its pixels above the camera fill this share of the
+	 * rows a wall max_height tall would fill there (StereoWallObservation::coverage). */
+	static constexpr double kMinWallCoverage = 0.5;
 
 	/** The SAD disparity image of stage 2 alone (CV_32F, <= 0 invalid),
 	 * searching minDisparity .. minDisparity + numDisparities - 1 (0: the

@@ -29,6 +29,9 @@ struct StereoWallObservation
 	Eigen::Vector2d line = Eigen::Vector2d::Zero();	 //!< (a [m], b): PlaneFit::line
 	Eigen::Matrix2d covariance = Eigen::Matrix2d::Identity();  //!< PlaneFit::lineCovariance
 	double viewAngle = 0;  //!< [rad] PlanarRegion::viewAngle
+	/** Share of the band above the camera in its visible columns that has
+	 * its disparity pixels (PlanarRegion::bandPixels over bandRows). */
+	double coverage = 0;
 
 	/** h(X): the map wall's (a, b) in the plane frame from robot pose X,
 	 * and optionally dh/dX (2x3). */
