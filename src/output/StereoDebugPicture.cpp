@@ -13,7 +13,7 @@ namespace featloc
 namespace
 {
 const cv::Scalar kDetected(150, 150, 150), kRejected(0, 140, 255), kOnPlane(0, 230, 255),
-	kSelected(40, 220, 40), kBoundary(255, 80, 255);
+	kSelected(40, 220, 40), kBoundary(255, 80, 255), kWall(255, 230, 0);
 
 using D = StereoPictureDrawing;
 
@@ -60,6 +60,22 @@ cv::Mat StereoDebugPicture::draw(const cv::Mat& left, const StereoLandmarkFrame&
 			cv::putText(img, std::to_string(ft.index), D::pixel(s.uAt(s.vTop) + 3, s.vTop + 12),
 				cv::FONT_HERSHEY_PLAIN, 0.9, kSelected, 1, cv::LINE_AA);
 	}
+	// Walls that observed the pose (featloc's wall observations): a bar
+	// over the columns where the wall is seen from the predicted pose,
+	// under the boundaries' lines.
+	for (const auto& w : f.walls)
+		for (const auto& pl : f.planes)
+			if (pl.wall == w.wall && pl.visibleUMin >= 0)
+			{
+				cv::line(img, D::pixel(pl.visibleUMin, 6), D::pixel(pl.visibleUMax, 6), kWall, 4);
+				const std::string label = "wall " + std::to_string(w.wall);
+				int base = 0;
+				const cv::Size sz = cv::getTextSize(label, cv::FONT_HERSHEY_PLAIN, 0.9, 1, &base);
+				const cv::Point at = D::pixel(pl.visibleUMin + 2, 24);
+				cv::rectangle(img, at + cv::Point(-2, base), at + cv::Point(sz.width + 2, -sz.height - 2),
+					cv::Scalar(0, 0, 0), cv::FILLED);
+				cv::putText(img, label, at, cv::FONT_HERSHEY_PLAIN, 0.9, kWall, 1, cv::LINE_AA);
+			}
 	// Boundaries: the line and its 3-sigma bars (Fig. 6).
 	for (const auto& b : f.boundaries)
 	{
@@ -70,7 +86,7 @@ cv::Mat StereoDebugPicture::draw(const cv::Mat& left, const StereoLandmarkFrame&
 	}
 	// Legend.
 	D::legend(img, {{"detected", kDetected}, {"matched, rejected", kRejected}, {"on plane", kOnPlane},
-								 {"selected", kSelected}, {"boundary +-3 sigma", kBoundary}});
+								 {"selected", kSelected}, {"boundary 3 sigma", kBoundary}, {"wall obs.", kWall}});
 	return img;
 }
 }  // namespace featloc

@@ -36,7 +36,8 @@ void StereoPictureDrawing::legend(cv::Mat& img, const std::vector<std::pair<std:
 	{
 		cv::line(img, {x, H - 8}, {x + 12, H - 8}, colour, 3);
 		cv::putText(img, text, {x + 15, H - 4}, cv::FONT_HERSHEY_PLAIN, 0.8, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
-		x += 26 + 8 * static_cast<int>(text.size());
+		int base = 0;
+		x += 15 + cv::getTextSize(text, cv::FONT_HERSHEY_PLAIN, 0.8, 1, &base).width + 10;
 	}
 }
 }  // namespace featloc

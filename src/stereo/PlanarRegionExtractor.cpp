@@ -161,6 +161,8 @@ PlanarRegion PlanarRegionExtractor::extract(
 		if (visible)
 		{
 			r.visibleColumns++;
+			if (r.visibleUMin < 0) r.visibleUMin = u;
+			r.visibleUMax = u;
 			// Rows of the band just above the camera where this wall shows
 			// at this depth, if it is that tall.
 			r.bandRows += std::min(head.cy, kCoverageBand * head.fy / c.y());

@@ -31,6 +31,7 @@ struct PlanarRegion
 	 * 3-sigma margin around a corner, on a wall just in front), and below
 	 * the camera a low surface's top is seen too. */
 	size_t visibleColumns = 0, visiblePixels = 0;
+	int visibleUMin = -1, visibleUMax = -1;	 //!< first and last of those columns (-1: none)
 	/** Of those, the pixels in the band from the camera's height to 0.3 m
 	 * above it, and the rows the band spans at the wall's depth summed over
 	 * the visible columns: a wall at least that tall fills most of them; a
