@@ -19,11 +19,14 @@
 # Errors against the simulator's exact ground truth, not aligned (the map
 # fixes the frame; every run starts at the true pose): ATE RMSE and max,
 # and the mean NEES of the poses (3 dof, consistent: 3).
-# Prints Markdown. Usage: scripts/bench-stereo-runs.sh [OUTDIR] [MATCHER]
+# Prints Markdown. Usage: scripts/bench-stereo-runs.sh [OUTDIR] [MATCHER] [KEY=VALUE...]
+# (the KEY=VALUEs go to the matcher's section, e.g. coarse_search=true).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-stereo-runs "$@"
 MATCHER="${2:-featloc::IcpMatcher}"
+MATCHER_SETS=()
+for kv in "${@:3}"; do MATCHER_SETS+=(--set "ScanMatcher.${MATCHER#featloc::}:$kv"); done
 CONFIG="$ROOT/configs/stereo-moon-lab.ini"
 
 # The laser worlds' surfaces the stereo renderer has no material for get
@@ -74,7 +77,7 @@ run_scene() { # label dir world.ini(map) log-prefix
     # shellcheck disable=SC2086
     "$BIN/featloc-run" "$CONFIG" "$log.rawlog" --out "$dir/$mode" -q \
       --set StereoLandmarks.StableVerticalLandmarks:map="$map" --set "Pipeline:initial_pose=[$pose]" \
-      --set ScanMatcher:class="$MATCHER" --set Output:stereo_debug_every=0 \
+      --set ScanMatcher:class="$MATCHER" "${MATCHER_SETS[@]}" --set Output:stereo_debug_every=0 \
       --set Evaluation:ground_truth="$log.gt.txt" --set Evaluation:align=false ${SETS[$mode]} > "$dir/$mode.log" 2>&1
     row="$row $(jq -r '[.evaluation.ate_m.rmse * 1000, .evaluation.ate_m.max * 1000, .evaluation.nees.mean] | "\(.[0] | . * 10 | round / 10) / \(.[1] | round) / \(.[2] | . * 10 | round / 10)"' "$dir/$mode/summary.json") |"
   done
@@ -86,7 +89,7 @@ run_scene() { # label dir world.ini(map) log-prefix
 
 machine_line
 echo
-echo "Laser matcher: $MATCHER. Each cell: ATE RMSE / max [mm] / mean NEES."
+echo "Laser matcher: $MATCHER ${*:3}. Each cell: ATE RMSE / max [mm] / mean NEES."
 echo
 echo "| scene | $(printf '%s | ' "${MODES[@]}")"
 echo "|---|$(printf -- '---|%.0s' "${MODES[@]}")"

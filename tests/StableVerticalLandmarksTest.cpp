@@ -158,6 +158,39 @@ TEST(StableVerticalLandmarks, DynamicProgrammingKeepsTheEpipolarOrder)
 	EXPECT_NEAR(x.lengthSimilarity, 81.0 / 101.0, 1e-12);
 }
 
+// The SAD image searched over a wall's range (minimum disparity above 1 px,
+// as every frame does): what the block matcher rejects is invalid (<= 0),
+// not a plausible disparity. OpenCV marks it minDisparity - 1.
+TEST(StableVerticalLandmarks, RejectedSadPixelsAreInvalidWhateverTheSearchRange)
+{
+	// A textured bar shifted by 20 px on a blank background: the blank
+	// pixels have no texture to match.
+	cv::Mat left(120, 200, CV_8U, cv::Scalar(128)), right = left.clone();
+	cv::RNG rng(5);
+	cv::Mat bar(120, 60, CV_8U);
+	rng.fill(bar, cv::RNG::UNIFORM, 0, 255);
+	bar.copyTo(left(cv::Rect(100, 0, 60, 120)));
+	bar.copyTo(right(cv::Rect(80, 0, 60, 120)));
+	const auto x = extractor();
+	for (const int minD : {0, 16})
+	{
+		const cv::Mat d = x.disparity(left, right, minD, 32);
+		EXPECT_LE(d.at<float>(60, 30), 0.0f) << "blank, min " << minD;	 // no texture
+		EXPECT_NEAR(d.at<float>(60, 130), 20.0f, 0.5f) << "bar, min " << minD;
+		double lo = 0, hi = 0;
+		cv::minMaxLoc(d, &lo, &hi);
+		EXPECT_LT(hi, minD + 32.0);
+		// Nothing between "invalid" and the search range's start.
+		for (int v = 0; v < d.rows; v++)
+			for (int u = 0; u < d.cols; u++)
+			{
+				const float p = d.at<float>(v, u);
+				EXPECT_TRUE(p <= 0 || p >= minD) << u << "," << v << ": " << p;
+				if (p > 0 && p < minD) return;
+			}
+	}
+}
+
 TEST(StableVerticalLandmarks, SegmentsAndMatchesAgreeWithTheExactEdges)
 {
 	const auto s = look(mrpt::poses::CPose2D(0, 0, M_PI / 2));

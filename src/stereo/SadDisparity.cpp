@@ -26,6 +26,13 @@ cv::Mat SadDisparity::compute(const cv::Mat& left, const cv::Mat& right, int min
 	cv::Mat d16, d;
 	bm->compute(left, right, d16);
 	d16.convertTo(d, CV_32F, 1.0 / 16);
+	// StereoBM marks a pixel it rejects with minDisparity - 1: a positive,
+	// plausible disparity as soon as the search starts above 1 px (each
+	// frame searches only the walls' range). Every reader takes <= 0 for
+	// invalid, so they are set to -1 (they had passed for the farthest
+	// surface: a wall's end hidden by a nearer corner was "seen" against
+	// them, and landmarks placed from it put the robot 15-30 cm off).
+	d.setTo(-1, d16 < minDisparity * 16);
 	return d;
 }
 
