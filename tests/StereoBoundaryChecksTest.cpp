@@ -224,3 +224,55 @@ TEST(StereoBoundaryChecks, ALowSurfaceHasNoPixelsAboveTheCamera)
 	ASSERT_TRUE(wall.fitted) << wall.reason;
 	EXPECT_GT(wall.bandPixels, 0.9 * wall.bandRows);
 }
+
+// A bookshelf 5 cm in front of a recess's back wall, which goes on 5 cm
+// past the shelf's ends and then meets the recess's sides: the plane does
+// not "go on" past the shelf's ends (no whiteboard-on-a-wall rule there),
+// while a wall that carries on for metres does.
+TEST(StereoBoundaryChecks, AStubPastAnEndIsNotThePlaneGoingOn)
+{
+	registerClasses();
+	test::TempDir dir;
+	const std::string map = dir.file("map.txt");
+	std::ofstream(map) << "6 3 8 3\n6.05 2.95 7.95 2.95\n0 6 4 6\n1 5.98 2 5.98\n";
+	StableVerticalLandmarks x;
+	mrpt::config::CConfigFileMemory cfg;
+	cfg.write("S", "map", map);
+	x.loadParams(cfg, "S");
+	EXPECT_FALSE(x.continuesCoplanar(1, true));
+	EXPECT_FALSE(x.continuesCoplanar(1, false));
+	EXPECT_TRUE(x.continuesCoplanar(3, true));	// the whiteboard on its wall
+	EXPECT_TRUE(x.continuesCoplanar(3, false));
+}
+
+// Whether a plane's end shows a depth step the block matcher can see, from
+// the map and the predicted pose: a far wall beyond it (yes), a wall 5 cm
+// behind it (no), a nearer wall hiding it (no).
+TEST(StereoBoundaryChecks, AnEndIsSearchedOnlyWhereItsDepthStepCanBeSeen)
+{
+	registerClasses();
+	StereoHead head;
+	head.width = 640;
+	head.height = 480;
+	head.fx = head.fy = 500;
+	head.cx = 319.5;
+	head.cy = 239.5;
+	head.baseline = 0.12;
+	head.camZ = 1.1;
+	const Eigen::Vector3d X = Eigen::Vector3d::Zero();
+	const Eigen::Matrix3d S = Eigen::Vector3d(1e-4, 1e-4, 1e-6).asDiagonal();
+	const PlanarRegionExtractor px;
+	StableVerticalLandmarks x;
+	const cv::Mat disparity(480, 640, CV_32F, cv::Scalar(-1));
+	// The robot looks along +x; every plane's end b is at y = 0.5 (left in
+	// the image), 3 m ahead.
+	auto endB = [&](const std::vector<MapWall>& walls) {
+		const auto depth = px.nearestWallDepth(walls, head, X);
+		const auto r = px.extract(walls[0], 0, head, X, S, disparity, &depth);
+		return x.endStepVisible(r, false, head.toCamera(X, walls[0].b).y(), head, depth);
+	};
+	const MapWall plane{{3, -0.5}, {3, 0.5}, "plane"};
+	EXPECT_TRUE(endB({plane, {{6, -3}, {6, 3}, "far wall"}}));
+	EXPECT_FALSE(endB({plane, {{3.05, -1}, {3.05, 2}, "wall 5 cm behind"}}));
+	EXPECT_FALSE(endB({plane, {{6, -3}, {6, 3}, "far wall"}, {{1.5, 0.1}, {1.5, 1.0}, "nearer, hiding the end"}}));
+}

@@ -139,13 +139,37 @@ bool StableVerticalLandmarks::continuesCoplanar(size_t w, bool atA) const
 		const auto& o = walls[k];
 		const Eigen::Vector2d od = (o.b - o.a) / o.length();
 		const double t = od.dot(end - o.a);
-		// The other wall carries on past this end (not merely meets it).
+		// The other wall carries on past this end by kCoplanarContinuation
+		// (not merely meets it, nor goes on for a stub: a recess's back
+		// wall 5 cm past the ends of the bookshelf before it, then the
+		// recess's side faces, made the shelf a "whiteboard on a wall",
+		// whose end may be a texture edge: the books' edges were taken for
+		// it).
 		const double out = atA ? -1 : 1;  // along dir, leaving this wall
-		const double tPast = od.dot(end + out * kCoplanarDistance * dir - o.a);
+		const double tPast = od.dot(end + out * kCoplanarContinuation * dir - o.a);
 		if (t > -kCoplanarDistance && t < o.length() + kCoplanarDistance && tPast >= 0 && tPast <= o.length())
 			return true;
 	}
 	return false;
+}
+
+bool StableVerticalLandmarks::endStepVisible(const PlanarRegion& pl, bool atA, double depth,
+	const StereoHead& head, const std::vector<double>& nearest) const
+{
+	if (depth <= 0 || static_cast<int>(nearest.size()) != head.width) return false;
+	const double uE = atA ? pl.uA : pl.uB, sE = atA ? pl.sigmaUA : pl.sigmaUB;
+	const int outward = (atA ? pl.uB : pl.uA) > uE ? -1 : 1;
+	const double dEnd = head.fx * head.baseline / depth;
+	const double reach = options.window_sigmas * sE + BoundarySearch::Options().evidence_px;
+	// From half a column past the end: the end's own column meets the wall.
+	for (double k = 1; k <= reach; k += 1)
+	{
+		const long u = std::lround(uE + outward * k);
+		if (u < 0 || u >= head.width) break;
+		const double dn = head.fx * head.baseline / nearest[static_cast<size_t>(u)];  // 0 where nothing
+		if (dn >= dEnd - kEndStepPx) return false;
+	}
+	return true;
 }
 
 cv::Mat StableVerticalLandmarks::disparity(
@@ -428,7 +452,20 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 				};
 				rows = vAt(options.min_height) - vAt(options.max_height);
 			}
-			const auto b = boundaries.search(pl, f.disparity, atA, cols, lengths, rows, continuesCoplanar(p, atA));
+			// The end's depth step must be there to see (featloc's check):
+			// beyond it, over its window and the evidence the search looks
+			// at, the map's nearest wall must lie behind the plane by more
+			// than kEndStepPx of disparity. A wall meeting it at a corner or
+			// standing just behind it leaves the block matcher nothing to see
+			// (a bookshelf 5 cm before a recess's back wall: its end found
+			// 7-9 cm out, on the recess's side face), and one in front hides
+			// the end (the shelf's end behind the recess's corner: the
+			// occluding edge taken for it, 24 cm off). Where the map carries
+			// the plane on (a whiteboard on a wall) the segments may still
+			// place it.
+			const bool coplanar = continuesCoplanar(p, atA);
+			if (!coplanar && !endStepVisible(pl, atA, depthE, head, nearest)) continue;
+			const auto b = boundaries.search(pl, f.disparity, atA, cols, lengths, rows, coplanar);
 			if (b.found && (!best.found || b.sigma < best.sigma)) best = b;
 		}
 		f.boundaries[p] = best;

@@ -105,10 +105,25 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 	 * line covers the end and continues beyond it (a whiteboard on a
 	 * wall). Only there may an intensity edge alone be the boundary. */
 	bool continuesCoplanar(size_t w, bool atA) const;
+	/** Whether the depth step at plane `pl`'s end a (or b), `depth` ahead,
+	 * can be seen from the predicted pose: beyond it, over its 3-sigma
+	 * window and the boundary search's evidence, the map's nearest wall
+	 * (`nearest`, PlanarRegionExtractor::nearestWallDepth) lies behind the
+	 * plane by kEndStepPx of disparity. A wall meeting it at a corner or
+	 * standing just behind it leaves the block matcher no step to see; one
+	 * in front hides the end (featloc's check). */
+	bool endStepVisible(const PlanarRegion& pl, bool atA, double depth, const StereoHead& head,
+		const std::vector<double>& nearest) const;
 	/** Whether walls w and k lie on one line (within kCoplanarAngle and
 	 * kCoplanarDistance). */
 	bool collinear(size_t w, size_t k) const;
 	static constexpr double kCoplanarAngle = 2 * M_PI / 180, kCoplanarDistance = 0.05;
+	/** [m] How far a collinear wall must go on past an end for the plane
+	 * to go on there (continuesCoplanar). */
+	static constexpr double kCoplanarContinuation = 0.2;
+	/** [px] Least disparity by which the map's nearest wall beyond a
+	 * plane's end must lie behind it for the end to be searched. */
+	static constexpr double kEndStepPx = 2;
 	/** A fitted wall is a wall observation only when it is the nearest
 	 * wall, from the predicted pose, in this many columns
 	 * (PlanarRegion::visibleColumns) with min_plane_pixels in them. */
