@@ -9,6 +9,8 @@
 #   stereo           EKF, odometry + landmarks + featloc's wall observations
 #   laser            EKF, odometry + the laser matcher (MATCHER)
 #   laser + stereo   EKF, odometry + laser + landmarks + wall observations
+#   walls, laser + walls   the same without the landmarks
+#                    (Ekf:stereo_landmarks_per_frame = 0)
 # Scenes (the map given to the stereo is the world file itself):
 #   worlds/stereo-corridor.ini, camera turned to the north wall, 4 m laser,
 #     seeds 1-3: where the wall observations' checks were developed;
@@ -66,8 +68,10 @@ declare -A SETS=(
   [stereo]=""
   [laser]="--set Ekf:use_scan_matcher=true --set StereoLandmarks:class="
   [laser+stereo]="--set Ekf:use_scan_matcher=true"
+  [walls]="--set Ekf:stereo_landmarks_per_frame=0"
+  [laser+walls]="--set Ekf:use_scan_matcher=true --set Ekf:stereo_landmarks_per_frame=0"
 )
-MODES=(odometry stereo-paper stereo laser laser+stereo)
+MODES=(odometry stereo-paper stereo laser laser+stereo walls laser+walls)
 
 run_scene() { # label dir world.ini(map) log-prefix
   local label="$1" dir="$2" map="$3" log="$4" row mode pose
