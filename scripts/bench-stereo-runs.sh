@@ -87,7 +87,7 @@ run_scene() { # label dir world.ini(map) log-prefix
   done
   echo "$row"
   # Wall observations of the stereo run: fitted, used.
-  WALLS="$WALLS| $label | $(jq -r '.stereo_landmarks | "\(.walls_fitted) | \(.walls_used) | \(.walls_failed_gate) | \(.observations_used) | \(.time_per_pair_s.median * 1000 | . * 10 | round / 10)"' "$dir/stereo/summary.json") |
+  WALLS="$WALLS| $label | $(jq -r '.stereo_landmarks | "\(.wall_observations) | \(.wall_observations_used) | \(.wall_observations_failed_gate) | \(.observations_used) | \(.time_per_pair_s.median * 1000 | . * 10 | round / 10)"' "$dir/stereo/summary.json") |
 "
 }
 

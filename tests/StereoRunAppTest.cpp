@@ -116,6 +116,22 @@ TEST(StereoRunApp, LocalizesOnTheSimulatedPaperSceneWithLandmarksOnTheTrueEdges)
 		}
 	EXPECT_GT(rows, 50u);
 	EXPECT_GT(nearBoundary, 5u);
+	// The walls that observed the pose (featloc's wall observations), and
+	// what the EKF did with each; summary.json counts them.
+	std::ifstream wt(out + "/stereo_walls.txt");
+	size_t wallRows = 0, wallsUsed = 0;
+	while (std::getline(wt, line))
+		if (!line.empty() && line[0] != '#')
+		{
+			wallRows++;
+			wallsUsed += line.size() > 5 && line.compare(line.size() - 5, 5, " used") == 0;
+			EXPECT_NE(line.find(" Wall."), std::string::npos) << line;
+		}
+	EXPECT_GT(wallRows, 5u);
+	EXPECT_GT(wallsUsed, 0.8 * static_cast<double>(wallRows));
+	const auto summary = nlohmann::json::parse(std::ifstream(out + "/summary.json"));
+	EXPECT_EQ(summary["stereo_landmarks"]["wall_observations"].get<size_t>(), wallRows);
+	EXPECT_EQ(summary["stereo_landmarks"]["wall_observations_used"].get<size_t>(), wallsUsed);
 
 	// The final position: the true one is (0, 1.86) in the map's frame.
 	const auto [xs, ys] = lastPosition(out + "/trajectory.tum");

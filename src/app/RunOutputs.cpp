@@ -11,6 +11,7 @@
 #include "featloc/output/SimpleMapWriter.h"
 #include "featloc/output/StereoDebugPictureWriter.h"
 #include "featloc/output/StereoFeatureTableWriter.h"
+#include "featloc/output/StereoWallTableWriter.h"
 #include "featloc/output/SummaryJsonWriter.h"
 #include "featloc/output/TumTrajectoryWriter.h"
 
@@ -56,6 +57,7 @@ RunOutputs RunOutputs::make(const RunConfiguration& rc, const ResultsFolder& fol
 	{
 		add(std::make_unique<StereoFeatureTableWriter>(folder.stagedFile("stereo_features.txt")),
 			"stereo_features.txt");
+		add(std::make_unique<StereoWallTableWriter>(folder.stagedFile("stereo_walls.txt")), "stereo_walls.txt");
 		if (rc.output.stereo_debug_every > 0)
 			add(std::make_unique<StereoDebugPictureWriter>(
 					folder.stagedFile("stereo_debug"), rc.output.stereo_debug_every),

@@ -107,7 +107,7 @@ void RunReport::printSummary(const RunStats& s)
 			s.stereoFrames, s.stereoObservations, s.stereoSelected, s.stereoLandmarksStarted, s.stereoUpdates,
 			st.median * 1e3);
 		if (s.stereoWallsObserved)
-			std::printf("    %zu walls fitted: %zu used as observations of the pose, %zu failed their gate\n",
+			std::printf("    %zu wall observations (stereo_walls.txt): %zu used, %zu failed their gate\n",
 				s.stereoWallsObserved, s.stereoWallsUsed, s.stereoWallsRejected);
 		if (s.stereoFramesWithoutWall)
 			std::printf("    %zu pairs saw no wall of the map '%s'\n", s.stereoFramesWithoutWall, s.stereoMap.c_str());

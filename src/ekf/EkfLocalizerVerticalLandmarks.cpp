@@ -196,13 +196,19 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 
 	// Each fitted wall against the map, alone (2 dof).
 	out.wallsObserved = walls.size();
+	out.wallMahalanobis2.resize(walls.size());
+	out.wallOutcome.assign(walls.size(), "dropped by the joint gate");
 	std::vector<const StereoWallObservation*> wallsUsed;
-	for (const auto& w : walls)
+	for (size_t i = 0; i < walls.size(); i++)
 	{
-		if (wallDistance2(b, w) <= gate2)
-			wallsUsed.push_back(&w);
+		out.wallMahalanobis2[i] = wallDistance2(b, walls[i]);
+		if (out.wallMahalanobis2[i] <= gate2)
+			wallsUsed.push_back(&walls[i]);
 		else
+		{
 			out.wallsRejected++;
+			out.wallOutcome[i] = "failed its gate";
+		}
 	}
 
 	// The pairs and walls used must be jointly compatible (chi-square, all
@@ -236,6 +242,7 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 			wallsUsed.erase(wallsUsed.begin() + static_cast<long>(worst - paired.size()));
 	}
 	out.wallsUsed = wallsUsed.size();
+	for (const StereoWallObservation* w : wallsUsed) out.wallOutcome[static_cast<size_t>(w - walls.data())] = "used";
 	if (!paired.empty() || !wallsUsed.empty())
 	{
 		out.jointMahalanobis2 = updateAtBelief(b, joint.cols, joint.H, joint.nu, joint.R);

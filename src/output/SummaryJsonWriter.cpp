@@ -56,9 +56,9 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 			{"features_selected", s.stereoSelected},
 			{"landmarks_started", s.stereoLandmarksStarted},
 			{"observations_used", s.stereoUpdates},
-			{"walls_fitted", s.stereoWallsObserved},
-			{"walls_used", s.stereoWallsUsed},
-			{"walls_failed_gate", s.stereoWallsRejected},
+			{"wall_observations", s.stereoWallsObserved},
+			{"wall_observations_used", s.stereoWallsUsed},
+			{"wall_observations_failed_gate", s.stereoWallsRejected},
 			{"time_per_pair_s", {{"mean", st.mean}, {"median", st.median}, {"p95", st.p95}, {"max", st.max}}}};
 	}
 	if (!s.localizationMap.empty())

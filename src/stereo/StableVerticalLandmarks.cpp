@@ -299,6 +299,7 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 				continue;
 			StereoWallObservation z;
 			z.wall = pl.wall;
+			z.plane = walls[pl.wall].name;
 			z.mapA = walls[pl.wall].a;
 			z.mapB = walls[pl.wall].b;
 			z.origin = camOnRobot + camToRobot * pl.fit.origin;

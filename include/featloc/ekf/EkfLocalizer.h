@@ -173,6 +173,10 @@ class EkfLocalizer
 		/** Fitted walls: handed in, used, failed their own gate (the rest
 		 * of those not used were dropped by the joint gate). */
 		size_t wallsObserved = 0, wallsUsed = 0, wallsRejected = 0;
+		/** Per wall handed in: its Mahalanobis^2 against the belief and
+		 * "used", "failed its gate" or "dropped by the joint gate". */
+		std::vector<double> wallMahalanobis2;
+		std::vector<std::string> wallOutcome;
 		double jointMahalanobis2 = 0;  //!< of the innovations used
 		/** Per observation: the landmark it updated or started (index
 		 * after the update), or -1. */

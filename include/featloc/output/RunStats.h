@@ -26,8 +26,8 @@ struct RunStats
 	 * features, landmarks started, observations that updated the EKF. */
 	size_t stereoFrames = 0, stereoFramesWithoutWall = 0, stereoObservations = 0;
 	size_t stereoSelected = 0, stereoLandmarksStarted = 0, stereoUpdates = 0;
-	/** Fitted walls handed to the EKF (StereoWallObservation), used, and
-	 * failed their own gate. */
+	/** Wall observations handed to the EKF (StereoWallObservation), used,
+	 * and failed their own gate. */
 	size_t stereoWallsObserved = 0, stereoWallsUsed = 0, stereoWallsRejected = 0;
 	std::vector<double> stereoTimes;  //!< [s] extractor per pair
 	std::string stereoMap;	//!< its map file

@@ -2,6 +2,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <string>
 
 namespace featloc
 {
@@ -22,6 +23,7 @@ namespace featloc
 struct StereoWallObservation
 {
 	size_t wall = 0;  //!< the map wall (reference plane), as VerticalLandmarkObservation::wall
+	std::string plane;	//!< its name in the map ("Wall.north#0")
 	Eigen::Vector2d mapA = Eigen::Vector2d::Zero(), mapB = Eigen::Vector2d::Zero();	 //!< its ends, world [m]
 	/** The fit's plane frame in the robot frame: origin [m], unit vector
 	 * along the wall (s) and across it (w). */
