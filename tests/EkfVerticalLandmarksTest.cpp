@@ -12,6 +12,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <functional>
 
 #include "featloc/ekf/EkfLocalizer.h"
 #include "featloc/ekf/VerticalLandmarkConstraint.h"
@@ -76,6 +77,35 @@ StereoWallObservation wallSeen(const Eigen::Vector3d& X, const Eigen::Matrix2d& 
 	w.line = w.predict(X);
 	w.covariance = cov;
 	return w;
+}
+
+/** The textbook implicit EKF update of the stacked constraint G(x) = 0
+ * with noise R, H = dG/dx by central differences over the whole state,
+ * computed densely from (x0, P0). */
+struct DenseUpdate
+{
+	Eigen::VectorXd x, g;
+	Eigen::MatrixXd P, S;
+};
+DenseUpdate denseImplicitEkf(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& G,
+	const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0, const Eigen::MatrixXd& R)
+{
+	const Eigen::Index n = x0.size();
+	DenseUpdate d;
+	d.g = G(x0);
+	Eigen::MatrixXd H(d.g.size(), n);
+	for (Eigen::Index k = 0; k < n; k++)
+	{
+		Eigen::VectorXd a = x0, b = x0;
+		a[k] += 1e-6;
+		b[k] -= 1e-6;
+		H.col(k) = (G(a) - G(b)) / 2e-6;
+	}
+	d.S = H * P0 * H.transpose() + R;
+	const Eigen::MatrixXd K = P0 * H.transpose() * d.S.inverse();
+	d.x = x0 - K * d.g;
+	d.P = (Eigen::MatrixXd::Identity(n, n) - K * H) * P0;
+	return d;
 }
 }  // namespace
 
@@ -143,7 +173,6 @@ TEST(EkfVerticalLandmarks, UpdateEqualsDenseEkfWithNumericJacobians)
 	const auto u = f.updateVerticalLandmarks(z);
 	ASSERT_EQ(u.used, 2u);
 
-	const Eigen::Index n = x0.size();
 	auto G = [&](const Eigen::VectorXd& s) {
 		Eigen::VectorXd out(7);
 		const auto g1 = VerticalLandmarkConstraint(z[0]).evaluate(s.head<3>(), s.segment<4>(f.landmarkIndex(0)));
@@ -151,26 +180,15 @@ TEST(EkfVerticalLandmarks, UpdateEqualsDenseEkfWithNumericJacobians)
 		out << g1, g2;
 		return out;
 	};
-	Eigen::MatrixXd H(7, n);
-	for (Eigen::Index k = 0; k < n; k++)
-	{
-		Eigen::VectorXd a = x0, b = x0;
-		a[k] += 1e-6;
-		b[k] -= 1e-6;
-		H.col(k) = (G(a) - G(b)) / 2e-6;
-	}
 	Eigen::MatrixXd R = Eigen::MatrixXd::Zero(7, 7);
 	R.block(0, 0, 4, 4) = VerticalLandmarkConstraint(z[0]).noise();
 	R.block(4, 4, 3, 3) = VerticalLandmarkConstraint(z[1]).noise();
 	R.block(0, 4, 2, 2) = z[0].planeJacobian * planeCov * z[1].planeJacobian.transpose();
 	R.block(4, 0, 2, 2) = R.block(0, 4, 2, 2).transpose();
-	const Eigen::MatrixXd S = H * P0 * H.transpose() + R;
-	const Eigen::MatrixXd K = P0 * H.transpose() * S.inverse();
-	const Eigen::VectorXd x1 = x0 - K * G(x0);
-	const Eigen::MatrixXd P1 = (Eigen::MatrixXd::Identity(n, n) - K * H) * P0;
-	EXPECT_LT((f.state() - x1).cwiseAbs().maxCoeff(), 1e-9);
-	EXPECT_LT((f.covariance() - P1).cwiseAbs().maxCoeff(), 1e-9);
-	EXPECT_NEAR(u.jointMahalanobis2, G(x0).dot(S.ldlt().solve(G(x0))), 1e-6);
+	const auto d = denseImplicitEkf(G, x0, P0, R);
+	EXPECT_LT((f.state() - d.x).cwiseAbs().maxCoeff(), 1e-9);
+	EXPECT_LT((f.covariance() - d.P).cwiseAbs().maxCoeff(), 1e-9);
+	EXPECT_NEAR(u.jointMahalanobis2, d.g.dot(d.S.ldlt().solve(d.g)), 1e-6);
 }
 
 TEST(EkfVerticalLandmarks, WallPredictionJacobianMatchesFiniteDifferences)
@@ -228,7 +246,6 @@ TEST(EkfVerticalLandmarks, AWallAndItsLandmarksEqualTheDenseEkfWithTheirSharedFi
 	ASSERT_EQ(u.wallsUsed, 1u);
 	EXPECT_EQ(u.wallsObserved, 1u);
 
-	const Eigen::Index n = x0.size();
 	// Stacked as the filter's nu = -G: landmark rows G = h - z, wall rows h - z.
 	auto G = [&](const Eigen::VectorXd& s) {
 		Eigen::VectorXd out(6);
@@ -236,25 +253,14 @@ TEST(EkfVerticalLandmarks, AWallAndItsLandmarksEqualTheDenseEkfWithTheirSharedFi
 			w.predict(s.head<3>()) - w.line;
 		return out;
 	};
-	Eigen::MatrixXd H(6, n);
-	for (Eigen::Index k = 0; k < n; k++)
-	{
-		Eigen::VectorXd a = x0, b = x0;
-		a[k] += 1e-6;
-		b[k] -= 1e-6;
-		H.col(k) = (G(a) - G(b)) / 2e-6;
-	}
 	Eigen::MatrixXd R = Eigen::MatrixXd::Zero(6, 6);
 	R.block(0, 0, 4, 4) = VerticalLandmarkConstraint(z).noise();
 	R.block(4, 4, 2, 2) = planeCov;
 	R.block(0, 4, 2, 2) = z.planeJacobian * planeCov;
 	R.block(4, 0, 2, 2) = R.block(0, 4, 2, 2).transpose();
-	const Eigen::MatrixXd S = H * P0 * H.transpose() + R;
-	const Eigen::MatrixXd K = P0 * H.transpose() * S.inverse();
-	const Eigen::VectorXd x1 = x0 - K * G(x0);
-	const Eigen::MatrixXd P1 = (Eigen::MatrixXd::Identity(n, n) - K * H) * P0;
-	EXPECT_LT((f.state() - x1).cwiseAbs().maxCoeff(), 1e-9);
-	EXPECT_LT((f.covariance() - P1).cwiseAbs().maxCoeff(), 1e-9);
+	const auto d = denseImplicitEkf(G, x0, P0, R);
+	EXPECT_LT((f.state() - d.x).cwiseAbs().maxCoeff(), 1e-9);
+	EXPECT_LT((f.covariance() - d.P).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 // A wall observation tells the robot's distance to the wall and its heading

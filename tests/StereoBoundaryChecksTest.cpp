@@ -17,6 +17,20 @@ using namespace featloc;
 
 namespace
 {
+/** The paper's camera as featloc simulates it (640x480, fx 500 px,
+ * baseline 0.12 m), level, camZ above the floor, looking along the robot's x. */
+StereoHead paperCamera(double camZ)
+{
+	StereoHead head;
+	head.width = 640;
+	head.height = 480;
+	head.fx = head.fy = 500;
+	head.cx = 319.5;
+	head.cy = 239.5;
+	head.baseline = 0.12;
+	head.camZ = camZ;
+	return head;
+}
 /** A plane filling columns 40..100 of every row, predicted to end at
  * column 100 (end a; its other end b at column 10), and a disparity image
  * with `beyond` past its end (d = 10 on the plane). */
@@ -114,14 +128,7 @@ TEST(StereoBoundaryChecks, CollinearWallsAndWhereAPlaneGoesOn)
 
 TEST(StereoBoundaryChecks, NearerWallsHideWhatIsBehindThem)
 {
-	StereoHead head;
-	head.width = 640;
-	head.height = 480;
-	head.fx = head.fy = 500;
-	head.cx = 319.5;
-	head.cy = 239.5;
-	head.baseline = 0.12;
-	head.camZ = 1.0;  // row 240 is 1 m above the floor
+	const StereoHead head = paperCamera(1.0);  // row 240 is 1 m above the floor
 	// Robot at the origin looking along +x: a wall 4 m ahead, a desk face
 	// 2 m ahead covering the middle of the view.
 	const std::vector<MapWall> walls = {{{4, -3}, {4, 3}, "far"}, {{2, -0.4}, {2, 0.4}, "desk"}};
@@ -151,14 +158,7 @@ TEST(StereoBoundaryChecks, NearerWallsHideWhatIsBehindThem)
 // corridor).
 TEST(StereoBoundaryChecks, AFaceHiddenFromThePredictedPoseHasNoVisibleColumns)
 {
-	StereoHead head;
-	head.width = 640;
-	head.height = 480;
-	head.fx = head.fy = 500;
-	head.cx = 319.5;
-	head.cy = 239.5;
-	head.baseline = 0.12;
-	head.camZ = 1.0;
+	const StereoHead head = paperCamera(1.0);
 	// The robot at the origin looks along +x; the corridor's wall is at
 	// x = 1.2 up to y = 0.5, where a recess goes 0.6 m deeper.
 	const std::vector<MapWall> walls = {{{1.2, -3}, {1.2, 0.5}, "wall"}, {{1.2, 0.5}, {1.8, 0.5}, "side"},
@@ -193,14 +193,7 @@ TEST(StereoBoundaryChecks, AFaceHiddenFromThePredictedPoseHasNoVisibleColumns)
 // a wall's pixels fill the band above the camera.
 TEST(StereoBoundaryChecks, ALowSurfaceHasNoPixelsAboveTheCamera)
 {
-	StereoHead head;
-	head.width = 640;
-	head.height = 480;
-	head.fx = head.fy = 500;
-	head.cx = 319.5;
-	head.cy = 239.5;
-	head.baseline = 0.12;
-	head.camZ = 1.1;
+	const StereoHead head = paperCamera(1.1);
 	const std::vector<MapWall> walls = {{{1.5, -0.5}, {1.5, 0.5}, "table"}, {{4, -3}, {4, 3}, "wall"}};
 	const PlanarRegionExtractor px;
 	const Eigen::Vector3d X = Eigen::Vector3d::Zero();
@@ -251,14 +244,7 @@ TEST(StereoBoundaryChecks, AStubPastAnEndIsNotThePlaneGoingOn)
 TEST(StereoBoundaryChecks, AnEndIsSearchedOnlyWhereItsDepthStepCanBeSeen)
 {
 	registerClasses();
-	StereoHead head;
-	head.width = 640;
-	head.height = 480;
-	head.fx = head.fy = 500;
-	head.cx = 319.5;
-	head.cy = 239.5;
-	head.baseline = 0.12;
-	head.camZ = 1.1;
+	const StereoHead head = paperCamera(1.1);
 	const Eigen::Vector3d X = Eigen::Vector3d::Zero();
 	const Eigen::Matrix3d S = Eigen::Vector3d(1e-4, 1e-4, 1e-6).asDiagonal();
 	const PlanarRegionExtractor px;
