@@ -206,10 +206,11 @@ PlanarRegion PlanarRegionExtractor::extract(
 		if (occludedColumns > 0) r.reason += ", " + std::to_string(occludedColumns) + " columns hidden by nearer walls";
 		return r;
 	}
-	// Eq. (11), weighted least squares of w = a + b s over the pixels
-	// `use` keeps; the covariance scaled by the residuals' chi2 per degree
-	// of freedom (at least 1) and by the block's pixels, which one SAD
-	// window makes dependent. Returns the weighted RMS.
+	// Eq. (11), weighted least squares of w = a + b s over every pixel or
+	// over the wall observation's (visibleOnly); the covariance scaled by
+	// the residuals' chi2 per degree of freedom (at least 1) and by the
+	// block's pixels, which one SAD window makes dependent. Returns the
+	// RMS residual.
 	const auto fitLine = [&](bool visibleOnly, Eigen::Vector2d& line, Eigen::Matrix2d& cov) {
 		Eigen::Matrix2d N = Eigen::Matrix2d::Zero();
 		Eigen::Vector2d rhs = Eigen::Vector2d::Zero();
