@@ -179,6 +179,7 @@ TEST(StereoBoundaryChecks, AFaceHiddenFromThePredictedPoseHasNoVisibleColumns)
 	EXPECT_GT(wall.visibleColumns, 200u);
 	// The wall's observation is fitted to its visible columns alone: the
 	// wall is where the map puts it (exact disparities).
+	ASSERT_TRUE(wall.visibleFitted);
 	EXPECT_NEAR(wall.visibleLine.x(), 0, 0.002);
 	EXPECT_NEAR(wall.visibleLine.y(), 0, 0.002);
 	EXPECT_GT(wall.viewAngle, 45 * M_PI / 180);	 // seen face on, +-33 deg of the optical axis

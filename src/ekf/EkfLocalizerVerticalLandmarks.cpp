@@ -229,7 +229,7 @@ EkfLocalizer::VerticalUpdate EkfLocalizer::updateVerticalLandmarks(
 		{
 			const double da = a < paired.size()
 				? verticalDistance2(b, obs[paired[a].second], static_cast<size_t>(pairing[paired[a].second]))
-				: wallDistance2(b, *wallsUsed[a - paired.size()]);
+				: out.wallMahalanobis2[static_cast<size_t>(wallsUsed[a - paired.size()] - walls.data())];
 			if (da > worstD2) worstD2 = da, worst = a;
 		}
 		if (worst < paired.size())

@@ -146,7 +146,7 @@ std::string MatchPanel::runMatcher(const std::string& className, const std::stri
 	panel.setMatch(ref.scan, step.scan, r.estimate.mean.asTPose(), std::move(used), caption);
 	std::ostringstream out;
 	out << className << ": "
- 		<< (r.success ? (r.guessGateOverruled.empty() ? "success" : "success, guess gate overruled")
+		<< (r.success ? (r.guessGateOverruled.empty() ? "success" : "success, guess gate overruled")
 					  : r.rejectedByGuessGate ? "rejected by the guess gate"
 											  : "failed")
 		<< (r.success && !r.primaryFailure.empty()

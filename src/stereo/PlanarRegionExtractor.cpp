@@ -241,8 +241,8 @@ PlanarRegion PlanarRegionExtractor::extract(
 		return std::sqrt(sum2 / static_cast<double>(n));
 	};
 	r.rms = fitLine(false, r.fit.line, r.fit.lineCovariance);
-	if (r.visiblePixels >= options.min_pixels)
-		fitLine(true, r.visibleLine, r.visibleLineCovariance);
+	r.visibleFitted = r.visiblePixels >= options.min_pixels;
+	if (r.visibleFitted) fitLine(true, r.visibleLine, r.visibleLineCovariance);
 
 	// The pixels are the wall's only if the fitted line is where the map
 	// puts the wall, within the robot's uncertainty (featloc's check: the

@@ -293,9 +293,8 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			//   matches there (lab, left camera: a third of the fits under
 			//   10% were 3 sigma off the truth, none over 50%).
 			const double coverage = static_cast<double>(pl.bandPixels) / std::max(1.0, pl.bandRows);
-			if (!pl.fitted || pl.visibleColumns < kMinWallColumns || coverage < kMinWallCoverage ||
-				pl.viewAngle < options.wall_min_view_angle_deg * M_PI / 180 ||
-				pl.visiblePixels < options.min_plane_pixels)
+			if (!pl.fitted || !pl.visibleFitted || pl.visibleColumns < kMinWallColumns ||
+				coverage < kMinWallCoverage || pl.viewAngle < options.wall_min_view_angle_deg * M_PI / 180)
 				continue;
 			StereoWallObservation z;
 			z.wall = pl.wall;

@@ -39,10 +39,11 @@ struct PlanarRegion
 	 * matcher's stray matches. */
 	size_t bandPixels = 0;
 	double bandRows = 0;
-	/** Eq. (11) over those pixels alone (in the frame of
-	 * `fit`; set when there are min_pixels of them): what a wall
+	/** Eq. (11) over those pixels alone (in the frame of `fit`; made,
+	 * visibleFitted, when there are min_pixels of them): what a wall
 	 * observation measures. The fit over every pixel is the features'
 	 * plane (3.1). */
+	bool visibleFitted = false;
 	Eigen::Vector2d visibleLine = Eigen::Vector2d::Zero();
 	Eigen::Matrix2d visibleLineCovariance = Eigen::Matrix2d::Zero();
 	/** [rad] Mean angle between the view ray and the wall over the
