@@ -201,7 +201,7 @@ void CfIdcMatcher::buildReference(const ScanPoints& reference)
 	m_segments.clear();
 	for (const auto& s : m_referenceReport)
 		if (s.kept) m_segments.push_back(s.segment);
-	m_polyline.build(reference, m_segments);
+	m_polyline.build(reference, m_segments, params.idc.line_half_window);
 }
 
 void CfIdcMatcher::collectKeptCurrent(const ScanPoints& current)

@@ -33,7 +33,7 @@ void IdcMatcher::matchPoints(
 	const mrpt::poses::CPosePDFGaussian& initialGuess, MatchResult& result)
 {
 	AdaptiveBreakpointSegmenter(params.segmentation).segment(reference, m_segments);
-	m_polyline.build(reference, m_segments);
+	m_polyline.build(reference, m_segments, params.idc.line_half_window);
 	m_idc.params = params.idc;
 	IterativeDualCorrespondence::Result r;
 	m_idc.run(m_polyline, current.points, initialGuess, r);

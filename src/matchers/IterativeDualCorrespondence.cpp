@@ -29,6 +29,8 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	read(c, s, "min_pairs", min_pairs);
 	readChoice(c, s, "final_phase", final_phase, {"point_to_line", "idc"});
 	read(c, s, "step_tolerance", step_tolerance);
+	read(c, s, "line_half_window", line_half_window);
+	readDegrees(c, s, "max_line_direction_sigma_DEG", max_line_direction_sigma);
 	read(c, s, "guess_gate_chi2", guess_gate_chi2);
 	read(c, s, "covariance_inflation", covariance_inflation);
 	read(c, s, "min_range_sigma", min_range_sigma);
@@ -44,6 +46,8 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	require(min_pairs >= 3, c, s, "min_pairs", ">= 3");
 	require(dual_decimation >= 1, c, s, "dual_decimation", ">= 1");
 	require(step_tolerance > 0, c, s, "step_tolerance", "> 0");
+	require(line_half_window >= 1, c, s, "line_half_window", ">= 1");
+	require(max_line_direction_sigma > 0, c, s, "max_line_direction_sigma_DEG", "> 0");
 	require(guess_gate_chi2 >= 0, c, s, "guess_gate_chi2", ">= 0 (0 disables it)");
 	require(covariance_inflation >= 1, c, s, "covariance_inflation", ">= 1");
 	require(min_range_sigma > 0, c, s, "min_range_sigma", "> 0");
@@ -75,6 +79,10 @@ void IterativeDualCorrespondence::Parameters::saveToConfigFile(
 		"point_to_line (Gauss-Newton on the point-to-line error once the windows are at their minima) | idc (the paper)");
 	write(c, s, "step_tolerance", step_tolerance,
 		"point_to_line phase: converged when a step is below this many standard deviations of the estimate");
+	write(c, s, "line_half_window", line_half_window,
+		"point_to_line phase: a reference edge's local line takes up to this many neighbours on each side, while they stay within 3 sigma of it");
+	writeDegrees(c, s, "max_line_direction_sigma_DEG", max_line_direction_sigma,
+		"[deg] point_to_line phase: points pair only with local lines whose direction is known this well (noise / sqrt(scatter along the line))");
 	write(c, s, "guess_gate_chi2", guess_gate_chi2,
 		"failure when the estimate's Mahalanobis^2 from the initial guess exceeds this (21.1: 99.99% for 3 dof; 0 = off)");
 	write(c, s, "covariance_inflation", covariance_inflation,
@@ -198,8 +206,10 @@ void IterativeDualCorrespondence::run(
 	// The dual rules while the windows shrink (and after, for the paper's
 	// IDC), then point-to-line steps.
 	bool dual = true;
-	// Errors of the last iterations of this phase, newest first (-1: none).
-	std::array<double, 8> previousErrors;
+	// Errors of the last iterations of this phase, newest first (-1: none):
+	// a cycle of up to this many iterations is caught (one of 10 was seen
+	// where a weakly constrained direction lets points change lines).
+	std::array<double, 16> previousErrors;
 	previousErrors.fill(-1);
 	double D = D0;
 	bool converged = false;
@@ -272,12 +282,16 @@ void IterativeDualCorrespondence::run(
 				m_closestHint[i] = hit.a;
 				m_cp.emplace_back(qx, qy, hit.x, hit.y);
 				// Point-to-line pairs need a line fitted to three points at
-				// least: a two-point edge whose neighbours both leave its
-				// line bridges two surfaces (a depth jump at long range that
-				// the breakpoint test let through) or is too noisy.
+				// least (a two-point edge whose neighbours both leave its
+				// line bridges two surfaces: a depth jump at long range that
+				// the breakpoint test let through) and whose direction is
+				// known: a line of a few noisy points close together has a
+				// random normal, and a wall's random normals constrain the
+				// motion along the wall that nothing constrains.
 				const ReferencePolyline::LocalLine* L =
 					hit.a != hit.b ? &reference.localLine(hit.a) : nullptr;
-				if (L && L->hi - L->lo >= 2)
+				if (L && L->hi - L->lo >= 2 &&
+					reference.directionSigma(hit.a) <= params.max_line_direction_sigma)
 				{
 					m_lines.push_back({static_cast<uint32_t>(i), hit.a});
 					m_lineDistances.push_back(std::abs(L->nx * (qx - L->cx) + L->ny * (qy - L->cy)));

@@ -65,6 +65,8 @@ bool PointToLineCovariance::compute(
 	// g_k for every range z_k: current points first, then reference points.
 	std::vector<Eigen::Vector3d> g(nc + reference.size(), Eigen::Vector3d::Zero());
 	Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+	// The information the local lines' direction errors add on average.
+	Eigen::Matrix3d invented = Eigen::Matrix3d::Zero();
 	double J = 0, sensitivity = 0;
 	std::vector<double> dedz;
 	Eigen::Matrix<double, 3, Eigen::Dynamic> mixed;
@@ -80,6 +82,15 @@ bool PointToLineCovariance::compute(
 		// is non-zero.
 		H += 2 * de * de.transpose();
 		H(2, 2) += 2 * e * -(L.nx * (c * p.x - s * p.y) + L.ny * (s * p.x + c * p.y));
+		// The line's normal is estimated: n^ = n - d t, d ~ N(0, s_a^2)
+		// its direction error, t = (ny, -nx) the line's direction. So de
+		// carries - d (t, t.R'p), and E[de de^T] exceeds the true term by
+		// s_a^2 (t, t.R'p)(t, t.R'p)^T: information that noisy normals
+		// invent, along walls above all. Taken out (errors in variables).
+		const double sa = reference.directionSigma(pr.a);
+		const Eigen::Vector3d dt(L.ny, -L.nx,
+			L.ny * (-s * p.x - c * p.y) - L.nx * (c * p.x - s * p.y));
+		invented += 2 * sa * sa * dt * dt.transpose();
 		// d2J/(dx dz) = 2 (de/dx de/dz + e d2e/(dx dz)).
 		rangeDerivatives(x, p, L, reference, dedz, &mixed);
 		g[pr.current] += 2 * (de * dedz[0] + e * mixed.col(0));
@@ -87,17 +98,32 @@ bool PointToLineCovariance::compute(
 			g[nc + L.lo + k - 1] += 2 * (de * dedz[k] + e * mixed.col(static_cast<Eigen::Index>(k)));
 		for (double d : dedz) sensitivity += d * d;
 	}
+	H -= invented;
 	information = H;
 	if (pairs.size() < 3) return false;
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(H);
 	if (eig.eigenvalues()[0] <= 1e-12 * std::max(1.0, eig.eigenvalues()[2])) return false;
+	// What is left along the weakest direction must stand out of what the
+	// normals' noise invents by chance (its expectation is taken out, its
+	// scatter is not): else that direction is unconstrained, as along a
+	// corridor's noisy walls.
+	const Eigen::Vector3d weakest = eig.eigenvectors().col(0);
+	const bool unconstrained =
+		eig.eigenvalues()[0] < kInventedMargin * weakest.dot(invented * weakest);
+	Eigen::Vector3d inverse = eig.eigenvalues().cwiseInverse();
+	if (unconstrained)
+	{
+		information -= eig.eigenvalues()[0] * weakest * weakest.transpose();
+		inverse[0] = 0;
+	}
 	const double dof = std::max(1.0, sensitivity - 3);
 	sigma = std::max(minSigma, std::sqrt(J / dof));
 	Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
 	for (const auto& gk : g) S += gk * gk.transpose();
-	const Eigen::Matrix3d Hinv = eig.eigenvectors() *
-		eig.eigenvalues().cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
+	const Eigen::Matrix3d Hinv =
+		eig.eigenvectors() * inverse.asDiagonal() * eig.eigenvectors().transpose();
 	cov = Hinv * S * Hinv * (sigma * sigma);
+	if (unconstrained) cov += kUnconstrainedVariance * weakest * weakest.transpose();
 	cov = 0.5 * (cov + cov.transpose()).eval();
 	return true;
 }

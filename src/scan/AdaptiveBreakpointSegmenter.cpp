@@ -12,6 +12,7 @@ void AdaptiveBreakpointSegmenter::Parameters::loadFromConfigFile(
 	using namespace featloc::config;
 	readDegrees(c, s, "breakpoint_lambda_DEG", lambda);
 	read(c, s, "breakpoint_sigma_r", sigma_r);
+	read(c, s, "breakpoint_at_missing_returns", breakAtMissingReturns);
 	require(lambda > 0 && lambda < M_PI / 2, c, s, "breakpoint_lambda_DEG",
 		"in (0, 90) degrees");
 	require(sigma_r >= 0, c, s, "breakpoint_sigma_r", ">= 0");
@@ -25,12 +26,15 @@ void AdaptiveBreakpointSegmenter::Parameters::saveToConfigFile(
 		"[deg] segmentation, eq. (3): most grazing incidence of a surface");
 	write(c, s, "breakpoint_sigma_r", sigma_r,
 		"[m] segmentation, eq. (3): range noise sigma_r");
+	write(c, s, "breakpoint_at_missing_returns", breakAtMissingReturns,
+		"segmentation: a beam without a return between two points is a breakpoint (false: the paper's eq. (3) alone)");
 }
 
 bool AdaptiveBreakpointSegmenter::isBreakpoint(const ScanPoint& a, const ScanPoint& b) const
 {
 	const double dphi = std::abs(b.bearing - a.bearing);
 	if (dphi >= params.lambda) return true;
+	if (params.breakAtMissingReturns && b.beam > a.beam + 1) return true;
 	// The ratio depends on dphi only, which is the scan's angular step for
 	// most neighbours: computed once for it.
 	if (dphi != m_lastDphi)

@@ -38,4 +38,29 @@ double PointNoiseEstimator::estimate(
 			m_deviations.push_back(chordDistance(p[k - 1], p[k + 1], p[k]));
 	return fromDeviations();
 }
+double PointNoiseEstimator::rangeNoise(
+	const std::vector<ScanPoint>& p, const std::vector<ScanSegment>& segments, double minChord)
+{
+	m_deviations.clear();
+	const double min2 = minChord * minChord;
+	for (const auto& seg : segments)
+		for (size_t k = seg.first + 1; k < seg.last; k++)
+		{
+			size_t m = 1;
+			auto apart2 = [&] {
+				const double dx = p[k + m].x - p[k - m].x, dy = p[k + m].y - p[k - m].y;
+				return dx * dx + dy * dy;
+			};
+			while (apart2() < min2 && k - m > seg.first && k + m < seg.last) m++;
+			const double chord2 = apart2();
+			if (chord2 < min2 || p[k].range <= 0) continue;
+			// The chord's normal against the beam of p[k].
+			const double ex = p[k + m].x - p[k - m].x, ey = p[k + m].y - p[k - m].y;
+			const double cosIncidence =
+				std::abs(-ey * p[k].x + ex * p[k].y) / (std::sqrt(chord2) * p[k].range);
+			if (cosIncidence < 0.5) continue;
+			m_deviations.push_back(chordDistance(p[k - m], p[k + m], p[k]) / cosIncidence);
+		}
+	return fromDeviations();
+}
 }  // namespace featloc

@@ -77,8 +77,9 @@ namespace featloc
  * scenes (featloc-bench with covariance_inflation = 1), the median NEES is
  * 1.4-1.8 times the consistent 2.37 (lab 1.4, office, hall 1.6-1.8), and
  * the spread of the estimate 0.6-0.8 times Censi's variance when the true
- * correspondences are held fixed; the default 1.7 makes the simulated hall
- * and office consistent and leaves the lab somewhat conservative
+ * correspondences are held fixed. Since the local lines' direction errors
+ * are taken out of H (PointToLineCovariance) the default 1.3 makes the
+ * office's unit-test route and the simulated office and lab consistent
  * (doc/cfidc-matcher.md).
  *
  * Failure: fewer than min_pairs closest-point pairs, no convergence, or
@@ -104,8 +105,15 @@ class IterativeDualCorrespondence
 		unsigned int min_pairs = 10;
 		std::string final_phase = "point_to_line";	//!< point_to_line | idc
 		double step_tolerance = 0.25;  //!< point_to_line convergence [sigmas]
+		/** point_to_line: a reference edge's local line grows over up to
+		 * this many neighbours on each side (ReferencePolyline::build). */
+		unsigned int line_half_window = 6;
+		/** point_to_line: a current point is paired with a local line only
+		 * if the line's direction is known this well
+		 * (ReferencePolyline::directionSigma) [rad]. */
+		double max_line_direction_sigma = mrpt::DEG2RAD(5.0);
 		double guess_gate_chi2 = 21.1;	//!< 99.99% for 3 dof; 0 = off
-		double covariance_inflation = 1.4;  //!< variance scale of Censi's formula
+		double covariance_inflation = 1.3;  //!< variance scale of Censi's formula
 		double min_range_sigma = 0.005;	 //!< [m] covariance noise floor
 		double max_translation_sigma = 0.1;	 //!< [m]
 		double max_rotation_sigma = mrpt::DEG2RAD(3.0);	 //!< [rad]

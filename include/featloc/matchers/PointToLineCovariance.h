@@ -58,8 +58,23 @@ class PointToLineCovariance
 		const ReferencePolyline::LocalLine& L, const ReferencePolyline& reference,
 		std::vector<double>& dedz, Eigen::Matrix<double, 3, Eigen::Dynamic>* mixed = nullptr);
 
-	/** False when H is singular (the pairs do not constrain the motion);
+	/** Errors in variables: each local line's normal is itself estimated
+	 * (ReferencePolyline::directionSigma), and H built from estimated
+	 * normals exceeds the true one by sum 2 s_a^2 g_t g_t^T on average
+	 * (g_t the residual's gradient with the line's direction in place of
+	 * its normal): along a corridor's noisy walls, that alone made the
+	 * motion along the corridor look known to millimetres. It is taken out
+	 * of H, and the weakest direction of what is left must carry at least
+	 * kInventedMargin times that invented information, or it counts as
+	 * unconstrained.
+	 *
+	 * The covariance of such a direction is kUnconstrainedVariance (the
+	 * caller's max_translation_sigma test then names it), the other two
+	 * directions keep theirs; `information` has its eigenvalue zeroed.
+	 * False when H is singular (the pairs do not constrain the motion);
 	 * `information` receives H either way. */
+	static constexpr double kInventedMargin = 2.0;
+	static constexpr double kUnconstrainedVariance = 1e4;  //!< [m^2 or rad^2]
 	static bool compute(
 		const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
 		const std::vector<PointToLinePair>& pairs, const mrpt::math::TPose2D& x,

@@ -40,12 +40,15 @@ class ReferencePolyline
 	/** The surface an edge lies on, for the point-to-line error: the total
 	 * least squares line through the edge's two points and as many of
 	 * their neighbours (up to lineHalfWindow on each side, within the
-	 * segment) as stay within 3 sigma of it, sigma the scan's robust point
-	 * noise (PointNoiseEstimator, at least 1 mm). Two-point edges of raw
-	 * points are as noisy in direction as the points are close (1 cm noise,
-	 * 2.6 cm apart at 3 m: +-20 degrees): their normals would invent
-	 * constraints along walls and bias the estimate; a few more points
-	 * along the same surface fix that without rounding corners. */
+	 * segment) as leave every point of the refitted line within 3 sigma of
+	 * it, sigma the scan's robust point noise (PointNoiseEstimator::
+	 * estimate, the median scatter across surfaces, at least 1 mm).
+	 * Two-point edges of raw
+	 * points are as noisy in direction as the points are close (1 cm
+	 * noise, 2.6 cm apart at 3 m: +-20 degrees): their normals would invent
+	 * constraints along walls and bias the estimate; more points along the
+	 * same surface fix that without rounding corners. directionSigma() says
+	 * how well a line's direction is known. */
 	struct LocalLine
 	{
 		double cx = 0, cy = 0;	//!< centroid [m]
@@ -62,7 +65,7 @@ class ReferencePolyline
 	 * fits each edge's LocalLine. */
 	void build(
 		const ScanPoints& points, const std::vector<ScanSegment>& segments,
-		unsigned int lineHalfWindow = 3);
+		unsigned int lineHalfWindow = 6);
 
 	size_t size() const { return m_points.size(); }
 	const ScanPoint& point(uint32_t i) const { return m_points[i]; }
@@ -70,8 +73,15 @@ class ReferencePolyline
 	bool joined(uint32_t i) const { return m_joined[i] != 0; }
 	/** The line of edge (i, i + 1); only for joined(i). */
 	const LocalLine& localLine(uint32_t i) const { return m_lines[i]; }
-	/** The robust point noise estimated when building [m]. */
-	double pointNoise() const { return m_pointNoise; }
+	/** Standard deviation of the direction of edge i's local line [rad]:
+	 * the range noise over the root of its points' scatter along it
+	 * (sigma / sqrt(gap)); an upper bound where beams are oblique to the
+	 * line, whose points then scatter less across it. */
+	double directionSigma(uint32_t i) const;
+	/** The range noise estimated when building [m]
+	 * (PointNoiseEstimator::rangeNoise, chords of kNoiseChord at least). */
+	double rangeNoise() const { return m_rangeNoise; }
+
 
 	/** A query point with its polar coordinates (computed once, used by
 	 * both rules). */
@@ -89,6 +99,7 @@ class ReferencePolyline
 	bool closestPoint(const Query& q, double maxDistance, Hit& hit, uint32_t hint = kNoHint) const;
 	bool matchingRangePoint(const Query& q, double window, Hit& hit, uint32_t hint = kNoHint) const;
 	static constexpr uint32_t kNoHint = 0xffffffffu;
+	static constexpr double kNoiseChord = 0.10;	 //!< [m]
 
    private:
 	/** Visits the points and edges outwards from `bearing` on both sides:
@@ -118,6 +129,6 @@ class ReferencePolyline
 	std::vector<LocalLine> m_lines;
 	std::vector<ScanSegment> m_segments;  // of m_points
 	PointNoiseEstimator m_noise;
-	double m_pointNoise = 0;
+	double m_rangeNoise = 0;
 };
 }  // namespace featloc

@@ -22,6 +22,14 @@ namespace featloc
  * Where dphi >= lambda the bound is infinite in the paper's geometry; such
  * a gap (a sector of missing returns) is always a breakpoint here.
  *
+ * featloc: with breakAtMissingReturns, any beam without a return between
+ * two points is a breakpoint. A surface between them within range would
+ * have returned it, and eq. (3) with dphi grown by the missing beams lets
+ * almost anything through: two points near the range limit on either
+ * side of a recess became one "surface" across its opening, whose local
+ * line put a corridor's matches 10 cm off along it. A beam lost on a
+ * surface (a dropout) splits that surface in two, which costs little.
+ *
  * Every point ends in exactly one segment (isolated points are one-point
  * segments): the IDC reference polyline joins consecutive points of a
  * segment only; CF-IDC drops segments that are too small itself. */
@@ -32,6 +40,7 @@ class AdaptiveBreakpointSegmenter
 	{
 		double lambda = mrpt::DEG2RAD(10.0);  //!< [rad] lambda of eq. (3)
 		double sigma_r = 0.005;	 //!< [m] sigma_r of eq. (3)
+		bool breakAtMissingReturns = true;	//!< featloc (false: the paper)
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& c,

@@ -21,6 +21,18 @@ class PointNoiseEstimator
 	/** s pooled over the segments of `points`. */
 	double estimate(const std::vector<ScanPoint>& points, const std::vector<ScanSegment>& segments);
 
+	/** The range noise s_r of a scanner whose points scatter along their
+	 * beams, pooled over the segments: a point's distance to its chord
+	 * scatters by s_r |cos i|, i the beam's incidence on the surface, so
+	 * each distance is divided by that cosine (points seen beyond 60 deg
+	 * do not count). Each chord joins the nearest neighbours on either side
+	 * at least minChord apart [m]: a chord of neighbours as close as the
+	 * noise tilts towards the middle point. estimate() is the median
+	 * scatter across surfaces, mostly seen obliquely: along a corridor
+	 * with 1 cm range noise it gives 0.6 cm. 0 with no usable point. */
+	double rangeNoise(const std::vector<ScanPoint>& points,
+		const std::vector<ScanSegment>& segments, double minChord);
+
    private:
 	double fromDeviations();
 	std::vector<double> m_deviations;  // reused buffer
