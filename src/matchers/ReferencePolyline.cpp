@@ -2,6 +2,8 @@
 
 #include "featloc/features/PointScatter.h"
 
+#include <mrpt/core/bits_math.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -68,32 +70,26 @@ void ReferencePolyline::build(
 	}
 
 	// Each edge's local line, grown from the edge one point at a time on
-	// either side (up to lineHalfWindow) while every point of the refitted
-	// line stays within 3 sigma of it. The test is on the refit, not on
-	// the line so far: a two-point edge's direction is as noisy as its
-	// points are close (1 cm noise, 1.5 cm apart: +-40 deg), so the next
-	// point of a straight wall often missed that line by more than 3 sigma
-	// and lines stopped at three points with random normals. Those invented
-	// constraints along walls: in a corridor, matches 10 cm off along it
-	// with a 5 mm sigma (doc/cfidc-matcher.md, "Local lines"). Sigma here
-	// is the points' median scatter across their surfaces, which keeps
-	// corners sharp (3 x the range noise rounded the lab's corners: 1.29 ->
-	// 1.46 mm mean error); the range noise itself, estimated on chords of
-	// 10 cm at least as dense points would understate it, is what a line's
-	// direction sigma rests on: a line must not claim a direction better
-	// known than it is.
+	// either side (up to lineHalfWindow) while the next point lies within
+	// 3 sigma of where the line so far predicts it: sigma^2 (1 + 1/n +
+	// d^2 / gap), sigma the points' scatter across their surface, n the
+	// line's points, d the next point's distance along it from their
+	// centroid, gap their scatter along it. A two-point edge's direction is
+	// as noisy as its points are close (1 cm noise, 1.5 cm apart: +-40
+	// deg); tested against that line alone (as until 2026-11-25) the next
+	// point of a straight wall often missed it and lines stopped at three
+	// points with random normals, which invented constraints along walls
+	// (a corridor's matches 10 cm off along it with a 5 mm sigma;
+	// doc/cfidc-matcher.md, "Local lines"). Tested against the refit
+	// instead, a corner's first points tilted the line enough to pass, and
+	// the rounded corners biased the lab's matches (0.4 mm each along the
+	// motion). sigma is the median scatter across surfaces; the range
+	// noise, estimated on chords of 10 cm at least as dense points would
+	// understate it, is what a line's direction sigma rests on: a line must
+	// not claim a direction better known than it is.
 	m_rangeNoise = m_noise.rangeNoise(m_points, m_segments, kNoiseChord);
-	const double tolerance = 3 * std::max(1e-3, m_noise.estimate(m_points, m_segments));
+	const double scatter2 = mrpt::square(std::max(1e-3, m_noise.estimate(m_points, m_segments)));
 	m_lines.assign(m_points.size(), LocalLine());
-	// Whether every point from..to lies within tolerance of t's line.
-	auto straight = [&](const PointScatter& t, uint32_t from, uint32_t to) {
-		const PointScatter::Line l = t.line();
-		const double cx = t.cx(), cy = t.cy();
-		for (uint32_t i = from; i <= to; i++)
-			if (std::abs(l.nx * (m_points[i].x - cx) + l.ny * (m_points[i].y - cy)) > tolerance)
-				return false;
-		return true;
-	};
 	for (const auto& seg : m_segments)
 		for (uint32_t a = seg.first; a < seg.last; a++)
 		{
@@ -101,8 +97,8 @@ void ReferencePolyline::build(
 			scatter.add(m_points[a].x, m_points[a].y);
 			scatter.add(m_points[a + 1].x, m_points[a + 1].y);
 			uint32_t lo = a, hi = a + 1;
-			// Tries the point beyond `end` on one side: kept if the refit
-			// stays straight; `open` false once a side stops.
+			// Tries the next point on one side; `open` false once that
+			// side stops.
 			auto grow = [&](bool& open, bool left) {
 				if (!open || (left ? lo == seg.first : hi == seg.last))
 				{
@@ -110,11 +106,16 @@ void ReferencePolyline::build(
 					return;
 				}
 				const uint32_t next = left ? lo - 1 : hi + 1;
-				PointScatter t = scatter;
-				t.add(m_points[next].x, m_points[next].y);
-				open = straight(t, left ? next : lo, left ? hi : next);
+				const ScanPoint& p = m_points[next];
+				const PointScatter::Line l = scatter.line();
+				const double dx = p.x - scatter.cx(), dy = p.y - scatter.cy();
+				const double across = l.nx * dx + l.ny * dy, along = l.ny * dx - l.nx * dy;
+				const double n = static_cast<double>(scatter.count());
+				const double predicted2 = scatter2 *
+					(1 + 1 / n + (l.gap > 0 ? along * along / l.gap : 1e12));
+				open = across * across <= 9 * predicted2;
 				if (!open) return;
-				scatter = t;
+				scatter.add(p.x, p.y);
 				(left ? lo : hi) = next;
 			};
 			bool left = true, right = true;

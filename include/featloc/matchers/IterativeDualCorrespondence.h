@@ -78,7 +78,7 @@ namespace featloc
  * 1.4-1.8 times the consistent 2.37 (lab 1.4, office, hall 1.6-1.8), and
  * the spread of the estimate 0.6-0.8 times Censi's variance when the true
  * correspondences are held fixed. Since the local lines' direction errors
- * are taken out of H (PointToLineCovariance) the default 1.3 makes the
+ * are taken out of H (PointToLineCovariance) the default 1.2 makes the
  * office's unit-test route and the simulated office and lab consistent
  * (doc/cfidc-matcher.md).
  *
@@ -113,7 +113,7 @@ class IterativeDualCorrespondence
 		 * (ReferencePolyline::directionSigma) [rad]. */
 		double max_line_direction_sigma = mrpt::DEG2RAD(5.0);
 		double guess_gate_chi2 = 21.1;	//!< 99.99% for 3 dof; 0 = off
-		double covariance_inflation = 1.3;  //!< variance scale of Censi's formula
+		double covariance_inflation = 1.2;  //!< variance scale of Censi's formula
 		double min_range_sigma = 0.005;	 //!< [m] covariance noise floor
 		double max_translation_sigma = 0.1;	 //!< [m]
 		double max_rotation_sigma = mrpt::DEG2RAD(3.0);	 //!< [rad]
