@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Errors of a run's scan matches against ground truth, from matches.txt.
 
-Usage: scripts/match-errors.py RESULTS/matches.txt GT [--all]
+Usage: scripts/match-errors.py RESULTS/matches.txt GT [--all | --print-signed]
 
 For every match that did not succeed (status failed or gate) -- or every
 match with --all -- prints the converged estimate's error and the initial
@@ -11,8 +11,9 @@ gate's rejection can be told right (the estimate is wrong) or wrong (the
 estimate is right and the guess is not). With --all it ends with the
 successful matches' signed errors (mean and standard deviation: a bias
 shows in the mean) beside the standard deviation their covariances
-predict. GT: 't x y yaw' rows (MRPT's .GT.txt) or TUM; nearest row within
-10 ms.
+predict. --print-signed prints only the successful matches' signed
+errors, one "x y [m] yaw [deg]" row each (scripts/bench-match-bias.sh).
+GT: 't x y yaw' rows (MRPT's .GT.txt) or TUM; nearest row within 10 ms.
 """
 import bisect
 import math
@@ -36,8 +37,10 @@ def main():
         sys.exit(__doc__)
     gt = read_poses(sys.argv[2])
     times = [r[0] for r in gt]
-    every = "--all" in sys.argv
-    print("t ref_t status used | estimate error m deg | guess error m deg | reason")
+    only_signed = "--print-signed" in sys.argv
+    every = "--all" in sys.argv or only_signed
+    if not only_signed:
+        print("t ref_t status used | estimate error m deg | guess error m deg | reason")
     counts = {}
     signed = []  # successful matches: (error x, y [m], yaw [rad]), predicted sigmas
     for line in open(sys.argv[1]):
@@ -61,8 +64,14 @@ def main():
                            (math.sqrt(cov[0]), math.sqrt(cov[3]), math.sqrt(cov[5]))))
         right = ee[0] <= 0.05 and abs(ee[1]) <= 1.0
         counts[(status, right)] = counts.get((status, right), 0) + 1
+        if only_signed:
+            continue
         print(f"{t:.3f} {ref_t:.3f} {status} {used} | {ee[0]:.3f} {ee[1]:+.2f} | "
               f"{ge[0]:.3f} {ge[1]:+.2f} | {' '.join(f[33:])[:90]}")
+    if only_signed:
+        for (ex, ey, ew), _ in signed:
+            print(f"{ex:.6f} {ey:.6f} {math.degrees(ew):.6f}")
+        return
     for (status, right), n in sorted(counts.items()):
         print(f"# {status}: {n} with the estimate {'within' if right else 'outside'} 0.05 m / 1 deg of the truth")
     if every and signed:

@@ -80,10 +80,11 @@ void ReferencePolyline::build(
 	// point of a straight wall often missed it and lines stopped at three
 	// points with random normals, which invented constraints along walls
 	// (a corridor's matches 10 cm off along it with a 5 mm sigma;
-	// doc/cfidc-matcher.md, "Local lines"). Tested against the refit
-	// instead, a corner's first points tilted the line enough to pass, and
-	// the rounded corners biased the lab's matches (0.4 mm each along the
-	// motion). sigma is the median scatter across surfaces; the range
+	// doc/cfidc-matcher.md, "Local lines"). (Tested against the refit
+	// instead, lines were less consistent on that corridor and whole runs'
+	// matches more biased along the motion; both longer-line rules carry
+	// such a bias, not understood: same doc.) sigma is the median scatter
+	// across surfaces; the range
 	// noise, estimated on chords of 10 cm at least as dense points would
 	// understate it, is what a line's direction sigma rests on: a line must
 	// not claim a direction better known than it is.
