@@ -28,3 +28,13 @@ held_out_radish_logs() {
 sim_1cm() { # scene
   "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$1-1cm" -q --set Laser:range_noise=0.01 > /dev/null
 }
+# A benchmark's laser matcher: MATCHER from its second argument (else the
+# default given), and MATCHER_SETS, --set options for its arguments 3..
+# (KEY=VALUE in that matcher's section).
+matcher_args() { # default-matcher, script arguments...
+  local default="$1" kv
+  shift
+  MATCHER="${2:-$default}"
+  MATCHER_SETS=()
+  for kv in "${@:3}"; do MATCHER_SETS+=(--set "ScanMatcher.${MATCHER#featloc::}:$kv"); done
+}

@@ -11,9 +11,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-match-bias "$@"
-MATCHER="${2:-featloc::IdcMatcher}"
-SETS=()
-for kv in "${@:3}"; do SETS+=(--set "ScanMatcher.${MATCHER#featloc::}:$kv"); done
+matcher_args featloc::IdcMatcher "$@"
 
 machine_line
 echo
@@ -30,7 +28,7 @@ for scene in office lab; do
       --set Laser:range_noise=0.01 > /dev/null
     run="$OUT/run-$scene-seed$seed"
     "$BIN/featloc-run" "$ROOT/config.ini" "$log.rawlog" --out "$run" -q \
-      --set "ScanMatcher:class=$MATCHER" "${SETS[@]}" --set "Evaluation:ground_truth=$log.gt.txt" \
+      --set "ScanMatcher:class=$MATCHER" "${MATCHER_SETS[@]}" --set "Evaluation:ground_truth=$log.gt.txt" \
       --set Output:write_scene=false --set Output:write_rawlog=false > /dev/null
     ates="$ates $(fmt "$(jq -r '.evaluation.ate_m.rmse * 1000' "$run/summary.json")" 1)"
     python3 "$ROOT/scripts/match-errors.py" "$run/matches.txt" "$log.gt.txt" --print-signed >> "$OUT/$scene-errors.txt"

@@ -26,9 +26,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-stereo-runs "$@"
-MATCHER="${2:-featloc::IcpMatcher}"
-MATCHER_SETS=()
-for kv in "${@:3}"; do MATCHER_SETS+=(--set "ScanMatcher.${MATCHER#featloc::}:$kv"); done
+matcher_args featloc::IcpMatcher "$@"
 CONFIG="$ROOT/configs/stereo-moon-lab.ini"
 
 # The laser worlds' surfaces the stereo renderer has no material for get
