@@ -57,6 +57,7 @@ EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(const Belief& b,
 	// landmark's (1 dof gate): a shorter piece of the line moves neither.
 	const double endGate2 = mrpt::math::chi2inv(options.landmark_gate_probability, 1);
 	std::vector<VerticalLandmarkObservation> used;
+	std::vector<Eigen::Index> firstRow;	 // of each used observation in the stack
 	Eigen::Index m = 0;
 	for (const auto& pr : paired)
 	{
@@ -69,6 +70,7 @@ EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(const Belief& b,
 		check(z.lLow, z.sigmaLow, k + 2);
 		check(z.lHigh, z.sigmaHigh, k + 3);
 		used.push_back(z);
+		firstRow.push_back(m);
 		m += VerticalLandmarkConstraint(z).size();
 	}
 	// Stacked constraint on [robot; landmarks used]: nu = -G, H = dG/dS.
@@ -92,18 +94,14 @@ EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(const Belief& b,
 		for (Eigen::Index c = 0; c < 4; c++) st.cols.push_back(k + c);
 		// The observations of one wall share its plane fit: their
 		// positions' (rows 0-1) cross-covariance.
-		Eigen::Index rowB = 0;
 		for (size_t b2 = 0; b2 < a; b2++)
 		{
 			const auto& zb = used[b2];
-			if (zb.wall == used[a].wall)
-			{
-				const Eigen::Matrix2d C =
-					used[a].planeJacobian * used[a].planeCovariance * zb.planeJacobian.transpose();
-				st.R.block<2, 2>(row, rowB) = C;
-				st.R.block<2, 2>(rowB, row) = C.transpose();
-			}
-			rowB += VerticalLandmarkConstraint(zb).size();
+			if (zb.wall != used[a].wall) continue;
+			const Eigen::Matrix2d C =
+				used[a].planeJacobian * used[a].planeCovariance * zb.planeJacobian.transpose();
+			st.R.block<2, 2>(row, firstRow[b2]) = C;
+			st.R.block<2, 2>(firstRow[b2], row) = C.transpose();
 		}
 		row += r;
 		col += 4;
@@ -122,16 +120,12 @@ EkfLocalizer::VerticalStack EkfLocalizer::stackVertical(const Belief& b,
 		st.nu.segment<2>(row) = nu;
 		st.H.block<2, 3>(row, 0) = Hw;
 		st.R.block<2, 2>(row, row) = w->covariance;
-		Eigen::Index rowA = 0;
-		for (const auto& z : used)
+		for (size_t a = 0; a < used.size(); a++)
 		{
-			if (z.wall == w->wall)
-			{
-				const Eigen::Matrix2d C = z.planeJacobian * z.planeCovariance;
-				st.R.block<2, 2>(rowA, row) = C;
-				st.R.block<2, 2>(row, rowA) = C.transpose();
-			}
-			rowA += VerticalLandmarkConstraint(z).size();
+			if (used[a].wall != w->wall) continue;
+			const Eigen::Matrix2d C = used[a].planeJacobian * used[a].planeCovariance;
+			st.R.block<2, 2>(firstRow[a], row) = C;
+			st.R.block<2, 2>(row, firstRow[a]) = C.transpose();
 		}
 		row += 2;
 	}
