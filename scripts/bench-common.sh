@@ -24,9 +24,15 @@ held_out_radish_logs() {
   done
 }
 # featloc-sim's log of worlds/SCENE.ini with 1 cm range noise, as
-# $OUT/SCENE-1cm.rawlog (+ .gt.txt): the static calibration scenes.
-sim_1cm() { # scene
-  "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$1-1cm" -q --set Laser:range_noise=0.01 > /dev/null
+# $OUT/SCENE-1cm.rawlog (+ .gt.txt): the static calibration scenes; with a
+# SEED, that seed's path as $OUT/SCENE-seedSEED.rawlog (whole runs).
+sim_1cm() { # scene [seed]
+  if [ $# -gt 1 ]; then
+    "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$1-seed$2" --seed "$2" -q \
+      --set Laser:range_noise=0.01 > /dev/null
+  else
+    "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$1-1cm" -q --set Laser:range_noise=0.01 > /dev/null
+  fi
 }
 # A benchmark's laser matcher: MATCHER from its second argument (else the
 # default given), and MATCHER_SETS, --set options for its arguments 3..

@@ -24,8 +24,7 @@ for scene in office lab; do
   : > "$OUT/$scene-errors.txt"
   for seed in 1 2 3 4; do
     log="$OUT/$scene-seed$seed"
-    [ -f "$log.rawlog" ] || "$BIN/featloc-sim" "$ROOT/worlds/$scene.ini" --out "$log" --seed "$seed" -q \
-      --set Laser:range_noise=0.01 > /dev/null
+    [ -f "$log.rawlog" ] || sim_1cm "$scene" "$seed"
     run="$OUT/run-$scene-seed$seed"
     "$BIN/featloc-run" "$ROOT/config.ini" "$log.rawlog" --out "$run" -q \
       --set "ScanMatcher:class=$MATCHER" "${MATCHER_SETS[@]}" --set "Evaluation:ground_truth=$log.gt.txt" \

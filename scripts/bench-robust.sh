@@ -102,8 +102,7 @@ echo "| scene | seed | IcpMatcher off | on | IdcMatcher off | on | match time IC
 echo "|---|---|---|---|---|---|---|"
 for scene in office lab; do
   for seed in 1 2 3 4; do
-    "$BIN/featloc-sim" "$ROOT/worlds/$scene.ini" --out "$OUT/$scene-seed$seed" --seed "$seed" -q \
-      --set Laser:range_noise=0.01 > /dev/null
+    sim_1cm "$scene" "$seed"
     row="| $scene | $seed"
     for m in IcpMatcher IdcMatcher; do
       for on in false true; do
