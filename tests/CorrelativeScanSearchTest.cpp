@@ -68,6 +68,43 @@ TEST(CorrelativeScanSearch, FindsTheMotionFromFarOffAndNoContenderInARoom)
 	EXPECT_NEAR(mrpt::RAD2DEG(r.windowYaw), 20, 1e-9);
 }
 
+// A keyframe's tables are built once for every scan matched against it:
+// one search object that keeps them answers as fresh ones do, and a new
+// reference (or a wider window) rebuilds them.
+TEST(CorrelativeScanSearch, KeptTablesAnswerAsFreshOnes)
+{
+	const SyntheticRoom room = SyntheticRoom::office();
+	const CPose2D p0(0.3, -0.4, 0.2), p1(1.1, 0.2, -0.3);
+	const CPose2D motions[] = {CPose2D(0.2, 0.1, mrpt::DEG2RAD(5.0)),
+		CPose2D(0.35, -0.05, mrpt::DEG2RAD(-7.0)), CPose2D(0.1, 0.2, mrpt::DEG2RAD(2.0))};
+	const auto ref0 = ScanPoints::fromScan(*room.scan(p0));
+	const auto ref1 = ScanPoints::fromScan(*room.scan(p1));
+	CorrelativeScanSearch kept;
+	// The same reference and window (kept), another reference (rebuilt),
+	// the first again (rebuilt), then with a wider window (another top
+	// level: rebuilt).
+	const std::pair<const ScanPoints*, double> runs[] = {
+		{&ref0, 0.2}, {&ref0, 0.2}, {&ref1, 0.2}, {&ref0, 0.2}, {&ref0, 0.5}};
+	for (const auto& [ref, halfWindow] : runs)
+		for (const auto& motion : motions)
+		{
+			const CPose2D from = ref == &ref0 ? p0 : p1;
+			const auto cur = ScanPoints::fromScan(*room.scan(from + motion));
+			const double sxy = halfWindow / 3;
+			const auto g = diagonalPoseGaussian(CPose2D(motion.x() + 0.05, motion.y(), motion.phi()),
+				sxy, mrpt::DEG2RAD(10) / 3);
+			const auto a = kept.search(*ref, cur, g);
+			CorrelativeScanSearch fresh;
+			const auto b = fresh.search(*ref, cur, g);
+			ASSERT_TRUE(a.success && b.success) << a.failureReason << b.failureReason;
+			EXPECT_EQ(a.best, b.best);
+			EXPECT_EQ(a.bestScore, b.bestScore);
+			EXPECT_EQ(a.contenders.size(), b.contenders.size());
+			EXPECT_EQ(kept.evidenceFor(motion, a.best), fresh.evidenceFor(motion, b.best));
+			EXPECT_LE(translationError(a.best, motion), a.resolution);
+		}
+}
+
 // Every featloc matcher, with its defaults, from +-0.5 m / +-20 deg (the
 // issue's target basin) in the simulated office's corridor (1 cm noise):
 // all converge to the truth.

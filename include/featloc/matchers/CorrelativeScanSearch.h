@@ -2,6 +2,7 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -163,6 +164,11 @@ class CorrelativeScanSearch
 	void sharpScores(const mrpt::poses::CPose2D& pose, std::vector<double>& out) const;
 
 	CorrelationTables m_tables;	 // of the reference's surfaces
+	// The reference, top level and options (resolution, hitSigma,
+	// sharpSigma) the tables were built for (top -1: none yet).
+	ScanPoints m_builtReference;
+	int m_builtTop = -1;
+	std::array<double, 3> m_builtOptions{};
 	std::vector<ScanSegment> m_segments;  // the reference's surfaces
 	PointNoiseEstimator m_noise;
 	double m_sharpSigma = 0;  // [m] the sharp score's width for this reference
