@@ -48,6 +48,22 @@ double yawErrorDeg(const CPose2D& a, const CPose2D& b)
 // The search alone: the grid pose nearest the truth, from an initial error
 // far outside any of the papers' basins, and no contender in a room whose
 // corners fix all three degrees of freedom.
+// On by default for featloc's matchers (issue 15 item 1), off for MRPT's
+// ICP, the peer they are measured against; a key turns either around.
+TEST(CorrelativeScanSearch, OnByDefaultForFeatlocMatchersOffForMrptIcp)
+{
+	for (const char* cls : kMatchers)
+	{
+		const bool icp = std::string(cls) == "featloc::IcpMatcher";
+		EXPECT_EQ(test::configuredMatcher(cls)->coarseSearchOptions().enabled, !icp) << cls;
+		EXPECT_EQ(test::configuredMatcher(cls, icp ? "coarse_search=true" : "coarse_search=false")
+					  ->coarseSearchOptions()
+					  .enabled,
+			icp)
+			<< cls;
+	}
+}
+
 TEST(CorrelativeScanSearch, FindsTheMotionFromFarOffAndNoContenderInARoom)
 {
 	const SyntheticRoom room = SyntheticRoom::office();

@@ -441,11 +441,19 @@ TEST(IdcMatcher, FailuresAreReportedWithAReason)
 {
 	const SyntheticRoom room = SyntheticRoom::office();
 	const auto ref = room.scan(CPose2D());
-	// No overlap: the guess puts the current scan 20 m away.
-	const MatchResult far = matcher("featloc::IdcMatcher")
-								->match(*ref, *ref, diagonalPoseGaussian(CPose2D(20, 0, 0), 0.01, 0.01));
+	// No overlap: the guess puts the current scan 20 m away. The coarse
+	// search (on by default) says so first; IDC alone runs out of pairs.
+	const auto away = diagonalPoseGaussian(CPose2D(20, 0, 0), 0.01, 0.01);
+	const MatchResult far = matcher("featloc::IdcMatcher")->match(*ref, *ref, away);
 	EXPECT_FALSE(far.success);
-	EXPECT_NE(far.failureReason.find("too few pairs"), std::string::npos) << far.failureReason;
+	EXPECT_EQ(far.failureKind, "no_overlap");
+	EXPECT_NE(far.failureReason.find("no current point near the reference"), std::string::npos)
+		<< far.failureReason;
+	const MatchResult farAlone =
+		matcher("featloc::IdcMatcher", "coarse_search=false")->match(*ref, *ref, away);
+	EXPECT_FALSE(farAlone.success);
+	EXPECT_NE(farAlone.failureReason.find("too few pairs"), std::string::npos)
+		<< farAlone.failureReason;
 	// A scan of a handful of isolated points has no segment for CF-IDC.
 	auto sparse = std::make_shared<mrpt::obs::CObservation2DRangeScan>(*ref);
 	for (size_t i = 0; i < sparse->getScanSize(); i++)

@@ -5,6 +5,7 @@
 #include "featloc/app/RunConfiguration.h"
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/ConfigError.h"
+#include "featloc/localization/MapLocalizer.h"
 #include "featloc/matchers/IcpMatcher.h"
 #include "featloc/registerClasses.h"
 #include "support/DocumentedKeys.h"
@@ -181,4 +182,28 @@ TEST(RunConfiguration, ShippedConfigIniIsTheBuiltInDefaults)
 	shipped.input.rawlog.clear();
 	shipped.evaluation.ground_truth.clear();
 	EXPECT_EQ(saved(shipped), saved(RunConfiguration::defaults()));
+}
+
+// The map matcher's coarse search is [Localization] map_coarse_search's
+// (off by default), whatever its matcher section says for scan-to-scan
+// matches (PCM's: on by default).
+TEST(RunConfiguration, TheMapMatchersCoarseSearchIsTheLocalizationSections)
+{
+	registerClasses();
+	const std::string world = std::string(FEATLOC_SOURCE_DIR) + "/worlds/office.ini";
+	auto load = [&](const std::string& extra) {
+		TrackedConfig c;
+		c.loadText("[Pipeline]\nestimator = ekf\n[Localization]\nmap = " + world + "\n" + extra,
+			"map.ini");
+		return RunConfiguration::load(c);
+	};
+	const RunConfiguration off = load("");
+	ASSERT_TRUE(off.mapLocalizer);
+	EXPECT_EQ(off.mapLocalizer->mapMatcher().className(), "featloc::PcmFeatureMatcher");
+	EXPECT_FALSE(off.mapLocalizer->mapMatcher().coarseSearchOptions().enabled);
+	const RunConfiguration on = load("map_coarse_search = true\n");
+	EXPECT_TRUE(on.mapLocalizer->mapMatcher().coarseSearchOptions().enabled);
+	const RunConfiguration sectionOff =
+		load("map_coarse_search = true\n[ScanMatcher.PcmFeatureMatcher]\ncoarse_search = false\n");
+	EXPECT_TRUE(sectionOff.mapLocalizer->mapMatcher().coarseSearchOptions().enabled);
 }

@@ -141,11 +141,11 @@ TEST(ScanMatcherFallback, TheFallbackReadsItsOwnSectionAndIsOneLevelDeep)
 	// its section's.
 	auto m = fromIni("featloc::PcmFeatureMatcher",
 		"[ScanMatcher.PcmFeatureMatcher]\nfallback_class = IdcMatcher\n"
-		"[ScanMatcher.IdcMatcher]\nfallback_class = PcmFeatureMatcher\ncoarse_search = true\n");
+		"[ScanMatcher.IdcMatcher]\nfallback_class = PcmFeatureMatcher\ncoarse_search = false\n");
 	ASSERT_TRUE(m->fallback());
 	EXPECT_FALSE(m->fallback()->fallback());
-	EXPECT_TRUE(m->fallback()->coarseSearchOptions().enabled);
-	EXPECT_FALSE(m->coarseSearchOptions().enabled);
+	EXPECT_FALSE(m->fallback()->coarseSearchOptions().enabled);
+	EXPECT_TRUE(m->coarseSearchOptions().enabled);
 
 	const std::string self = configErrorOf("featloc::PcmFeatureMatcher",
 		"[ScanMatcher.PcmFeatureMatcher]\nfallback_class = PcmFeatureMatcher\n");

@@ -51,6 +51,7 @@ RunConfiguration RunConfiguration::load(const mrpt::config::CConfigFileBase& cfg
 			config::fail(cfg, LocalizationOptions::kSection, "matcher_class", e.what());
 		}
 		mapMatcher->loadParams(cfg, ScanMatcherFactory::paramsSection(mapMatcher->className()));
+		mapMatcher->coarseSearchOptions().enabled = rc.localization.map_coarse_search;
 		auto map = std::make_shared<LocalizationMap>(LocalizationMapFile::load(rc.localization));
 		rc.mapLocalizer = std::make_shared<MapLocalizer>(
 			map, mapMatcher, rc.localization, rc.pipeline.global_start);

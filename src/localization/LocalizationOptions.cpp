@@ -11,6 +11,7 @@ void LocalizationOptions::loadFromConfigFile(
 	using namespace featloc::config;
 	read(c, s, "map", map);
 	read(c, s, "matcher_class", matcher_class);
+	read(c, s, "map_coarse_search", map_coarse_search);
 	read(c, s, "grid_resolution", grid_resolution);
 	read(c, s, "image_resolution", image_resolution);
 	read(c, s, "image_origin", image_origin);
@@ -53,6 +54,9 @@ void LocalizationOptions::saveToConfigFile(
 	write(c, s, "matcher_class", matcher_class,
 		"matcher of scans against the map (empty: the [ScanMatcher] class); parameters in "
 		"[ScanMatcher.<Class>]");
+	write(c, s, "map_coarse_search", map_coarse_search,
+		"the map matcher's correlative coarse search (its section's coarse_search is for "
+		"scan-to-scan matches)");
 	write(c, s, "grid_resolution", grid_resolution,
 		"[m] cell of the grid a simplemap or world file is drawn into");
 	write(c, s, "image_resolution", image_resolution, "[m/pixel] occupancy image");

@@ -27,6 +27,13 @@ struct LocalizationOptions : public mrpt::config::CLoadableOptions
 	 * section's. PCM by default: against a map's virtual scans it has half
 	 * ICP's error at a third of its time (doc/benchmarks.md). */
 	std::string matcher_class = "featloc::PcmFeatureMatcher";
+	/** The map matcher's correlative coarse search (its section's
+	 * `coarse_search` is for the scan-to-scan matches). Off by default: a
+	 * map match starts from the tracked pose, and a robot whose pose is
+	 * lost is the global search's (MapLocalizer); with it on, the office's
+	 * map matches take five times longer and its largest error grows
+	 * (doc/benchmarks.md, "The search on by default"). */
+	bool map_coarse_search = false;
 	/** [m] cell size of the grid a simplemap or a world file is drawn into
 	 * (gridmaps and images keep their own). */
 	double grid_resolution = 0.02;

@@ -73,6 +73,8 @@ class MapLocalizer
 
 	bool tracking() const { return m_tracking; }
 	const LocalizationMap& map() const { return *m_map; }
+	/** The matcher of scans against the map. */
+	const ScanMatcher& mapMatcher() const { return m_tracker.matcher(); }
 	const LocalizationOptions& options() const { return m_options; }
 
 	/** A hypothesis moved by odometry is searched for within this of where

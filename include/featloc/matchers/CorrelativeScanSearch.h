@@ -47,9 +47,10 @@ class CorrelativeScanSearch
    public:
 	struct Options : public mrpt::config::CLoadableOptions
 	{
-		/** coarse_search. Off by default until its ambiguity test holds on
-		 * noisy logs (doc/benchmarks.md, "Wide basin"). */
-		bool enabled = false;
+		/** coarse_search: on by default for featloc's matchers (PCM, IDC,
+		 * CF-IDC), whose "as published" variants switch it off; off for
+		 * IcpMatcher (MRPT's ICP, the peer). */
+		bool enabled = true;
 		double windowSigmas = 3.0;	//!< half-window in sigmas of the guess
 		/** The half-window is at least this: odometry's covariance can be
 		 * far too small (a 5.7 deg turn error under a 1 deg sigma on MRPT's

@@ -53,6 +53,11 @@ class IcpMatcher : public ScanMatcher
 
 	Parameters params;
 
+	/** MRPT's ICP as MRPT runs it, the peer featloc is measured against:
+	 * the wide-basin search that every featloc matcher runs by default is
+	 * off here unless `coarse_search = true`. */
+	IcpMatcher() { coarseSearchOptions().enabled = false; }
+
    protected:
 	void loadOwnParams(
 		const mrpt::config::CConfigFileBase& cfg,

@@ -55,6 +55,7 @@ class ScanMatcher : public mrpt::rtti::CObject
 
 	/** The wide-basin stage's parameters (`coarse_*` keys). */
 	CorrelativeScanSearch::Options& coarseSearchOptions() { return m_coarse.options; }
+	const CorrelativeScanSearch::Options& coarseSearchOptions() const { return m_coarse.options; }
 
 	/** Motion of the robot from the reference scan to the current scan.
 	 * \param initialGuess robot-frame motion guess (e.g. the odometry
