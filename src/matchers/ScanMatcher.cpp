@@ -263,28 +263,6 @@ void ScanMatcher::matchFromCoarseSearch(const ScanPoints& reference, const ScanP
 	matchPoints(reference, current,
 		mrpt::poses::CPosePDFGaussian(coarse.best, coarse.gridCovariance()), r);
 	if (!r.success) return;
-	// The search scored every pose of the window and found its best inside;
-	// iterations that walked out of it (a CF-IDC match of 80 points on the
-	// office went 1.6 m) converged where the search did not look. The
-	// ambiguity test would flag it with a covariance grown to reach back to
-	// the search's best, which the guess gate then lets through: a failure
-	// is what it is.
-	const Eigen::Vector3d off = poseDifference(r.estimate.mean, window.mean);
-	if (std::abs(off[0]) > coarse.windowXY[0] + coarse.resolution ||
-		std::abs(off[1]) > coarse.windowXY[1] + coarse.resolution ||
-		std::abs(off[2]) > coarse.windowYaw + coarse.yawStep)
-	{
-		char buf[260];
-		std::snprintf(buf, sizeof(buf),
-			"the iterations left the window the coarse search scored: converged %.3f m, %.3f m, "
-			"%.2f deg from the guess (window +-%.2f m, +-%.2f m, +-%.1f deg)",
-			off[0], off[1], mrpt::RAD2DEG(off[2]), coarse.windowXY[0], coarse.windowXY[1],
-			mrpt::RAD2DEG(coarse.windowYaw));
-		r.success = false;
-		r.failureKind = "left_window";
-		r.failureReason = buf;
-		return;
-	}
 	// The estimate against the search's other solutions (and its own best,
 	// if the iterations walked away from it into another minimum). Refining
 	// the rival too and keeping the better refinement was tried: it moved

@@ -30,8 +30,7 @@ struct MatchResult
 	/** What kind of failure (empty on success; set on every failure that
 	 * ScanMatcher::match returns), for the counts of
 	 * summary.json and featloc-bench: "too_few_points", "no_overlap" (the
-	 * coarse search), "left_window" (the iterations converged outside the
-	 * window the coarse search scored), "ambiguous" (another solution explains the scan about
+	 * coarse search), "ambiguous" (another solution explains the scan about
 	 * as well as the estimate), "guess_gate", or "matcher" (the matcher's
 	 * own reasons). */
 	std::string failureKind;
