@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# The correlative coarse search on by default (doc/benchmarks.md, "The
+# search on by default"): whole runs (featloc-run, matcher chain, keyframes
+# as in config.ini) with every matcher, coarse_search off and on, side by
+# side: ATE rmse against the ground truth and the mean time per match.
+#  - MRPT's 5 cm-noise simulated log (the README's default data), IcpMatcher,
+#    matcher chain and EKF.
+#  - The office and lab worlds, 1 cm noise, seeds 1-4 (the logs of
+#    scripts/bench-robust.sh's whole-run table), every matcher.
+# The pairwise figures (every pair counted, flagged and silent failures)
+# are scripts/bench-robust.sh's "+ coarse" rows.
+# Usage: scripts/bench-search-default.sh [OUTDIR]   (about 12 min on 2 cores)
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
+bench_init bench-search-default "$@"
+
+run() { # out, log, gt, matcher, on, extra --set args...
+  local out="$1" log="$2" gt="$3" m="$4" on="$5"
+  shift 5
+  "$BIN/featloc-run" "$ROOT/config.ini" "$log" --out "$out" -q \
+    --set "ScanMatcher:class=featloc::$m" --set "ScanMatcher.$m:coarse_search=$on" \
+    --set "Evaluation:ground_truth=$gt" --set Output:write_scene=false \
+    --set Output:write_rawlog=false "$@" > /dev/null
+}
+cell() { # out: "ATE [mm] / time [ms]"
+  echo "$(fmt "$(jq -r '.evaluation.ate_m.rmse * 1000' "$1/summary.json")" 1) / $(fmt "$(jq -r '.match_time_s.mean * 1000' "$1/summary.json")" 2)"
+}
+
+machine_line
+echo
+echo "### MRPT's simulated log (5 cm noise, 1733 scans), IcpMatcher"
+echo
+echo "| estimator | coarse_search | ATE rmse [m] | ambiguous, used inflated | time/match mean [ms] |"
+echo "|---|---|---|---|---|"
+D=/usr/share/mrpt/datasets/graphslam-engine-demos/action_observations_map
+for est in matcher ekf; do
+  for on in false true; do
+    r="$OUT/run-simul-$est-$on"
+    run "$r" "$D/simul.rawlog" "$D/simul.rawlog.GT.txt" IcpMatcher "$on" --set "Pipeline:estimator=$est"
+    echo "| $est | $on | $(fmt "$(jq -r '.evaluation.ate_m.rmse' "$r/summary.json")") | $(jq -r '.counts.ambiguous_matches_used' "$r/summary.json") | $(fmt "$(jq -r '.match_time_s.mean * 1000' "$r/summary.json")" 2) |"
+  done
+done
+echo
+echo "### Office and lab, 1 cm noise, seeds 1-4 (matcher chain): ATE rmse [mm] / time per match [ms]"
+echo
+MATCHERS="IcpMatcher PcmFeatureMatcher IdcMatcher CfIdcMatcher"
+header="| scene | seed"
+for m in $MATCHERS; do header="$header | $m off | on"; done
+echo "$header |"
+echo "|---|---$(for m in $MATCHERS; do printf '|---|---'; done)|"
+for scene in office lab; do
+  for seed in 1 2 3 4; do
+    [ -f "$OUT/$scene-seed$seed.rawlog" ] || sim_1cm "$scene" "$seed"
+    row="| $scene | $seed"
+    for m in $MATCHERS; do
+      for on in false true; do
+        r="$OUT/run-$scene-seed$seed-$m-$on"
+        run "$r" "$OUT/$scene-seed$seed.rawlog" "$OUT/$scene-seed$seed.gt.txt" "$m" "$on"
+        row="$row | $(cell "$r")"
+      done
+    done
+    echo "$row |"
+  done
+done
+echo
+echo "(defaults: coarse_search on for PcmFeatureMatcher, IdcMatcher, CfIdcMatcher; off for IcpMatcher; raw outputs in $OUT)"
