@@ -256,7 +256,9 @@ TEST(StereoBoundaryChecks, AnEndIsSearchedOnlyWhereItsDepthStepCanBeSeen)
 	auto endB = [&](const std::vector<MapWall>& walls) {
 		const auto depth = px.nearestWallDepth(walls, head, X);
 		const auto r = px.extract(walls[0], 0, head, X, S, disparity, &depth);
-		return x.endStepVisible(r, false, head.toCamera(X, walls[0].b).y(), head, depth);
+		BoundarySearch::Options search;  // the window and evidence process() searches
+		search.window_sigmas = x.options.window_sigmas;
+		return x.endStepVisible(r, false, head.toCamera(X, walls[0].b).y(), head, depth, search);
 	};
 	const MapWall plane{{3, -0.5}, {3, 0.5}, "plane"};
 	EXPECT_TRUE(endB({plane, {{6, -3}, {6, 3}, "far wall"}}));

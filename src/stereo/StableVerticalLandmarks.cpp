@@ -154,13 +154,13 @@ bool StableVerticalLandmarks::continuesCoplanar(size_t w, bool atA) const
 }
 
 bool StableVerticalLandmarks::endStepVisible(const PlanarRegion& pl, bool atA, double depth,
-	const StereoHead& head, const std::vector<double>& nearest) const
+	const StereoHead& head, const std::vector<double>& nearest, const BoundarySearch::Options& search) const
 {
 	if (depth <= 0 || static_cast<int>(nearest.size()) != head.width) return false;
 	const double uE = atA ? pl.uA : pl.uB, sE = atA ? pl.sigmaUA : pl.sigmaUB;
 	const int outward = (atA ? pl.uB : pl.uA) > uE ? -1 : 1;
 	const double dEnd = head.fx * head.baseline / depth;
-	const double reach = options.window_sigmas * sE + BoundarySearch::Options().evidence_px;
+	const double reach = search.window_sigmas * sE + search.evidence_px;
 	// From half a column past the end: the end's own column meets the wall.
 	for (double k = 1; k <= reach; k += 1)
 	{
@@ -464,7 +464,7 @@ StereoLandmarkFrame StableVerticalLandmarks::process(
 			// the plane on (a whiteboard on a wall) the segments may still
 			// place it.
 			const bool coplanar = continuesCoplanar(p, atA);
-			if (!coplanar && !endStepVisible(pl, atA, depthE, head, nearest)) continue;
+			if (!coplanar && !endStepVisible(pl, atA, depthE, head, nearest, boundaries.options)) continue;
 			const auto b = boundaries.search(pl, f.disparity, atA, cols, lengths, rows, coplanar);
 			if (b.found && (!best.found || b.sigma < best.sigma)) best = b;
 		}

@@ -106,14 +106,14 @@ class StableVerticalLandmarks : public StereoLandmarkExtractor
 	 * wall). Only there may an intensity edge alone be the boundary. */
 	bool continuesCoplanar(size_t w, bool atA) const;
 	/** Whether the depth step at plane `pl`'s end a (or b), `depth` ahead,
-	 * can be seen from the predicted pose: beyond it, over its 3-sigma
-	 * window and the boundary search's evidence, the map's nearest wall
+	 * can be seen from the predicted pose: beyond it, over the window and
+	 * the evidence the boundary search (`search`) looks at, the map's nearest wall
 	 * (`nearest`, PlanarRegionExtractor::nearestWallDepth) lies behind the
 	 * plane by kEndStepPx of disparity. A wall meeting it at a corner or
 	 * standing just behind it leaves the block matcher no step to see; one
 	 * in front hides the end (featloc's check). */
 	bool endStepVisible(const PlanarRegion& pl, bool atA, double depth, const StereoHead& head,
-		const std::vector<double>& nearest) const;
+		const std::vector<double>& nearest, const BoundarySearch::Options& search) const;
 	/** Whether walls w and k lie on one line (within kCoplanarAngle and
 	 * kCoplanarDistance). */
 	bool collinear(size_t w, size_t k) const;
