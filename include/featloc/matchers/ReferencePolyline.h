@@ -40,9 +40,10 @@ class ReferencePolyline
 	/** The surface an edge lies on, for the point-to-line error: the total
 	 * least squares line through the edge's two points and as many of
 	 * their neighbours (up to lineHalfWindow on each side, within the
-	 * segment) as leave every point of the refitted line within 3 sigma of
-	 * it, sigma the scan's robust point noise (PointNoiseEstimator::
-	 * estimate, the median scatter across surfaces, at least 1 mm).
+	 * segment, one at a time) as lie within 3 sigma of where the line so
+	 * far predicts them, sigma the scan's robust point noise
+	 * (PointNoiseEstimator::estimate, the median scatter across surfaces,
+	 * at least 1 mm; build() gives the prediction's variance).
 	 * Two-point edges of raw
 	 * points are as noisy in direction as the points are close (1 cm
 	 * noise, 2.6 cm apart at 3 m: +-20 degrees): their normals would invent
