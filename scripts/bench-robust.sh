@@ -17,9 +17,10 @@
 #    (or $FEATLOC_LASER2D) is there.
 #  - On the simulated scenes (--world), each matcher's mean error beside
 #    the pairs' Cramer-Rao bound (issue 15 item 6).
-#  - The whole-run cost: featloc-run on MRPT's 5 cm-noise simulated log with
-#    ICP and coarse_search off / on (ATE against its ground truth), and the
-#    same over the office and lab with four seeds each (ICP and IDC).
+#  - The whole-run cost: scripts/bench-search-default.sh into the same OUT
+#    (featloc-run on MRPT's 5 cm-noise simulated log with ICP, and over the
+#    office and lab with four seeds each with every matcher, coarse_search
+#    off / on; ATE against the ground truth).
 # Usage: scripts/bench-robust.sh [OUTDIR]   (about 30 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
@@ -78,46 +79,10 @@ else
   echo "(no real logs: $LASER2D not found)"
 fi
 
+# The whole-run cost (MRPT's simulated log with ICP; the office and lab,
+# four seeds, every matcher; search off / on): one script makes those tables
+# for this benchmark and for "The search on by default", into the same OUT.
 echo
-echo "### Whole run: MRPT's simulated log (5 cm noise), IcpMatcher"
-echo
-echo "| estimator | coarse_search | ATE rmse [m] | failed matches | ambiguous, used inflated | time/match mean [ms] |"
-echo "|---|---|---|---|---|---|"
-D=/usr/share/mrpt/datasets/graphslam-engine-demos/action_observations_map
-for est in matcher ekf; do
-  for on in false true; do
-    "$BIN/featloc-run" "$ROOT/config.ini" "$D/simul.rawlog" --out "$OUT/run-simul-$est-$on" -q \
-      --set "Evaluation:ground_truth=$D/simul.rawlog.GT.txt" --set "Pipeline:estimator=$est" \
-      --set "ScanMatcher.IcpMatcher:coarse_search=$on" > /dev/null
-    j="$OUT/run-simul-$est-$on/summary.json"
-    echo "| $est | $on | $(fmt "$(jq -r '.evaluation.ate_m.rmse' "$j")") | $(jq -r '.counts.match_failures' "$j") of $(jq -r '.counts.matches' "$j") | $(jq -r '.counts.ambiguous_matches_used' "$j") | $(fmt "$(jq -r '.match_time_s.mean * 1000' "$j")" 2) |"
-  done
-done
-echo
-echo "### Whole runs: office and lab, 1 cm noise, four seeds each (matcher chain)"
-echo
-echo "One trajectory is one draw of a random walk: the same comparison over eight."
-echo
-echo "| scene | seed | IcpMatcher off | on | IdcMatcher off | on | match time ICP off / on [ms] |"
-echo "|---|---|---|---|---|---|---|"
-for scene in office lab; do
-  for seed in 1 2 3 4; do
-    sim_1cm "$scene" "$seed"
-    row="| $scene | $seed"
-    for m in IcpMatcher IdcMatcher; do
-      for on in false true; do
-        r="$OUT/run-$scene-seed$seed-$m-$on"
-        "$BIN/featloc-run" "$ROOT/config.ini" "$OUT/$scene-seed$seed.rawlog" --out "$r" -q \
-          --set "ScanMatcher:class=featloc::$m" --set "ScanMatcher.$m:coarse_search=$on" \
-          --set "Evaluation:ground_truth=$OUT/$scene-seed$seed.gt.txt" \
-          --set Output:write_scene=false --set Output:write_rawlog=false > /dev/null
-        row="$row | $(fmt "$(jq -r '.evaluation.ate_m.rmse * 1000' "$r/summary.json")" 1)"
-      done
-    done
-    row="$row | $(fmt "$(jq -r '.match_time_s.mean * 1000' "$OUT/run-$scene-seed$seed-IcpMatcher-false/summary.json")" 2) / $(fmt "$(jq -r '.match_time_s.mean * 1000' "$OUT/run-$scene-seed$seed-IcpMatcher-true/summary.json")" 2) |"
-    echo "$row"
-  done
-done
-echo "(ATE rmse in mm)"
+"$ROOT/scripts/bench-search-default.sh" "$OUT" | tail -n +2
 echo
 echo "(raw outputs and basin plots in $OUT)"

@@ -8,7 +8,8 @@
 #  - The office and lab worlds, 1 cm noise, seeds 1-4 (the logs of
 #    scripts/bench-robust.sh's whole-run table), every matcher.
 # The pairwise figures (every pair counted, flagged and silent failures)
-# are scripts/bench-robust.sh's "+ coarse" rows.
+# are scripts/bench-robust.sh's "+ coarse" rows; bench-robust.sh runs this
+# script for its whole-run tables.
 # Usage: scripts/bench-search-default.sh [OUTDIR]   (about 12 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
@@ -30,14 +31,14 @@ machine_line
 echo
 echo "### MRPT's simulated log (5 cm noise, 1733 scans), IcpMatcher"
 echo
-echo "| estimator | coarse_search | ATE rmse [m] | ambiguous, used inflated | time/match mean [ms] |"
-echo "|---|---|---|---|---|"
+echo "| estimator | coarse_search | ATE rmse [m] | failed matches | ambiguous, used inflated | time/match mean [ms] |"
+echo "|---|---|---|---|---|---|"
 D=/usr/share/mrpt/datasets/graphslam-engine-demos/action_observations_map
 for est in matcher ekf; do
   for on in false true; do
     r="$OUT/run-simul-$est-$on"
     run "$r" "$D/simul.rawlog" "$D/simul.rawlog.GT.txt" IcpMatcher "$on" --set "Pipeline:estimator=$est"
-    echo "| $est | $on | $(fmt "$(jq -r '.evaluation.ate_m.rmse' "$r/summary.json")") | $(jq -r '.counts.ambiguous_matches_used' "$r/summary.json") | $(fmt "$(jq -r '.match_time_s.mean * 1000' "$r/summary.json")" 2) |"
+    echo "| $est | $on | $(fmt "$(jq -r '.evaluation.ate_m.rmse' "$r/summary.json")") | $(jq -r '.counts.match_failures' "$r/summary.json") of $(jq -r '.counts.matches' "$r/summary.json") | $(jq -r '.counts.ambiguous_matches_used' "$r/summary.json") | $(fmt "$(jq -r '.match_time_s.mean * 1000' "$r/summary.json")" 2) |"
   done
 done
 echo
