@@ -9,9 +9,12 @@
 #include "featloc/core/ConfigError.h"
 #include "featloc/matchers/CorrelativeScanSearch.h"
 #include "featloc/math/DiagonalPoseGaussian.h"
+#include "support/CommandRunner.h"
 #include "support/ErrorMessage.h"
+#include "support/JsonFile.h"
 #include "support/MatcherTestHelpers.h"
 #include "support/SyntheticRoom.h"
+#include "support/TempDir.h"
 
 using namespace featloc;
 using featloc::test::SyntheticRoom;
@@ -255,4 +258,35 @@ TEST(CorrelativeScanSearch, ParametersRoundTripAndBadValuesNameTheKey)
 			ConfigError)
 			<< bad;
 	}
+}
+
+// A whole run, as a user makes it: CF-IDC (the search on by default) on the
+// simulated office, 1 cm noise, seed 2. One match there has 80 current
+// points; from the search's best its iterations walked 1.6 m away, the
+// ambiguity test grew the covariance back to the search's best, the guess
+// gate let it through, and the run's ATE was 0.80 m (0.05 m without the
+// search). Iterations that leave the searched window to an estimate not
+// clearly better than a solution inside it now fail (`left_window`), and the
+// odometry bridges the scan.
+TEST(CorrelativeScanSearch, IterationsThatLeaveTheWindowFailInsteadOfRuiningTheRun)
+{
+	using featloc::test::runCommand;
+	using featloc::test::shellQuote;
+	test::TempDir dir;
+	const std::string prefix = dir.file("office");
+	const auto sim = runCommand(shellQuote(FEATLOC_SIM_EXE) + " " +
+		shellQuote(std::string(FEATLOC_SOURCE_DIR) + "/worlds/office.ini") + " --out " +
+		shellQuote(prefix) + " -q --seed 2 --set Laser:range_noise=0.01");
+	ASSERT_EQ(sim.exitCode, 0) << sim.output;
+	const std::string out = dir.file("run");
+	const auto run = runCommand(shellQuote(FEATLOC_RUN_EXE) + " " +
+		shellQuote(std::string(FEATLOC_SOURCE_DIR) + "/config.ini") + " " +
+		shellQuote(prefix + ".rawlog") + " --out " + shellQuote(out) +
+		" -q --set ScanMatcher:class=featloc::CfIdcMatcher --set Evaluation:ground_truth=" +
+		shellQuote(prefix + ".gt.txt") + " --set Output:write_scene=false --set Output:write_rawlog=false");
+	ASSERT_EQ(run.exitCode, 0) << run.output;
+	const auto summary = test::readJson(out + "/summary.json");
+	EXPECT_LT(double(summary["evaluation"]["ate_m"]["rmse"]), 0.10) << summary["counts"].dump();
+	EXPECT_GE(summary["counts"]["match_failures_by_kind"].value("left_window", 0), 1)
+		<< summary["counts"].dump();
 }

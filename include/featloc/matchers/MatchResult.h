@@ -30,7 +30,9 @@ struct MatchResult
 	/** What kind of failure (empty on success; set on every failure that
 	 * ScanMatcher::match returns), for the counts of
 	 * summary.json and featloc-bench: "too_few_points", "no_overlap" (the
-	 * coarse search), "ambiguous" (another solution explains the scan about
+	 * coarse search), "left_window" (the iterations converged outside the
+	 * window the coarse search scored, to an estimate not clearly better than
+	 * a solution inside it), "ambiguous" (another solution explains the scan about
 	 * as well as the estimate), "guess_gate", or "matcher" (the matcher's
 	 * own reasons). */
 	std::string failureKind;
