@@ -251,17 +251,19 @@ int SimApp::main(int argc, char** argv)
 	if (argGridmap.isSet())
 	{
 		// The walls as featloc-run draws a world file for [Localization]
-		// map (MRPT's grid frame: no half-cell shift).
+		// map, written in MRPT's grid frame. The drawn grid is shifted by
+		// half a cell so that walls on round coordinates run through cell
+		// centres; MRPT's frame puts cell edges there, so such a wall
+		// occupies the cells on its +x / +y side: the drawn grid's cells,
+		// one for one. (Re-binning the drawn cells' centres, which lie on
+		// the edges, with x2idx put some into the neighbouring cell: walls
+		// with a hole every few cells, through which MRPT's virtual beams
+		// and pf-localization's likelihood passed.)
 		LocalizationOptions lo;
 		lo.map = argWorld.getValue();
 		lo.grid_resolution = argGridmap.getValue();
 		const LocalizationMap map = LocalizationMapFile::load(lo);
-		const auto& drawn = map.grid();
-		mrpt::maps::COccupancyGridMap2D grid;
-		grid.setSize(drawn.getXMin(), drawn.getXMax(), drawn.getYMin(), drawn.getYMax(),
-			drawn.getResolution(), 1.0f);
-		for (const auto& c : map.occupiedCells())
-			grid.setCell(grid.x2idx(static_cast<float>(c.x)), grid.y2idx(static_cast<float>(c.y)), 0.0f);
+		const mrpt::maps::COccupancyGridMap2D& grid = map.grid();
 		mrpt::io::CFileGZOutputStream f(prefix + ".gridmap.gz");
 		mrpt::serialization::archiveFrom(f) << grid;
 	}

@@ -33,12 +33,17 @@ GlobalMapSearch::GlobalMapSearch(const LocalizationMap& map, const Options& opti
 	// box, a margin of the table's width and one top-level block.
 	auto build = [&](CorrelationTables& t, double res, double hitSigma, int top) {
 		const double margin = 3 * hitSigma + static_cast<double>(1 << top) * res;
-		const double x0 = xmin - margin, y0 = ymin - margin;
+		// Half a table cell more: a map cell's centre then falls on a table
+		// cell's centre when the two have the same size, instead of on an
+		// edge, where rounding put some of a wall's cells one cell off
+		// (holes, and a wall shifted by half a cell).
+		const double x0 = xmin - margin - 0.5 * res, y0 = ymin - margin - 0.5 * res;
 		const int width = static_cast<int>(std::ceil((xmax + margin - x0) / res)) + 1;
 		const int height = static_cast<int>(std::ceil((ymax + margin - y0) / res)) + 1;
 		t.build(width, height, x0, y0, res, hitSigma, top, [&](cv::Mat& surface) {
 			for (const auto& p : cells)
-				surface.at<uint8_t>(static_cast<int>((p.y - y0) / res), static_cast<int>((p.x - x0) / res)) = 0;
+				surface.at<uint8_t>(static_cast<int>(std::floor((p.y - y0) / res)),
+					static_cast<int>(std::floor((p.x - x0) / res))) = 0;
 		});
 	};
 	build(m_tables, m_options.resolution, m_options.hitSigma, CorrelationTables::kMaxLevel);
