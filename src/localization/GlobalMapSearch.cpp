@@ -89,6 +89,27 @@ GlobalMapSearch::Local GlobalMapSearch::refine(const mrpt::obs::CObservation2DRa
 	return out;
 }
 
+std::vector<double> GlobalMapSearch::beamHits(
+	const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& pose) const
+{
+	std::vector<double> out;
+	const mrpt::poses::CPose2D sensor = pose + mrpt::poses::CPose2D(scan.sensorPose);
+	const double k = -0.5 / (m_options.refineHitSigma * m_options.refineHitSigma);
+	const size_t n = scan.getScanSize();
+	for (size_t i = 0; i < n; i++)
+	{
+		if (!scan.getScanRangeValidity(i)) continue;
+		const double r = scan.getScanRange(i);
+		if (!std::isfinite(r) || r <= 0 || r >= scan.maxRange) continue;
+		const double bearing = scan.getScanAngle(i);
+		double x = 0, y = 0;
+		sensor.composePoint(r * std::cos(bearing), r * std::sin(bearing), x, y);
+		const double d = m_sharp.distanceAt(x, y);
+		out.push_back(d >= 0 ? std::exp(k * d * d) : 0.0);
+	}
+	return out;
+}
+
 GlobalMapSearch::Result GlobalMapSearch::search(const mrpt::obs::CObservation2DRangeScan& scan) const
 {
 	const auto t0 = std::chrono::steady_clock::now();

@@ -4,6 +4,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace featloc
@@ -51,19 +52,26 @@ mrpt::obs::CObservation2DRangeScan LocalizationMap::virtualScan(
 double LocalizationMap::shareSeenThrough(
 	const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose) const
 {
+	const auto through = beamsSeenThrough(scan, robotPose);
+	const auto n = std::count(through.begin(), through.end(), true);
+	return through.empty() ? 0.0 : static_cast<double>(n) / static_cast<double>(through.size());
+}
+
+std::vector<bool> LocalizationMap::beamsSeenThrough(
+	const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose) const
+{
 	const auto expected = virtualScan(scan, robotPose);
-	size_t valid = 0, through = 0;
+	std::vector<bool> out;
 	for (size_t i = 0; i < scan.getScanSize(); i++)
 	{
 		if (!scan.getScanRangeValidity(i)) continue;
 		const double r = scan.getScanRange(i);
-		if (!(r > 0) || r >= scan.maxRange) continue;
-		valid++;
-		if (!expected.getScanRangeValidity(i)) continue;  // the map has nothing on that beam
-		const double e = expected.getScanRange(i);
-		if (r > e + std::max(kSeeThroughMargin, kSeeThroughShare * e)) through++;
+		if (!std::isfinite(r) || r <= 0 || r >= scan.maxRange) continue;
+		// A beam on which the map has nothing is not seen through.
+		const double e = expected.getScanRangeValidity(i) ? expected.getScanRange(i) : HUGE_VAL;
+		out.push_back(r > e + std::max(kSeeThroughMargin, kSeeThroughShare * e));
 	}
-	return valid ? static_cast<double>(through) / static_cast<double>(valid) : 0.0;
+	return out;
 }
 
 std::string LocalizationMap::describe() const

@@ -23,6 +23,7 @@ void LocalizationOptions::loadFromConfigFile(
 	read(c, s, "global_confirm_scans", global_confirm_scans);
 	read(c, s, "global_min_score", global_min_score);
 	read(c, s, "global_min_evidence", global_min_evidence);
+	read(c, s, "global_min_log_evidence", global_min_log_evidence);
 	read(c, s, "global_see_through", global_see_through);
 	read(c, s, "lost_after_scans", lost_after_scans);
 	require(global_resolution >= 0.01 && global_resolution <= 0.5, c, s, "global_resolution",
@@ -30,6 +31,7 @@ void LocalizationOptions::loadFromConfigFile(
 	require(global_confirm_scans >= 1, c, s, "global_confirm_scans", ">= 1");
 	require(global_min_score > 0 && global_min_score <= 1, c, s, "global_min_score", "in (0, 1]");
 	require(global_min_evidence > 0, c, s, "global_min_evidence", "> 0");
+	require(global_min_log_evidence >= 0, c, s, "global_min_log_evidence", ">= 0 (0: off)");
 	require(grid_resolution > 0.001 && grid_resolution <= 1, c, s, "grid_resolution",
 		"in (0.001, 1] [m]");
 	require(image_resolution > 0.001 && image_resolution <= 10, c, s, "image_resolution",
@@ -76,6 +78,8 @@ void LocalizationOptions::saveToConfigFile(
 		"global: ...at least this share of the scan on the map...");
 	write(c, s, "global_min_evidence", global_min_evidence,
 		"global: ...and whose scores over the search's scans exceed every other hypothesis's by this in total");
+	write(c, s, "global_min_log_evidence", global_min_log_evidence,
+		"global: or, with the same last N scans, whose log-likelihood over the search's scans exceeds every other hypothesis's by this [nats] (0: off)");
 	write(c, s, "global_see_through", global_see_through,
 		"global: a hypothesis's score on a scan is less the share of the scan's beams that pass through the map there (false: the end points alone)");
 	write(c, s, "lost_after_scans", lost_after_scans,

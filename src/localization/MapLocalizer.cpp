@@ -71,12 +71,30 @@ void MapLocalizer::track(const EstimationStep& step, PoseEstimator& estimator, O
 	m_misses = 0;
 }
 
-GlobalMapSearch::Local MapLocalizer::placed(
+MapLocalizer::Placement MapLocalizer::placed(
 	const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& around) const
 {
-	auto local = m_global->refine(scan, around, kTrackXY, kTrackYaw);
-	if (m_options.global_see_through) local.score -= m_map->shareSeenThrough(scan, local.pose);
-	return local;
+	const auto local = m_global->refine(scan, around, kTrackXY, kTrackYaw);
+	Placement out{local.pose, local.score, 0};
+	const auto through = m_map->beamsSeenThrough(scan, local.pose);
+	const auto hits = m_global->beamHits(scan, local.pose);
+	size_t seen = 0;
+	for (size_t i = 0; i < hits.size() && i < through.size(); i++)
+	{
+		const bool t = m_options.global_see_through && through[i];
+		seen += through[i] ? 1 : 0;
+		out.logLikelihood += t ? std::log(kThrough) : std::log(kStray + (1 - kStray) * hits[i]);
+	}
+	if (m_options.global_see_through && !through.empty())
+		out.score -= static_cast<double>(seen) / static_cast<double>(through.size());
+	return out;
+}
+
+double MapLocalizer::Hypothesis::totalLogLikelihood() const
+{
+	double sum = 0;
+	for (double v : logLikelihoods) sum += v;
+	return sum;
 }
 
 double MapLocalizer::Hypothesis::total() const
@@ -92,7 +110,7 @@ MapLocalizer::Hypothesis MapLocalizer::backdated(const mrpt::poses::CPose2D& pos
 	// moved by odometry are: the search's own score is on its wide table,
 	// higher, and would give a new hypothesis a head start.
 	const auto last = placed(*m_window.back().scan, pose);
-	Hypothesis h{last.pose, {last.score}};
+	Hypothesis h{last.pose, {last.score}, {last.logLikelihood}};
 	mrpt::poses::CPose2D at = last.pose;
 	for (size_t j = m_window.size() - 1; j-- > 0;)
 	{
@@ -101,6 +119,7 @@ MapLocalizer::Hypothesis MapLocalizer::backdated(const mrpt::poses::CPose2D& pos
 		const auto local = placed(*m_window[j].scan, at);
 		at = local.pose;
 		h.scores.push_front(local.score);
+		h.logLikelihoods.push_front(local.logLikelihood);
 	}
 	return h;
 }
@@ -108,15 +127,25 @@ MapLocalizer::Hypothesis MapLocalizer::backdated(const mrpt::poses::CPose2D& pos
 const MapLocalizer::Hypothesis* MapLocalizer::confirmed() const
 {
 	const size_t k = m_options.global_confirm_scans;
-	const Hypothesis* best = nullptr;
-	for (const auto& h : m_hypotheses)
-		if (!best || h.total() > best->total()) best = &h;
-	if (!best || best->scores.size() < k) return nullptr;
-	for (size_t i = best->scores.size() - k; i < best->scores.size(); i++)
-		if (best->scores[i] < m_options.global_min_score) return nullptr;
-	for (const auto& h : m_hypotheses)
-		if (&h != best && best->total() - h.total() < m_options.global_min_evidence) return nullptr;
-	return best;
+	// The scans must prefer the hypothesis over every other: by the total
+	// share of points, or by the log-likelihood.
+	auto preferred = [&](auto measure, double margin) -> const Hypothesis* {
+		const Hypothesis* best = nullptr;
+		for (const auto& h : m_hypotheses)
+			if (!best || measure(h) > measure(*best)) best = &h;
+		if (!best || best->scores.size() < k) return nullptr;
+		for (size_t i = best->scores.size() - k; i < best->scores.size(); i++)
+			if (best->scores[i] < m_options.global_min_score) return nullptr;
+		for (const auto& h : m_hypotheses)
+			if (&h != best && measure(*best) - measure(h) < margin) return nullptr;
+		return best;
+	};
+	if (const auto* h = preferred([](const Hypothesis& h) { return h.total(); },
+			m_options.global_min_evidence))
+		return h;
+	if (m_options.global_min_log_evidence <= 0) return nullptr;
+	return preferred([](const Hypothesis& h) { return h.totalLogLikelihood(); },
+		m_options.global_min_log_evidence);
 }
 
 void MapLocalizer::globalSearch()
@@ -138,12 +167,17 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 		const auto local = placed(*step.scan, h.pose + m_odometrySince);
 		h.pose = local.pose;
 		h.scores.push_back(local.score);
+		h.logLikelihoods.push_back(local.logLikelihood);
 	}
 	m_odometrySince = mrpt::poses::CPose2D();
 	if (m_window.size() > kMaxWindow)
 	{
 		m_window.pop_front();
-		for (auto& h : m_hypotheses) h.scores.pop_front();
+		for (auto& h : m_hypotheses)
+		{
+			h.scores.pop_front();
+			h.logLikelihoods.pop_front();
+		}
 	}
 	auto same = [](const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) {
 		return posesWithin(a, b, kSameXY, kSameYaw);

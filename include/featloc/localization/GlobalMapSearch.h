@@ -66,6 +66,12 @@ class GlobalMapSearch
 	};
 	Local refine(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& around,
 		double halfXY, double halfYaw) const;
+	/** Each valid beam's (valid, 0 < range < maxRange, in beam order: as
+	 * LocalizationMap::beamsSeenThrough) end point with the robot at
+	 * `pose`, on the sharp table: exp(-d^2 / 2 refineHitSigma^2), d its
+	 * distance to the nearest occupied cell; 0 off the table. */
+	std::vector<double> beamHits(
+		const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& pose) const;
 
 
 	const Options& options() const { return m_options; }

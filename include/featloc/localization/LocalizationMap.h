@@ -46,6 +46,11 @@ class LocalizationMap
 	 * for a scan without valid beams. */
 	double shareSeenThrough(
 		const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose) const;
+	/** Which of `scan`'s valid beams (valid, 0 < range < maxRange, in beam
+	 * order) reach farther than the map lets them from `robotPose`, by the
+	 * margin shareSeenThrough uses. */
+	std::vector<bool> beamsSeenThrough(
+		const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose) const;
 	static constexpr double kSeeThroughMargin = 0.3;  //!< [m]
 	static constexpr double kSeeThroughShare = 0.1;
 

@@ -67,6 +67,14 @@ struct LocalizationOptions : public mrpt::config::CLoadableOptions
 	/** ...and whose scores over the search's scans exceed every other
 	 * hypothesis's by this in total (a sum of shares of points). */
 	double global_min_evidence = 0.2;
+	/** ...or, with the same last scans, whose log-likelihood over the
+	 * search's scans (each valid beam log(0.1 + 0.9 hit), a beam through
+	 * the map log(0.01): MapLocalizer::Placement) exceeds every other
+	 * hypothesis's by this [nats]. A few points that fit one room within
+	 * centimetres and miss the other by decimetres (a desk moved, a door
+	 * set elsewhere) are decisive here, while the share of points above
+	 * moves by a few percent a scan. 0: off. */
+	double global_min_log_evidence = 50;
 	/** Each hypothesis's score on a scan is less the share of the scan's
 	 * beams that pass through the map there
 	 * (LocalizationMap::shareSeenThrough); false: the end points' score

@@ -87,6 +87,10 @@ class MapLocalizer
 	static constexpr size_t kMaxHypotheses = 30;
 	/** Scans of a search kept to judge hypotheses on. */
 	static constexpr size_t kMaxWindow = 40;
+	/** Placement::logLikelihood's share of stray returns (people, clutter
+	 * the map lacks) and a seen-through beam's likelihood. */
+	static constexpr double kStray = 0.1;
+	static constexpr double kThrough = 0.01;
 
    private:
 	void search(const EstimationStep& step, PoseEstimator& estimator, Outcome& out);
@@ -114,7 +118,9 @@ class MapLocalizer
 	{
 		mrpt::poses::CPose2D pose;	// at the last scan
 		std::deque<double> scores;	// one per window scan, oldest first
+		std::deque<double> logLikelihoods;	// the same scans' (Placement)
 		double total() const;
+		double totalLogLikelihood() const;
 	};
 	std::vector<Hypothesis> m_hypotheses;
 	mrpt::poses::CPose2D m_odometrySince;
@@ -125,7 +131,18 @@ class MapLocalizer
 	 * where the map has none) but not what it has and the robot does not
 	 * see (a desk the beams pass through); two rooms that differ by a desk
 	 * differ twice as much with both. */
-	GlobalMapSearch::Local placed(
+	struct Placement
+	{
+		mrpt::poses::CPose2D pose;
+		double score = 0;
+		/** The scan's log-likelihood there: the sum over its valid beams of
+		 * log(kStray + (1 - kStray) hit) (GlobalMapSearch::beamHits), a
+		 * beam seen through the map log(kThrough): a likelihood field with
+		 * a share of stray returns, as MRPT's pf-localization scores its
+		 * particles, with beams through walls all but ruled out. */
+		double logLikelihood = 0;
+	};
+	Placement placed(
 		const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& around) const;
 	/** A hypothesis made at the last scan at `pose`, put on the map there,
 	 * carried back through the odometry and scored on every window scan. */
