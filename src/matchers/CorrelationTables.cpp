@@ -11,7 +11,7 @@ int CorrelationTables::topLevelFor(double halfWindow, double resolution)
 {
 	const int cellsAcross = 2 * static_cast<int>(std::ceil(halfWindow / resolution)) + 1;
 	int top = 0;
-	while (top < kMaxLevel && 4 * (1 << top) < cellsAcross) top++;
+	while (top < kMaxLevel && 2 * (1 << top) < cellsAcross) top++;
 	return top;
 }
 
