@@ -44,9 +44,15 @@ namespace featloc
  *   global_confirm_scans scans and its scores exceed every other
  *   hypothesis's by global_min_evidence in total over the window (each
  *   scan's score difference is a share of its points that H explains and
- *   the other does not): the scans must prefer H, not merely allow it. A
- *   corridor's two ends or two identical rooms score alike and do not
- *   confirm until the robot sees what tells them apart.
+ *   the other does not), or its log-likelihood over the window
+ *   (Placement::logLikelihood) exceeds every other's by
+ *   global_min_log_evidence: the scans must prefer H, not merely allow it.
+ *   The share of points weighs every point alike and moves slowly where
+ *   look-alike rooms differ in a few points; the log-likelihood makes those
+ *   few points decisive when they fit one room within centimetres and miss
+ *   the other by decimetres. A corridor's two ends or two identical rooms
+ *   score alike on both and do not confirm until the robot sees what tells
+ *   them apart.
  *   The estimator then restarts at H, refined by a map match. */
 class MapLocalizer
 {
