@@ -221,17 +221,28 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 	gridCov(0, 0) = gridCov(1, 1) = res * res;
 	gridCov(2, 2) = mrpt::square(mrpt::DEG2RAD(2.0));
 	mrpt::poses::CPosePDFGaussian start(h->pose, gridCov);
-	double runnerUp = -1;
+	double runnerUp = -1, runnerUpLogLikelihood = -HUGE_VAL;
 	for (const auto& o : m_hypotheses)
-		if (&o != h) runnerUp = std::max(runnerUp, o.total());
+		if (&o != h)
+		{
+			runnerUp = std::max(runnerUp, o.total());
+			runnerUpLogLikelihood = std::max(runnerUpLogLikelihood, o.totalLogLikelihood());
+		}
 	const double n = static_cast<double>(h->scores.size());
-	char buf[240];
+	char buf[300];
 	std::snprintf(buf, sizeof(buf),
 		"scored %.0f%% over %zu scans (points on the map less beams through it); the next of %zu "
 		"hypotheses %.0f%%",
 		100 * h->total() / n, h->scores.size(), m_hypotheses.size(),
 		runnerUp < 0 ? 0.0 : 100 * runnerUp / n);
-	const std::string evidence = buf;
+	std::string evidence = buf;
+	// Which rule found it shows in the log-likelihood lead (either may).
+	if (std::isfinite(runnerUpLogLikelihood))
+	{
+		std::snprintf(buf, sizeof(buf), "; log-likelihood %.0f nats above the next",
+			h->totalLogLikelihood() - runnerUpLogLikelihood);
+		evidence += buf;
+	}
 	const auto refined = m_tracker.track(*step.scan, start);
 	if (refined.match.success) start = refined.pose;
 	estimator.initialize(start);
