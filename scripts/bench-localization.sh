@@ -59,6 +59,10 @@ ate() { jq -r '"\(.evaluation.ate_m.rmse*1000|floor) / \(.evaluation.ate_m.max*1
 maptime() { jq -r '(.localization.time_per_map_match_s.median // 0)*1000 | . * 100 | floor / 100' "$1/summary.json"; }
 used() { jq -r '"\(.localization.map_matches_used)/\(.counts.scans)"' "$1/summary.json"; }
 perscan() { jq -r '.wall_time_s / .counts.scans * 1000 | . * 100 | floor / 100' "$1/summary.json"; }
+# The per-scan processing, like pf-localization's filter step (no log
+# reading, start-up or output writing): the scan-to-scan match, the map
+# match and the estimator's step, mean times summed.
+processing() { jq -r '((.match_time_s.mean // 0) + (.localization.time_per_map_match_s.mean // 0) + (.estimator_time_s.mean // 0)) * 1000 | . * 100 | floor / 100' "$1/summary.json"; }
 
 # pf-localization on PREFIX.rawlog in MAP: its per-step mean (parsed from
 # its log: "PDF estimation") as a TUM file, evaluated by featloc-eval.
@@ -129,8 +133,8 @@ pf_time() { awk '{s+=$1; n++} END{printf "%.2f", 1000*s/n}' "$1"/LOG_000_*/exec_
 machine_line
 echo "pf-localization: $(dpkg-query -W -f='${Version}' mrpt-apps 2>/dev/null), demo ini, $PARTICLES particles (KLD adaptive)"
 echo
-echo "| world | run B localized in | ATE RMSE / max [mm] | map matches used | map match [ms] (median) | whole run per scan [ms] |"
-echo "|---|---|---|---|---|---|"
+echo "| world | run B localized in | ATE RMSE / max [mm] | map matches used | map match [ms] (median) | whole run per scan [ms] | processing per scan [ms] (matches + estimator, means) |"
+echo "|---|---|---|---|---|---|---|"
 for world in office lab; do
   if [ "$world" = office ]; then
     A_SETS=(--seed 3); B_SETS=(--seed 7 --set "$OFFICE_B_PATH" "${OFFICE_PEOPLE[@]}")
@@ -145,13 +149,16 @@ for world in office lab; do
   loc "$OUT/$world-b" "$OUT/$world-b-simplemap" "$MAP"
   loc "$OUT/$world-b" "$OUT/$world-b-nomap" ""
   loc "$OUT/$world-b" "$OUT/$world-b-pcm" "$MAP" --set ScanMatcher:class=featloc::PcmFeatureMatcher
+  loc "$OUT/$world-b" "$OUT/$world-b-pcm-nosearch" "$MAP" --set ScanMatcher:class=featloc::PcmFeatureMatcher \
+    --set ScanMatcher.PcmFeatureMatcher:coarse_search=false
   pf "$OUT/$world-b" "$MAP" "$OUT/$world-b-pf"
-  echo "| $world | (mapping run A, in the world file) | $(ate "$OUT/$world-a-mapping") | $(used "$OUT/$world-a-mapping") | $(maptime "$OUT/$world-a-mapping") | $(perscan "$OUT/$world-a-mapping") |"
-  echo "| $world | featloc, the world file | $(ate "$OUT/$world-b-world") | $(used "$OUT/$world-b-world") | $(maptime "$OUT/$world-b-world") | $(perscan "$OUT/$world-b-world") |"
-  echo "| $world | featloc, run A's map.simplemap | $(ate "$OUT/$world-b-simplemap") | $(used "$OUT/$world-b-simplemap") | $(maptime "$OUT/$world-b-simplemap") | $(perscan "$OUT/$world-b-simplemap") |"
-  echo "| $world | featloc, run A's map.simplemap, PCM scan-to-scan too | $(ate "$OUT/$world-b-pcm") | $(used "$OUT/$world-b-pcm") | $(maptime "$OUT/$world-b-pcm") | $(perscan "$OUT/$world-b-pcm") |"
-  echo "| $world | pf-localization, run A's map.simplemap | $(pf_ate "$OUT/$world-b-pf") | - | - | $(pf_time "$OUT/$world-b-pf") (filter step) |"
-  echo "| $world | featloc, no map (EKF from the start) | $(ate "$OUT/$world-b-nomap") | - | - | $(perscan "$OUT/$world-b-nomap") |"
+  echo "| $world | (mapping run A, in the world file) | $(ate "$OUT/$world-a-mapping") | $(used "$OUT/$world-a-mapping") | $(maptime "$OUT/$world-a-mapping") | $(perscan "$OUT/$world-a-mapping") | $(processing "$OUT/$world-a-mapping") |"
+  echo "| $world | featloc, the world file | $(ate "$OUT/$world-b-world") | $(used "$OUT/$world-b-world") | $(maptime "$OUT/$world-b-world") | $(perscan "$OUT/$world-b-world") | $(processing "$OUT/$world-b-world") |"
+  echo "| $world | featloc, run A's map.simplemap | $(ate "$OUT/$world-b-simplemap") | $(used "$OUT/$world-b-simplemap") | $(maptime "$OUT/$world-b-simplemap") | $(perscan "$OUT/$world-b-simplemap") | $(processing "$OUT/$world-b-simplemap") |"
+  echo "| $world | featloc, run A's map.simplemap, PCM scan-to-scan too | $(ate "$OUT/$world-b-pcm") | $(used "$OUT/$world-b-pcm") | $(maptime "$OUT/$world-b-pcm") | $(perscan "$OUT/$world-b-pcm") | $(processing "$OUT/$world-b-pcm") |"
+  echo "| $world | featloc, run A's map.simplemap, PCM scan-to-scan without its coarse search | $(ate "$OUT/$world-b-pcm-nosearch") | $(used "$OUT/$world-b-pcm-nosearch") | $(maptime "$OUT/$world-b-pcm-nosearch") | $(perscan "$OUT/$world-b-pcm-nosearch") | $(processing "$OUT/$world-b-pcm-nosearch") |"
+  echo "| $world | pf-localization, run A's map.simplemap | $(pf_ate "$OUT/$world-b-pf") | - | - | - | $(pf_time "$OUT/$world-b-pf") (filter step) |"
+  echo "| $world | featloc, no map (EKF from the start) | $(ate "$OUT/$world-b-nomap") | - | - | $(perscan "$OUT/$world-b-nomap") | $(processing "$OUT/$world-b-nomap") |"
 done
 echo
 echo "| office run B in the world file: [Localization] matcher_class (config.ini: PcmFeatureMatcher) | ATE RMSE / max [mm] | map matches used / failed / rejected | map match [ms] (median) |"
