@@ -1,5 +1,7 @@
 // Borges & Aldon feature extraction and the quartic solver.
 #include <gtest/gtest.h>
+#include <mrpt/core/bits_math.h>
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cmath>
@@ -161,4 +163,70 @@ TEST(PolynomialRoots, KnownRoots)
 	r = PolynomialRoots::real({0.25, -1, 1});
 	ASSERT_EQ(r.size(), 1u);
 	EXPECT_NEAR(r[0], 0.5, 1e-6);
+}
+
+// A wall seen from near its foot out to grazing incidence, with range noise
+// only (along each beam): its far points lie much closer to the line than
+// its near ones. The weighted fit (line_fit = weighted, the maximum
+// likelihood line) gives the orientation with a smaller spread than the
+// unweighted fit of eqs. (3)-(8), and each fit's predicted variance is its
+// actual spread over many scans.
+TEST(LineEllipseExtractor, WeightedFitUsesTheGrazingPointsAndItsCovarianceHolds)
+{
+	mrpt::random::CRandomGenerator rng(7);
+	const double sigma = 0.01, wallY = 1.0;
+	auto scan = [&]() {
+		ScanPoints s;
+		s.angularStep = mrpt::DEG2RAD(0.25);
+		s.maxRange = 30;
+		for (double b = std::atan2(wallY, 6.0); b <= std::atan2(wallY, 0.5); b += s.angularStep)
+		{
+			const double r = wallY / std::sin(b) + sigma * rng.drawGaussian1D_normalized();
+			ScanPoint p;
+			p.range = r;
+			p.bearing = b;
+			p.x = r * std::cos(b);
+			p.y = r * std::sin(b);
+			p.beam = static_cast<uint32_t>(s.points.size());
+			s.points.push_back(p);
+		}
+		return s;
+	};
+	struct Spread
+	{
+		double sumErr2 = 0, sumPredicted = 0;
+		size_t n = 0;
+	};
+	Spread weighted, tls;
+	for (int trial = 0; trial < 400; trial++)
+	{
+		const ScanPoints s = scan();
+		for (auto* out : {&weighted, &tls})
+		{
+			LineEllipseExtractor ex;
+			ex.params.line_fit = out == &weighted ? "weighted" : "tls";
+			// The far points' noise (1 cm x cos 80 deg) is below the default
+			// 3 mm floor, which would make the prediction conservative.
+			ex.params.min_point_sigma = 0.001;
+			std::vector<ScanFeature> fs;
+			ex.extract(s, fs);
+			ASSERT_EQ(fs.size(), 1u);
+			ASSERT_EQ(fs[0].kind, ScanFeature::Kind::Line);
+			const double err = mrpt::math::wrapToPi(fs[0].alpha - M_PI / 2);
+			out->sumErr2 += err * err;
+			out->sumPredicted += fs[0].varAlpha;
+			out->n++;
+		}
+	}
+	const double varW = weighted.sumErr2 / weighted.n, varT = tls.sumErr2 / tls.n;
+	std::printf("alpha sd: weighted %.4f deg (predicted %.4f), tls %.4f deg (predicted %.4f)\n",
+		mrpt::RAD2DEG(std::sqrt(varW)), mrpt::RAD2DEG(std::sqrt(weighted.sumPredicted / weighted.n)),
+		mrpt::RAD2DEG(std::sqrt(varT)), mrpt::RAD2DEG(std::sqrt(tls.sumPredicted / tls.n)));
+	EXPECT_LT(varW, 0.8 * varT);
+	for (const auto* f : {&weighted, &tls})
+	{
+		const double ratio = (f->sumErr2 / f->n) / (f->sumPredicted / f->n);
+		EXPECT_GT(ratio, 0.75) << (f == &weighted ? "weighted" : "tls");
+		EXPECT_LT(ratio, 1.33) << (f == &weighted ? "weighted" : "tls");
+	}
 }

@@ -1,5 +1,7 @@
 #include "featloc/features/LineEllipseExtractor.h"
 
+#include <mrpt/math/wrap2pi.h>
+
 #include <algorithm>
 #include <cmath>
 #include <tuple>
@@ -43,6 +45,7 @@ void LineEllipseExtractor::Parameters::loadFromConfigFile(
 	read(c, s, "refine_iterations", refine_iterations);
 	read(c, s, "min_point_sigma", min_point_sigma);
 	read(c, s, "ellipse_shape_sigma_ratio", ellipse_shape_sigma_ratio);
+	readChoice(c, s, "line_fit", line_fit, {"weighted", "tls"});
 	require(max_point_gap > 0, c, s, "max_point_gap", "> 0");
 	require(split_distance_min > 0, c, s, "split_distance_min", "> 0");
 	require(split_sigmas >= 0, c, s, "split_sigmas", ">= 0");
@@ -82,6 +85,8 @@ void LineEllipseExtractor::Parameters::saveToConfigFile(
 		"[m] features: floor of the point noise estimated from a fit");
 	write(c, s, "ellipse_shape_sigma_ratio", ellipse_shape_sigma_ratio,
 		"features: ellipse centroid sigma added per metre of its length");
+	write(c, s, "line_fit", line_fit,
+		"features: weighted (lines refitted with each point's variance under range noise) | tls (eqs. 3-8, as published)");
 }
 
 void LineEllipseExtractor::split(
@@ -368,6 +373,11 @@ void LineEllipseExtractor::setCovariances(
 			f.cxy = 0;
 			continue;
 		}
+		if (params.line_fit == "weighted")
+		{
+			weightedRefit(s, f, inflate, pooled2, floor2);
+			continue;
+		}
 		// Unweighted TLS with perpendicular errors e_k of variances v_k: a
 		// point at s_k along the line (from the centroid) is off the fitted
 		// line by e_k + (s_c + s_k) d(alpha) - d(rho), so the fit gives
@@ -388,5 +398,78 @@ void LineEllipseExtractor::setCovariances(
 		f.cxy = nx * ny * vR + (nx * uy + ny * ux) * cRA + ux * uy * vA;
 		f.cyy = ny * ny * vR + 2 * ny * uy * cRA + uy * uy * vA;
 	}
+}
+void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, double inflate,
+	double pooled2, double floor2)
+{
+	// Weighted TLS, w_k = 1 / v_k with v_k the point's perpendicular
+	// variance at the incidence the previous fit gives; twice (the second
+	// pass's incidences barely move).
+	for (int pass = 0; pass < 2; pass++)
+	{
+		const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
+		double sw = 0, mx = 0, my = 0;
+		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
+		{
+			const auto& p = s.points[k];
+			const double cosT = (p.x * ca + p.y * sa) / p.range;
+			const double w = 1.0 / (inflate * std::max(floor2, pooled2 * cosT * cosT));
+			sw += w;
+			mx += w * p.x;
+			my += w * p.y;
+		}
+		mx /= sw;
+		my /= sw;
+		double sxx = 0, syy = 0, sxy = 0;
+		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
+		{
+			const auto& p = s.points[k];
+			const double cosT = (p.x * ca + p.y * sa) / p.range;
+			const double w = 1.0 / (inflate * std::max(floor2, pooled2 * cosT * cosT));
+			sxx += w * (p.x - mx) * (p.x - mx);
+			syy += w * (p.y - my) * (p.y - my);
+			sxy += w * (p.x - mx) * (p.y - my);
+		}
+		// The normal: the weighted scatter's direction of least spread
+		// (eq. 4's angle on weighted sums).
+		double alpha = 0.5 * std::atan2(-2 * sxy, syy - sxx);
+		double rho = mx * std::cos(alpha) + my * std::sin(alpha);
+		if (rho < 0)
+		{
+			rho = -rho;
+			alpha += M_PI;
+		}
+		f.alpha = mrpt::math::wrapToPi(alpha);
+		f.rho = rho;
+		if (pass == 0) continue;
+		// Covariance: the tilt from sum w s^2, the offset at the weighted
+		// centroid from sum w, uncorrelated there; rho = offset + s_c alpha.
+		const double na = std::cos(f.alpha), nb = std::sin(f.alpha);
+		double sumWS2 = 0;
+		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
+		{
+			const auto& p = s.points[k];
+			const double cosT = (p.x * na + p.y * nb) / p.range;
+			const double w = 1.0 / (inflate * std::max(floor2, pooled2 * cosT * cosT));
+			const double sk = -(p.x - mx) * nb + (p.y - my) * na;
+			sumWS2 += w * sk * sk;
+		}
+		const double vA = 1.0 / sumWS2;
+		const double sc = -mx * nb + my * na;
+		f.varAlpha = vA;
+		f.varRho = 1.0 / sw + sc * sc * vA;
+		f.covRhoAlpha = sc * vA;
+	}
+	const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
+	f.x = f.rho * ca;
+	f.y = f.rho * sa;
+	f.a2 = ca * ca;
+	f.b2 = sa * sa;
+	f.c = ca * sa;
+	// Foot point f = rho n(alpha): df = n drho + rho u dalpha.
+	const double ux = -sa * f.rho, uy = ca * f.rho;
+	f.cxx = ca * ca * f.varRho + 2 * ca * ux * f.covRhoAlpha + ux * ux * f.varAlpha;
+	f.cxy = ca * sa * f.varRho + (ca * uy + sa * ux) * f.covRhoAlpha + ux * uy * f.varAlpha;
+	f.cyy = sa * sa * f.varRho + 2 * sa * uy * f.covRhoAlpha + uy * uy * f.varAlpha;
 }
 }  // namespace featloc
