@@ -13,6 +13,29 @@ namespace featloc
 {
 namespace
 {
+/** A line feature's PCM parameters from (rho, alpha): the foot point and
+ * the normal's outer product (the projection A_i). */
+void setLineParameters(ScanFeature& f)
+{
+	const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
+	f.x = f.rho * ca;
+	f.y = f.rho * sa;
+	f.a2 = ca * ca;
+	f.b2 = sa * sa;
+	f.c = ca * sa;
+}
+
+/** The foot point's covariance from (rho, alpha)'s: f = rho n(alpha),
+ * df = n drho + rho u dalpha. */
+void setFootPointCovariance(ScanFeature& f)
+{
+	const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
+	const double ux = -sa * f.rho, uy = ca * f.rho;
+	f.cxx = ca * ca * f.varRho + 2 * ca * ux * f.covRhoAlpha + ux * ux * f.varAlpha;
+	f.cxy = ca * sa * f.varRho + (ca * uy + sa * ux) * f.covRhoAlpha + ux * uy * f.varAlpha;
+	f.cyy = sa * sa * f.varRho + 2 * sa * uy * f.covRhoAlpha + uy * uy * f.varAlpha;
+}
+
 double gap(const ScanPoint& a, const ScanPoint& b)
 {
 	return std::hypot(a.x - b.x, a.y - b.y);
@@ -283,12 +306,7 @@ void LineEllipseExtractor::extractAnew(const ScanPoints& s, std::vector<ScanFeat
 		else
 		{
 			feat.kind = ScanFeature::Kind::Line;
-			const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
-			feat.x = f.rho * ca;
-			feat.y = f.rho * sa;
-			feat.a2 = ca * ca;
-			feat.b2 = sa * sa;
-			feat.c = ca * sa;
+			setLineParameters(feat);
 		}
 		out.push_back(feat);
 	}
@@ -392,11 +410,7 @@ void LineEllipseExtractor::setCovariances(
 		f.varRho = vR;
 		f.varAlpha = vA;
 		f.covRhoAlpha = cRA;
-		// Foot point f = rho n(alpha): df = n drho + rho u dalpha.
-		const double nx = ca, ny = sa, ux = -sa * f.rho, uy = ca * f.rho;
-		f.cxx = nx * nx * vR + 2 * nx * ux * cRA + ux * ux * vA;
-		f.cxy = nx * ny * vR + (nx * uy + ny * ux) * cRA + ux * uy * vA;
-		f.cyy = ny * ny * vR + 2 * ny * uy * cRA + uy * uy * vA;
+		setFootPointCovariance(f);
 	}
 }
 void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, double inflate,
@@ -405,6 +419,10 @@ void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, do
 	// Weighted TLS, w_k = 1 / v_k with v_k the point's perpendicular
 	// variance at the incidence the previous fit gives; twice (the second
 	// pass's incidences barely move).
+	auto weight = [&](const ScanPoint& p, double ca, double sa) {
+		const double cosT = (p.x * ca + p.y * sa) / p.range;
+		return 1.0 / (inflate * std::max(floor2, pooled2 * cosT * cosT));
+	};
 	for (int pass = 0; pass < 2; pass++)
 	{
 		const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
@@ -412,8 +430,7 @@ void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, do
 		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
 		{
 			const auto& p = s.points[k];
-			const double cosT = (p.x * ca + p.y * sa) / p.range;
-			const double w = 1.0 / (inflate * std::max(floor2, pooled2 * cosT * cosT));
+			const double w = weight(p, ca, sa);
 			sw += w;
 			mx += w * p.x;
 			my += w * p.y;
@@ -424,8 +441,7 @@ void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, do
 		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
 		{
 			const auto& p = s.points[k];
-			const double cosT = (p.x * ca + p.y * sa) / p.range;
-			const double w = 1.0 / (inflate * std::max(floor2, pooled2 * cosT * cosT));
+			const double w = weight(p, ca, sa);
 			sxx += w * (p.x - mx) * (p.x - mx);
 			syy += w * (p.y - my) * (p.y - my);
 			sxy += w * (p.x - mx) * (p.y - my);
@@ -449,8 +465,7 @@ void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, do
 		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
 		{
 			const auto& p = s.points[k];
-			const double cosT = (p.x * na + p.y * nb) / p.range;
-			const double w = 1.0 / (inflate * std::max(floor2, pooled2 * cosT * cosT));
+			const double w = weight(p, na, nb);
 			const double sk = -(p.x - mx) * nb + (p.y - my) * na;
 			sumWS2 += w * sk * sk;
 		}
@@ -460,16 +475,7 @@ void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, do
 		f.varRho = 1.0 / sw + sc * sc * vA;
 		f.covRhoAlpha = sc * vA;
 	}
-	const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
-	f.x = f.rho * ca;
-	f.y = f.rho * sa;
-	f.a2 = ca * ca;
-	f.b2 = sa * sa;
-	f.c = ca * sa;
-	// Foot point f = rho n(alpha): df = n drho + rho u dalpha.
-	const double ux = -sa * f.rho, uy = ca * f.rho;
-	f.cxx = ca * ca * f.varRho + 2 * ca * ux * f.covRhoAlpha + ux * ux * f.varAlpha;
-	f.cxy = ca * sa * f.varRho + (ca * uy + sa * ux) * f.covRhoAlpha + ux * uy * f.varAlpha;
-	f.cyy = sa * sa * f.varRho + 2 * sa * uy * f.covRhoAlpha + uy * uy * f.varAlpha;
+	setLineParameters(f);
+	setFootPointCovariance(f);
 }
 }  // namespace featloc
