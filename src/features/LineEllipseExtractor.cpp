@@ -351,15 +351,7 @@ void LineEllipseExtractor::setCovariances(
 		// Per-point perpendicular variances v_k; a feature fitting much worse
 		// than the scan's noise predicts (a curved or cluttered surface)
 		// keeps its own, larger residual variance.
-		double sumV = 0, sumS2 = 0, sumSV = 0, sumS2V = 0, predicted = 0;
-		double cxm = 0, cym = 0;
-		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
-		{
-			cxm += s.points[k].x;
-			cym += s.points[k].y;
-		}
-		cxm /= dn;
-		cym /= dn;
+		double predicted = 0;
 		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
 		{
 			const auto& p = s.points[k];
@@ -369,17 +361,6 @@ void LineEllipseExtractor::setCovariances(
 		predicted /= dn;
 		const double own = f.sigma * f.sigma * dn / (dn - 2);
 		const double inflate = own > 2 * predicted ? own / predicted : 1.0;
-		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
-		{
-			const auto& p = s.points[k];
-			const double cosT = (p.x * ca + p.y * sa) / p.range;
-			const double v = inflate * std::max(floor2, pooled2 * cosT * cosT);
-			const double sk = -(p.x - cxm) * sa + (p.y - cym) * ca;
-			sumV += v;
-			sumS2 += sk * sk;
-			sumSV += sk * v;
-			sumS2V += sk * sk * v;
-		}
 		if (f.kind == ScanFeature::Kind::Ellipse)
 		{
 			// Centroid: the points' noise (along their beams, taken
@@ -395,6 +376,26 @@ void LineEllipseExtractor::setCovariances(
 		{
 			weightedRefit(s, f, inflate, pooled2, floor2);
 			continue;
+		}
+		double cxm = 0, cym = 0;
+		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
+		{
+			cxm += s.points[k].x;
+			cym += s.points[k].y;
+		}
+		cxm /= dn;
+		cym /= dn;
+		double sumV = 0, sumS2 = 0, sumSV = 0, sumS2V = 0;
+		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
+		{
+			const auto& p = s.points[k];
+			const double cosT = (p.x * ca + p.y * sa) / p.range;
+			const double v = inflate * std::max(floor2, pooled2 * cosT * cosT);
+			const double sk = -(p.x - cxm) * sa + (p.y - cym) * ca;
+			sumV += v;
+			sumS2 += sk * sk;
+			sumSV += sk * v;
+			sumS2V += sk * sk * v;
 		}
 		// Unweighted TLS with perpendicular errors e_k of variances v_k: a
 		// point at s_k along the line (from the centroid) is off the fitted
@@ -413,6 +414,7 @@ void LineEllipseExtractor::setCovariances(
 		setFootPointCovariance(f);
 	}
 }
+
 void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, double inflate,
 	double pooled2, double floor2)
 {
