@@ -93,14 +93,14 @@ MapLocalizer::Placement MapLocalizer::placed(
 double MapLocalizer::Hypothesis::totalLogLikelihood() const
 {
 	double sum = 0;
-	for (double v : logLikelihoods) sum += v;
+	for (const auto& p : scans) sum += p.logLikelihood;
 	return sum;
 }
 
 double MapLocalizer::Hypothesis::total() const
 {
 	double sum = 0;
-	for (double v : scores) sum += v;
+	for (const auto& p : scans) sum += p.score;
 	return sum;
 }
 
@@ -110,7 +110,7 @@ MapLocalizer::Hypothesis MapLocalizer::backdated(const mrpt::poses::CPose2D& pos
 	// moved by odometry are: the search's own score is on its wide table,
 	// higher, and would give a new hypothesis a head start.
 	const auto last = placed(*m_window.back().scan, pose);
-	Hypothesis h{last.pose, {last.score}, {last.logLikelihood}};
+	Hypothesis h{last.pose, {last}};
 	mrpt::poses::CPose2D at = last.pose;
 	for (size_t j = m_window.size() - 1; j-- > 0;)
 	{
@@ -118,8 +118,7 @@ MapLocalizer::Hypothesis MapLocalizer::backdated(const mrpt::poses::CPose2D& pos
 		at = at + (mrpt::poses::CPose2D() - m_window[j + 1].odometryFromPrevious);
 		const auto local = placed(*m_window[j].scan, at);
 		at = local.pose;
-		h.scores.push_front(local.score);
-		h.logLikelihoods.push_front(local.logLikelihood);
+		h.scans.push_front(local);
 	}
 	return h;
 }
@@ -133,9 +132,9 @@ const MapLocalizer::Hypothesis* MapLocalizer::confirmed() const
 		const Hypothesis* best = nullptr;
 		for (const auto& h : m_hypotheses)
 			if (!best || measure(h) > measure(*best)) best = &h;
-		if (!best || best->scores.size() < k) return nullptr;
-		for (size_t i = best->scores.size() - k; i < best->scores.size(); i++)
-			if (best->scores[i] < m_options.global_min_score) return nullptr;
+		if (!best || best->scans.size() < k) return nullptr;
+		for (size_t i = best->scans.size() - k; i < best->scans.size(); i++)
+			if (best->scans[i].score < m_options.global_min_score) return nullptr;
 		for (const auto& h : m_hypotheses)
 			if (&h != best && measure(*best) - measure(h) < margin) return nullptr;
 		return best;
@@ -166,18 +165,13 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 	{
 		const auto local = placed(*step.scan, h.pose + m_odometrySince);
 		h.pose = local.pose;
-		h.scores.push_back(local.score);
-		h.logLikelihoods.push_back(local.logLikelihood);
+		h.scans.push_back(local);
 	}
 	m_odometrySince = mrpt::poses::CPose2D();
 	if (m_window.size() > kMaxWindow)
 	{
 		m_window.pop_front();
-		for (auto& h : m_hypotheses)
-		{
-			h.scores.pop_front();
-			h.logLikelihoods.pop_front();
-		}
+		for (auto& h : m_hypotheses) h.scans.pop_front();
 	}
 	auto same = [](const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) {
 		return posesWithin(a, b, kSameXY, kSameYaw);
@@ -189,7 +183,7 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 	std::vector<Hypothesis> kept;
 	for (auto& h : m_hypotheses)
 	{
-		if (h.scores.back() < m_options.global_min_score) continue;
+		if (h.scans.back().score < m_options.global_min_score) continue;
 		bool duplicate = false;
 		for (const auto& k : kept) duplicate = duplicate || same(h.pose, k.pose);
 		if (!duplicate && kept.size() < kMaxHypotheses) kept.push_back(std::move(h));
@@ -228,12 +222,12 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 			runnerUp = std::max(runnerUp, o.total());
 			runnerUpLogLikelihood = std::max(runnerUpLogLikelihood, o.totalLogLikelihood());
 		}
-	const double n = static_cast<double>(h->scores.size());
+	const double n = static_cast<double>(h->scans.size());
 	char buf[300];
 	std::snprintf(buf, sizeof(buf),
 		"scored %.0f%% over %zu scans (points on the map less beams through it); the next of %zu "
 		"hypotheses %.0f%%",
-		100 * h->total() / n, h->scores.size(), m_hypotheses.size(),
+		100 * h->total() / n, h->scans.size(), m_hypotheses.size(),
 		runnerUp < 0 ? 0.0 : 100 * runnerUp / n);
 	std::string evidence = buf;
 	// Which rule found it shows in the log-likelihood lead (either may).

@@ -120,16 +120,6 @@ class MapLocalizer
 		mrpt::poses::CPose2D odometryFromPrevious;
 	};
 	std::deque<WindowScan> m_window;
-	struct Hypothesis
-	{
-		mrpt::poses::CPose2D pose;	// at the last scan
-		std::deque<double> scores;	// one per window scan, oldest first
-		std::deque<double> logLikelihoods;	// the same scans' (Placement)
-		double total() const;
-		double totalLogLikelihood() const;
-	};
-	std::vector<Hypothesis> m_hypotheses;
-	mrpt::poses::CPose2D m_odometrySince;
 	/** `around` put on the map by GlobalMapSearch::refine, and its score
 	 * there less the share of the scan's beams that see through the map
 	 * there (LocalizationMap::shareSeenThrough): the end points' score alone
@@ -150,6 +140,15 @@ class MapLocalizer
 	};
 	Placement placed(
 		const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& around) const;
+	struct Hypothesis
+	{
+		mrpt::poses::CPose2D pose;	// at the last scan
+		std::deque<Placement> scans;  // one per window scan, oldest first
+		double total() const;  // of the scans' scores
+		double totalLogLikelihood() const;
+	};
+	std::vector<Hypothesis> m_hypotheses;
+	mrpt::poses::CPose2D m_odometrySince;
 	/** A hypothesis made at the last scan at `pose`, put on the map there,
 	 * carried back through the odometry and scored on every window scan. */
 	Hypothesis backdated(const mrpt::poses::CPose2D& pose) const;
