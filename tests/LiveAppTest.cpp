@@ -327,21 +327,32 @@ TEST(Live, AHokuyoAndASickTogetherWithOdometryAreRecordedAndReplayed)
 #endif
 	EXPECT_NEAR(hokuyo["rate_hz"].get<double>(), 25.0, 25.0 * tolerance);
 	EXPECT_NEAR(lms["rate_hz"].get<double>(), 25.0, 25.0 * tolerance);
-	EXPECT_EQ(s["live"]["late_observations"], 0);
+	// As with one laser: a reading may come late when ctest's other tests
+	// load both cores (one in 7 full runs had one); at most 1% of them, and
+	// each is kept in live-late.rawlog (counted below).
+	const size_t late = s["live"]["late_observations"].get<size_t>();
+	const size_t received = hokuyo["received"].get<size_t>() + lms["received"].get<size_t>() +
+		s["live"]["sensors"][2]["received"].get<size_t>();
+	EXPECT_LE(100 * late, received) << late << " late";
 	EXPECT_EQ(lms["driver_errors"], 0);
 	EXPECT_LT(s["evaluation"]["ate_m"]["rmse"].get<double>(), 0.05) << s.dump(1);
 
-	// Both lasers recorded, the SICK's scans as the device sends them.
-	RawlogReader reader(out + "/live.rawlog");
+	// Both lasers recorded (a late scan in live-late.rawlog), the SICK's
+	// scans as the device sends them.
 	RawlogEntry e;
 	size_t hokuyoScans = 0, sickScans = 0, sickRightToLeft = 0;
-	while (reader.next(e))
-		if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(e.object))
-		{
-			const bool isSick = scan->sensorLabel == "SICK";
-			(isSick ? sickScans : hokuyoScans)++;
-			sickRightToLeft += isSick && scan->rightToLeft;
-		}
+	for (const std::string file : {"/live.rawlog", "/live-late.rawlog"})
+	{
+		if (file == "/live-late.rawlog" && late == 0) break;
+		RawlogReader reader(out + file);
+		while (reader.next(e))
+			if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(e.object))
+			{
+				const bool isSick = scan->sensorLabel == "SICK";
+				(isSick ? sickScans : hokuyoScans)++;
+				sickRightToLeft += isSick && scan->rightToLeft;
+			}
+	}
 	EXPECT_EQ(hokuyoScans, hokuyo["received"].get<size_t>());
 	EXPECT_EQ(sickScans, lms["received"].get<size_t>());
 	EXPECT_EQ(sickRightToLeft, sickScans);
