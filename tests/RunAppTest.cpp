@@ -713,6 +713,28 @@ TEST(FeatlocBench, EveryPairCountsAndTheBasinCurveIsDrawn)
 	EXPECT_NE(bad.output.find("--basin-levels: '0.1-2'"), std::string::npos) << bad.output;
 }
 
+// IDC's point-to-line phase can cycle for ever: points change lines as the
+// estimate moves a few millimetres, and the same poses come back. On the
+// Radish belgioioso log, pair 103 under Borges & Aldon's protocol (seed 1)
+// cycles through 22 poses 7 mm and 0.2 deg apart; with only 16 iterations
+// remembered it ran to max_iterations and failed ("no convergence"), 7 mm
+// from the reference pose.
+TEST(FeatlocBench, IdcCatchesALongCycleOfPairingsOnARealLog)
+{
+	const std::string log =
+		std::string(FEATLOC_SOURCE_DIR) + "/../shared/data/laser2d/belgioioso-corrected.log.gz";
+	if (!std::filesystem::exists(log)) GTEST_SKIP() << "no " << log;
+	TempDir dir;
+	const CommandResult r = runCommand(shellQuote(FEATLOC_BENCH_EXE) + " " + shellQuote(kConfig) +
+		" " + shellQuote(log) + " --max-pairs 104 --seed 1 -q --perturb-xy 0.3 --perturb-yaw-deg 10" +
+		" -m featloc::IdcMatcher -j " + shellQuote(dir.file("b.json")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto m = readJson(dir.file("b.json"))["results"][0];
+	EXPECT_EQ(m["pairs"], 104);
+	EXPECT_EQ(m["failures"], 0) << m["failure_examples"];
+	EXPECT_LT(m["mean_trans_err_m"].get<double>(), 0.04);
+}
+
 // fallback_class in a run: along a corridor whose only cross features are
 // door jambs, PCM fails where they are far (too few points for a feature)
 // and ICP makes those matches, and only those; summary.json counts them and
