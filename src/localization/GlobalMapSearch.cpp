@@ -98,9 +98,8 @@ std::vector<double> GlobalMapSearch::beamHits(
 	const size_t n = scan.getScanSize();
 	for (size_t i = 0; i < n; i++)
 	{
-		if (!scan.getScanRangeValidity(i)) continue;
+		if (!ScanPoints::hasReturn(scan, i)) continue;
 		const double r = scan.getScanRange(i);
-		if (!std::isfinite(r) || r <= 0 || r >= scan.maxRange) continue;
 		const double bearing = scan.getScanAngle(i);
 		double x = 0, y = 0;
 		sensor.composePoint(r * std::cos(bearing), r * std::sin(bearing), x, y);

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "featloc/scan/ScanPoints.h"
+
 namespace featloc
 {
 LocalizationMap::LocalizationMap(
@@ -64,9 +66,8 @@ std::vector<bool> LocalizationMap::beamsSeenThrough(
 	std::vector<bool> out;
 	for (size_t i = 0; i < scan.getScanSize(); i++)
 	{
-		if (!scan.getScanRangeValidity(i)) continue;
+		if (!ScanPoints::hasReturn(scan, i)) continue;
 		const double r = scan.getScanRange(i);
-		if (!std::isfinite(r) || r <= 0 || r >= scan.maxRange) continue;
 		// A beam on which the map has nothing is not seen through.
 		const double e = expected.getScanRangeValidity(i) ? expected.getScanRange(i) : HUGE_VAL;
 		out.push_back(r > e + std::max(kSeeThroughMargin, kSeeThroughShare * e));

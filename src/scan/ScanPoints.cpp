@@ -18,9 +18,8 @@ ScanPoints ScanPoints::fromScan(const mrpt::obs::CObservation2DRangeScan& scan)
 	out.points.reserve(n);
 	for (size_t i = 0; i < n; i++)
 	{
-		if (!scan.getScanRangeValidity(i)) continue;
+		if (!hasReturn(scan, i)) continue;
 		const double r = scan.getScanRange(i);
-		if (!std::isfinite(r) || r <= 0 || r >= scan.maxRange) continue;
 		ScanPoint p;
 		p.range = r;
 		p.bearing = scan.getScanAngle(i);
@@ -33,6 +32,13 @@ ScanPoints ScanPoints::fromScan(const mrpt::obs::CObservation2DRangeScan& scan)
 	// decreasing bearing: keep the counter-clockwise order everywhere.
 	if (!scan.rightToLeft) std::reverse(out.points.begin(), out.points.end());
 	return out;
+}
+
+bool ScanPoints::hasReturn(const mrpt::obs::CObservation2DRangeScan& scan, size_t i)
+{
+	if (!scan.getScanRangeValidity(i)) return false;
+	const double r = scan.getScanRange(i);
+	return std::isfinite(r) && r > 0 && r < scan.maxRange;
 }
 
 bool ScanPoints::samePointsAs(const ScanPoints& o) const

@@ -46,9 +46,17 @@ struct ScanPoints
 	 * bit for bit) and the same sensor figures. */
 	bool samePointsAs(const ScanPoints& o) const;
 
-	/** Valid readings of a scan, in its sensor frame (sensorPose is NOT
-	 * applied). A scan of fewer than two beams gives no points. */
+	/** Valid readings of a scan (hasReturn()), in its sensor frame
+	 * (sensorPose is NOT applied). A scan of fewer than two beams gives no
+	 * points. */
 	static ScanPoints fromScan(const mrpt::obs::CObservation2DRangeScan& scan);
+
+	/** Whether beam i of `scan` returned from a surface: marked valid, and
+	 * its range finite and inside (0, maxRange) (at maxRange nothing was in
+	 * range). Every per-beam use of a scan (the matchers' points, the
+	 * global search's hits, the map's seen-through beams) counts the same
+	 * beams with it. */
+	static bool hasReturn(const mrpt::obs::CObservation2DRangeScan& scan, size_t i);
 
 	/** Points of a map (its own frame), sorted by bearing around its origin.
 	 * Used by the MRPT alignment adapter. */
