@@ -192,19 +192,30 @@ TEST(Viewer, MatchViewShowsPcmFeaturesAndCfIdcSegments)
 			EXPECT_NE(r.output.find("PCM feature pairs"), std::string::npos) << r.output;
 		}
 	}
-	// With config.ini's fallback (ICP) that match is ICP's, and the view
-	// says so, in the run's row and when run again.
+	// With config.ini's fallback (IDC) a match PCM's lines fail is IDC's,
+	// and the view says so, in the run's row and when run again: the first
+	// such step of the run (matches.txt's data row k is step k).
 	const std::string dir = tmp.file("pcm-fallback");
 	const CommandResult run = runCommand(shellQuote(kRun) + " " + shellQuote(kConfig) + " --out " +
 		shellQuote(dir) + " -q --set ScanMatcher:class=featloc::PcmFeatureMatcher 2>&1");
 	ASSERT_EQ(run.exitCode, 0) << run.output;
-	const CommandResult r = viewer(shellQuote(dir) + " --view match --step 100 --screenshot " +
-		shellQuote(tmp.file("pcm-fallback.png")));
+	std::ifstream rows(dir + "/matches.txt");
+	std::string row;
+	size_t step = 0, k = 0;
+	while (step == 0 && std::getline(rows, row))
+	{
+		if (row.empty() || row[0] == '#') continue;
+		k++;
+		if (row.find("made by the fallback matcher") != std::string::npos) step = k;
+	}
+	ASSERT_GT(step, 0u) << "no match made by the fallback";
+	const CommandResult r = viewer(shellQuote(dir) + " --view match --step " +
+		std::to_string(step) + " --screenshot " + shellQuote(tmp.file("pcm-fallback.png")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	EXPECT_NE(r.output.find("reason: made by the fallback matcher after featloc::PcmFeatureMatcher: "),
 		std::string::npos)
 		<< r.output;
-	EXPECT_NE(r.output.find("featloc::PcmFeatureMatcher: success by its fallback featloc::IcpMatcher"),
+	EXPECT_NE(r.output.find("featloc::PcmFeatureMatcher: success by its fallback featloc::IdcMatcher"),
 		std::string::npos)
 		<< r.output;
 	EXPECT_EQ(r.output.find("PCM feature pairs"), std::string::npos) << r.output;

@@ -61,9 +61,12 @@ class PcmFeatureMatcher : public ScanMatcher
 	DEFINE_MRPT_OBJECT(PcmFeatureMatcher, featloc)
 
    public:
-	/** With MRPT's ICP as its fallback (fallback_class): PCM's features
-	 * cannot place a scan along parallel walls; the points can. */
-	PcmFeatureMatcher() : ScanMatcher("featloc::IcpMatcher") {}
+	/** With IDC (and its coarse search) as its fallback (fallback_class):
+	 * PCM's features cannot place a scan along parallel walls; the points
+	 * of a door jamb can, and IDC says when they cannot (MRPT's ICP, the
+	 * fallback before, slid along a corridor instead: doc/benchmarks.md,
+	 * "PCM's fallback"). */
+	PcmFeatureMatcher() : ScanMatcher("featloc::IdcMatcher") {}
 
 	struct Parameters : public mrpt::config::CLoadableOptions
 	{
