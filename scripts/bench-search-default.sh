@@ -7,10 +7,13 @@
 #    matcher chain and EKF.
 #  - The office and lab worlds, 1 cm noise, seeds 1-4 (the logs of
 #    scripts/bench-robust.sh's whole-run table), every matcher.
+#  - Held out: the corridor with six people walking, seeds 1-6, every
+#    matcher as config.ini has it, matcher chain and EKF, and odometry
+#    alone.
 # The pairwise figures (every pair counted, flagged and silent failures)
 # are scripts/bench-robust.sh's "+ coarse" rows; bench-robust.sh runs this
 # script for its whole-run tables.
-# Usage: scripts/bench-search-default.sh [OUTDIR]   (about 12 min on 2 cores)
+# Usage: scripts/bench-search-default.sh [OUTDIR]   (about 17 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-search-default "$@"
@@ -62,6 +65,40 @@ for scene in office lab; do
     done
     echo "$row |"
   done
+done
+echo
+echo "### Held out: the corridor with people walking, seeds 1-6, every matcher as config.ini has it: ATE rmse [mm]"
+echo
+echo "| estimator | matcher$(for s in 1 2 3 4 5 6; do printf ' | seed %s' $s; done) | mean |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for seed in 1 2 3 4 5 6; do
+  [ -f "$OUT/corridor-people-seed$seed.rawlog" ] ||
+    "$BIN/featloc-sim" "$ROOT/worlds/corridor-people.ini" --out "$OUT/corridor-people-seed$seed" \
+      --seed "$seed" -q > /dev/null
+done
+corridor_row() { # estimator, matcher[, label, extra --set args...]
+  local est="$1" m="$2" label="${3:-$2}" row sum=0 a seed r
+  shift 2
+  [ $# -gt 0 ] && shift
+  row="| $est | $label"
+  for seed in 1 2 3 4 5 6; do
+    r="$OUT/run-corridor-seed$seed-$est-$(echo "$label" | tr " >" "__")"
+    "$BIN/featloc-run" "$ROOT/config.ini" "$OUT/corridor-people-seed$seed.rawlog" --out "$r" -q \
+      --set "ScanMatcher:class=featloc::$m" --set "Pipeline:estimator=$est" \
+      --set "Evaluation:ground_truth=$OUT/corridor-people-seed$seed.gt.txt" \
+      --set Output:write_scene=false --set Output:write_rawlog=false "$@" > /dev/null
+    a="$(jq -r '.evaluation.ate_m.rmse * 1000' "$r/summary.json")"
+    sum="$(awk -v s="$sum" -v a="$a" 'BEGIN { print s + a }')"
+    row="$row | $(fmt "$a" 0)"
+  done
+  echo "$row | $(fmt "$(awk -v s="$sum" 'BEGIN { print s / 6 }')" 0) |"
+}
+corridor_row odometry IcpMatcher "(odometry alone)"
+for est in matcher ekf; do
+  for m in $MATCHERS; do corridor_row "$est" "$m"; done
+  # PCM's fallback before 2026-11-25: MRPT's ICP.
+  corridor_row "$est" PcmFeatureMatcher "PcmFeatureMatcher > IcpMatcher" \
+    --set ScanMatcher.PcmFeatureMatcher:fallback_class=featloc::IcpMatcher
 done
 echo
 echo "(defaults: coarse_search on for PcmFeatureMatcher, IdcMatcher, CfIdcMatcher; off for IcpMatcher; raw outputs in $OUT)"
