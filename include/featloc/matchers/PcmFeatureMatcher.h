@@ -65,7 +65,7 @@ class PcmFeatureMatcher : public ScanMatcher
 	 * PCM's features cannot place a scan along parallel walls; the points
 	 * of a door jamb can, and IDC says when they cannot (MRPT's ICP, the
 	 * fallback before, slid along a corridor instead: doc/benchmarks.md,
-	 * "PCM's fallback"). */
+	 * "Issue 15, fourth session"). */
 	PcmFeatureMatcher() : ScanMatcher("featloc::IdcMatcher") {}
 
 	struct Parameters : public mrpt::config::CLoadableOptions
