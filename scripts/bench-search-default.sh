@@ -82,7 +82,7 @@ corridor_row() { # estimator, matcher[, label, extra --set args...]
   [ $# -gt 0 ] && shift
   row="| $est | $label"
   for seed in 1 2 3 4 5 6; do
-    r="$OUT/run-corridor-seed$seed-$est-$(echo "$label" | tr " >" "__")"
+    r="$OUT/run-corridor-seed$seed-$est-$(echo "$label" | tr -d "()" | tr " >" "__")"
     "$BIN/featloc-run" "$ROOT/config.ini" "$OUT/corridor-people-seed$seed.rawlog" --out "$r" -q \
       --set "ScanMatcher:class=featloc::$m" --set "Pipeline:estimator=$est" \
       --set "Evaluation:ground_truth=$OUT/corridor-people-seed$seed.gt.txt" \
