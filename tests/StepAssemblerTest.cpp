@@ -70,6 +70,30 @@ TEST(StepAssembler, Format1IncrementsAreTheActions)
 	}
 }
 
+// Format #1 odometry read at the scan's instant has no sampling offset (the
+// EKF's turn on featloc-sim's corridor went 1.5 deg wrong modelling one):
+// the actions stamped with their scan's time were; unstamped ones (MRPT's
+// simulated log) and ones stamped 0.1 s before their scan (Malaga) were not.
+TEST(StepAssembler, ActionsStampedWithTheirScansTimeWereReadAtTheScan)
+{
+	registerClasses();
+	TempDir dir;
+	for (const double offset : {0.0, std::numeric_limits<double>::quiet_NaN(), -0.1})
+	{
+		TestRawlog log;
+		log.scans = 4;
+		log.actionTimeOffset = offset;
+		log.write(dir.file("a.rawlog"));
+		const auto steps = stepsOf(dir.file("a.rawlog"));
+		ASSERT_EQ(steps.size(), 4u);
+		for (size_t k = 1; k < steps.size(); k++)
+		{
+			EXPECT_TRUE(steps[k].odometryFromActions);
+			EXPECT_EQ(steps[k].odometryReadAtScan, offset == 0) << "offset " << offset;
+		}
+	}
+}
+
 TEST(StepAssembler, Format2OdometryIsInterpolatedAtScanTimes)
 {
 	registerClasses();

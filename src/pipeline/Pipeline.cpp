@@ -205,7 +205,9 @@ RunStats Pipeline::run(
 
 mrpt::poses::CPose2D Pipeline::actionStep(const EstimationStep& step)
 {
-	return step.odometryFromActions ? step.odometry.mean : mrpt::poses::CPose2D();
+	// Read at the scan's instant (or interpolated there): no offset.
+	return step.odometryFromActions && !step.odometryReadAtScan ? step.odometry.mean
+																 : mrpt::poses::CPose2D();
 }
 
 bool Pipeline::isNewKeyframe(const MatchResult* match) const
@@ -243,7 +245,7 @@ void Pipeline::processStep(
 		}
 	const mrpt::poses::CPosePDFGaussian unscaledOdometry = step.odometry;
 	step.odometry.cov *= m_odometryCheck.scale();
-	if (m_odometry.action_sampling_offset && step.odometryFromActions)
+	if (m_odometry.action_sampling_offset && step.odometryFromActions && !step.odometryReadAtScan)
 		step.odometrySamplingCovariance = OdometrySamplingOffset::ofReading(step.odometry.mean);
 	MatchResult match;
 	const MatchResult* matchPtr = nullptr;

@@ -6,6 +6,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "featloc/core/InputError.h"
@@ -18,6 +19,9 @@ namespace featloc
 {
 namespace
 {
+/** [s] An action stamped this close to its scan was read with it. */
+constexpr double kSameInstant = 1e-3;
+
 std::string timeText(mrpt::Clock::time_point t)
 {
 	std::ostringstream ss;
@@ -134,6 +138,9 @@ void StepAssembler::onAction(const mrpt::serialization::CSerializable::Ptr& acti
 	else
 		m_actionSum = inc;
 	m_haveActions = true;
+	// MRPT's simulated log leaves actions unstamped (zero).
+	m_lastActionTime.reset();
+	if (move->timestamp != mrpt::Clock::time_point()) m_lastActionTime = move->timestamp;
 	m_actions++;
 }
 
@@ -249,6 +256,7 @@ void StepAssembler::openFrame(mrpt::Clock::time_point t, size_t entryIndex, cons
 		p.step.hasOdometry = true;
 		p.step.odometryFromActions = true;
 		p.step.odometry = m_actionSum;
+		p.actionTime = m_lastActionTime;
 		m_haveActions = false;
 	}
 	m_lastStepTime = t;
@@ -262,6 +270,11 @@ void StepAssembler::closeFrame()
 	// A scan that joined later may have moved the frame's time forward.
 	if (!m_lastStepTime || *m_lastStepTime < m_open->step.time)
 		m_lastStepTime = m_open->step.time;
+	// Stamped with the frame's own time: read at the scan's instant.
+	if (m_open->actionTime)
+		m_open->step.odometryReadAtScan =
+			std::abs(mrpt::Clock::toDouble(*m_open->actionTime) -
+				mrpt::Clock::toDouble(m_open->step.time)) <= kSameInstant;
 	m_pending.push_back(std::move(*m_open));
 	m_open.reset();
 }

@@ -8,6 +8,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <cmath>
 #include <memory>
 
 #include "SyntheticRoom.h"
@@ -57,7 +58,9 @@ std::vector<double> TestRawlog::write(const std::string& file) const
 				CActionRobotMovement2D::TMotionModelOptions opts;
 				move.computeFromOdometry(
 					path(t) - path(t - scanPeriod), opts);
-				move.timestamp = scan->timestamp;
+				if (!std::isnan(actionTimeOffset))
+					move.timestamp = mrpt::Clock::fromDouble(
+						mrpt::Clock::toDouble(scan->timestamp) + actionTimeOffset);
 				CActionCollection acts;
 				acts.insert(move);
 				arch << acts;

@@ -21,6 +21,9 @@ struct TestRawlog
 	size_t odometryPerScan = 3;
 	/** Format #2: false writes the scans alone (a robot without odometry). */
 	bool odometry = true;
+	/** Format #1: each action's timestamp is its scan's plus this [s]; NaN
+	 * leaves the actions unstamped (as MRPT's simulated log does). */
+	double actionTimeOffset = 0;
 	std::string laserLabel = "LASER";
 	/** Robot pose at time t (seconds after t0). */
 	std::function<mrpt::poses::CPose2D(double)> path = [](double t) {

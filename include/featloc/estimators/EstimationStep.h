@@ -49,6 +49,12 @@ struct EstimationStep
 	 * lead or lag the scan: OdometrySamplingOffset). False when it was
 	 * interpolated at the scan's own time (format #2, CARMEN logs). */
 	bool odometryFromActions = false;
+	/** With odometryFromActions: the last action is stamped with this
+	 * step's time (to a millisecond), so it was read at the scan's instant
+	 * and has no sampling offset (featloc-sim's logs; MRPT's simulated log
+	 * leaves its actions unstamped, Malaga's are stamped 0.1 s before their
+	 * scans). */
+	bool odometryReadAtScan = false;
 	/** Covariance of the error of this step's odometry reading at this
 	 * scan (robot frame at this scan) when it was read off the scan's
 	 * instant: D D^T / 12 for the step's increment D

@@ -90,6 +90,8 @@ class StepAssembler
 	{
 		EstimationStep step;
 		bool fromActions = false;  //!< odometry came from format #1 actions
+		/** The last of those actions' timestamp (none: the log gives none). */
+		std::optional<mrpt::Clock::time_point> actionTime;
 	};
 
 	void onObservation(
@@ -127,6 +129,7 @@ class StepAssembler
 	// Format #1: composed action increments since the last step.
 	bool m_haveActions = false;
 	mrpt::poses::CPosePDFGaussian m_actionSum;
+	std::optional<mrpt::Clock::time_point> m_lastActionTime;  //!< of the last of them
 
 	// Format #2: odometry pose at the previous released step.
 	std::optional<mrpt::poses::CPose2D> m_prevStepOdometry;
