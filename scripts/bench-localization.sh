@@ -150,13 +150,13 @@ for world in office lab; do
   loc "$OUT/$world-b" "$OUT/$world-b-nomap" ""
   loc "$OUT/$world-b" "$OUT/$world-b-pcm" "$MAP" --set ScanMatcher:class=featloc::PcmFeatureMatcher
   loc "$OUT/$world-b" "$OUT/$world-b-pcm-nosearch" "$MAP" --set ScanMatcher:class=featloc::PcmFeatureMatcher \
-    --set ScanMatcher.PcmFeatureMatcher:coarse_search=false
+    --set ScanMatcher.PcmFeatureMatcher:coarse_search=false --set ScanMatcher.IdcMatcher:coarse_search=false
   pf "$OUT/$world-b" "$MAP" "$OUT/$world-b-pf"
   echo "| $world | (mapping run A, in the world file) | $(ate "$OUT/$world-a-mapping") | $(used "$OUT/$world-a-mapping") | $(maptime "$OUT/$world-a-mapping") | $(perscan "$OUT/$world-a-mapping") | $(processing "$OUT/$world-a-mapping") |"
   echo "| $world | featloc, the world file | $(ate "$OUT/$world-b-world") | $(used "$OUT/$world-b-world") | $(maptime "$OUT/$world-b-world") | $(perscan "$OUT/$world-b-world") | $(processing "$OUT/$world-b-world") |"
   echo "| $world | featloc, run A's map.simplemap | $(ate "$OUT/$world-b-simplemap") | $(used "$OUT/$world-b-simplemap") | $(maptime "$OUT/$world-b-simplemap") | $(perscan "$OUT/$world-b-simplemap") | $(processing "$OUT/$world-b-simplemap") |"
   echo "| $world | featloc, run A's map.simplemap, PCM scan-to-scan too | $(ate "$OUT/$world-b-pcm") | $(used "$OUT/$world-b-pcm") | $(maptime "$OUT/$world-b-pcm") | $(perscan "$OUT/$world-b-pcm") | $(processing "$OUT/$world-b-pcm") |"
-  echo "| $world | featloc, run A's map.simplemap, PCM scan-to-scan without its coarse search | $(ate "$OUT/$world-b-pcm-nosearch") | $(used "$OUT/$world-b-pcm-nosearch") | $(maptime "$OUT/$world-b-pcm-nosearch") | $(perscan "$OUT/$world-b-pcm-nosearch") | $(processing "$OUT/$world-b-pcm-nosearch") |"
+  echo "| $world | featloc, run A's map.simplemap, PCM scan-to-scan without coarse searches (its own and its IDC fallback's) | $(ate "$OUT/$world-b-pcm-nosearch") | $(used "$OUT/$world-b-pcm-nosearch") | $(maptime "$OUT/$world-b-pcm-nosearch") | $(perscan "$OUT/$world-b-pcm-nosearch") | $(processing "$OUT/$world-b-pcm-nosearch") |"
   echo "| $world | pf-localization, run A's map.simplemap | $(pf_ate "$OUT/$world-b-pf") | - | - | - | $(pf_time "$OUT/$world-b-pf") (filter step) |"
   echo "| $world | featloc, no map (EKF from the start) | $(ate "$OUT/$world-b-nomap") | - | - | $(perscan "$OUT/$world-b-nomap") | $(processing "$OUT/$world-b-nomap") |"
 done
