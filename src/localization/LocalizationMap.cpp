@@ -54,9 +54,13 @@ mrpt::obs::CObservation2DRangeScan LocalizationMap::virtualScan(
 double LocalizationMap::shareSeenThrough(
 	const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose) const
 {
-	const auto through = beamsSeenThrough(scan, robotPose);
-	const auto n = std::count(through.begin(), through.end(), true);
-	return through.empty() ? 0.0 : static_cast<double>(n) / static_cast<double>(through.size());
+	return shareOf(beamsSeenThrough(scan, robotPose));
+}
+
+double LocalizationMap::shareOf(const std::vector<bool>& seenThrough)
+{
+	const auto n = std::count(seenThrough.begin(), seenThrough.end(), true);
+	return seenThrough.empty() ? 0.0 : static_cast<double>(n) / static_cast<double>(seenThrough.size());
 }
 
 std::vector<bool> LocalizationMap::beamsSeenThrough(

@@ -78,15 +78,12 @@ MapLocalizer::Placement MapLocalizer::placed(
 	Placement out{local.pose, local.score, 0};
 	const auto through = m_map->beamsSeenThrough(scan, local.pose);
 	const auto hits = m_global->beamHits(scan, local.pose);
-	size_t seen = 0;
 	for (size_t i = 0; i < hits.size() && i < through.size(); i++)
 	{
 		const bool t = m_options.global_see_through && through[i];
-		seen += through[i] ? 1 : 0;
 		out.logLikelihood += t ? std::log(kThrough) : std::log(kStray + (1 - kStray) * hits[i]);
 	}
-	if (m_options.global_see_through && !through.empty())
-		out.score -= static_cast<double>(seen) / static_cast<double>(through.size());
+	if (m_options.global_see_through) out.score -= LocalizationMap::shareOf(through);
 	return out;
 }
 

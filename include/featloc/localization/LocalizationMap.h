@@ -51,6 +51,9 @@ class LocalizationMap
 	 * margin shareSeenThrough uses. */
 	std::vector<bool> beamsSeenThrough(
 		const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose) const;
+	/** The share of true entries of beamsSeenThrough's result (0 when it is
+	 * empty): shareSeenThrough without casting the rays again. */
+	static double shareOf(const std::vector<bool>& seenThrough);
 	static constexpr double kSeeThroughMargin = 0.3;  //!< [m]
 	static constexpr double kSeeThroughShare = 0.1;
 
