@@ -206,8 +206,7 @@ RunStats Pipeline::run(
 mrpt::poses::CPose2D Pipeline::actionStep(const EstimationStep& step)
 {
 	// Read at the scan's instant (or interpolated there): no offset.
-	return step.odometryFromActions && !step.odometryReadAtScan ? step.odometry.mean
-																 : mrpt::poses::CPose2D();
+	return step.odometryReadOffScan() ? step.odometry.mean : mrpt::poses::CPose2D();
 }
 
 bool Pipeline::isNewKeyframe(const MatchResult* match) const
@@ -245,7 +244,7 @@ void Pipeline::processStep(
 		}
 	const mrpt::poses::CPosePDFGaussian unscaledOdometry = step.odometry;
 	step.odometry.cov *= m_odometryCheck.scale();
-	if (m_odometry.action_sampling_offset && step.odometryFromActions && !step.odometryReadAtScan)
+	if (m_odometry.action_sampling_offset && step.odometryReadOffScan())
 		step.odometrySamplingCovariance = OdometrySamplingOffset::ofReading(step.odometry.mean);
 	MatchResult match;
 	const MatchResult* matchPtr = nullptr;

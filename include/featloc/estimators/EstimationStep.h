@@ -55,6 +55,9 @@ struct EstimationStep
 	 * leaves its actions unstamped, Malaga's are stamped 0.1 s before their
 	 * scans). */
 	bool odometryReadAtScan = false;
+	/** Format #1 odometry read at an instant the log does not give (or
+	 * not at the scan's): what [Odometry] action_sampling_offset models. */
+	bool odometryReadOffScan() const { return odometryFromActions && !odometryReadAtScan; }
 	/** Covariance of the error of this step's odometry reading at this
 	 * scan (robot frame at this scan) when it was read off the scan's
 	 * instant: D D^T / 12 for the step's increment D

@@ -70,7 +70,7 @@ class Pipeline
 	MapLocalizer::Outcome localizeInMap(const EstimationStep& step, RunStats& stats);
 	bool isNewKeyframe(const MatchResult* match) const;
 	/** The step's odometry when it came from format #1 actions read off the
-	 * scan's instant (odometryReadAtScan false), else zero. */
+	 * scan's instant (EstimationStep::odometryReadOffScan), else zero. */
 	static mrpt::poses::CPose2D actionStep(const EstimationStep& step);
 
 	// The reference (keyframe) scan of the next match, the estimated pose
