@@ -53,6 +53,17 @@ TEST(LineEllipseExtractorMemo, NewParametersOrOtherPointsExtractAnew)
 	std::vector<ScanFeature> none;
 	x.extract(s, none);
 	EXPECT_TRUE(none.empty());
+	// The line fit changed: the memo (which once left line_fit out of its
+	// comparison) must not give the weighted fit's lines back.
+	x.params = LineEllipseExtractor::Parameters();
+	x.extract(s, again);
+	x.params.line_fit = "tls";
+	std::vector<ScanFeature> tls;
+	x.extract(s, tls);
+	ASSERT_EQ(tls.size(), again.size());
+	bool fitDiffers = false;
+	for (size_t i = 0; i < tls.size(); i++) fitDiffers |= tls[i].varAlpha != again[i].varAlpha;
+	EXPECT_TRUE(fitDiffers);
 	// One point moved by a micrometre: another scan.
 	x.params = LineEllipseExtractor::Parameters();
 	ScanPoints moved = s;

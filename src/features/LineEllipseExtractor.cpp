@@ -8,6 +8,7 @@
 
 #include "featloc/config/ConfigValues.h"
 #include "featloc/features/LineFit.h"
+#include "featloc/scan/AdaptiveBreakpointSegmenter.h"
 
 namespace featloc
 {
@@ -57,6 +58,7 @@ void LineEllipseExtractor::Parameters::loadFromConfigFile(
 {
 	using namespace featloc::config;
 	read(c, s, "max_point_gap", max_point_gap);
+	readDegrees(c, s, "grazing_incidence_DEG", grazing_incidence);
 	read(c, s, "split_distance_min", split_distance_min);
 	read(c, s, "split_sigmas", split_sigmas);
 	read(c, s, "trim_sigmas", trim_sigmas);
@@ -70,6 +72,8 @@ void LineEllipseExtractor::Parameters::loadFromConfigFile(
 	read(c, s, "ellipse_shape_sigma_ratio", ellipse_shape_sigma_ratio);
 	readChoice(c, s, "line_fit", line_fit, {"weighted", "tls"});
 	require(max_point_gap > 0, c, s, "max_point_gap", "> 0");
+	require(grazing_incidence >= 0 && grazing_incidence < M_PI / 2, c, s, "grazing_incidence_DEG",
+		"in [0, 90) degrees (0: max_point_gap alone)");
 	require(split_distance_min > 0, c, s, "split_distance_min", "> 0");
 	require(split_sigmas >= 0, c, s, "split_sigmas", ">= 0");
 	require(trim_sigmas > 0, c, s, "trim_sigmas", "> 0");
@@ -88,6 +92,8 @@ void LineEllipseExtractor::Parameters::saveToConfigFile(
 	using namespace featloc::config;
 	write(c, s, "max_point_gap", max_point_gap,
 		"[m] features: consecutive points farther apart start a new cluster");
+	writeDegrees(c, s, "grazing_incidence_DEG", grazing_incidence,
+		"[deg] features: ... unless a surface seen this grazingly spaces its points so (adaptive breakpoint detector; 0: off)");
 	write(c, s, "split_distance_min", split_distance_min,
 		"[m] features: split where a point is farther than max(this, split_sigmas * noise) from the chord");
 	write(c, s, "split_sigmas", split_sigmas,
@@ -110,6 +116,18 @@ void LineEllipseExtractor::Parameters::saveToConfigFile(
 		"features: ellipse centroid sigma added per metre of its length");
 	write(c, s, "line_fit", line_fit,
 		"features: weighted (lines refitted with each point's variance under range noise) | tls (eqs. 3-8, as published)");
+}
+
+bool LineEllipseExtractor::clusterBreak(const ScanPoint& a, const ScanPoint& b) const
+{
+	if (gap(a, b) <= params.max_point_gap) return false;
+	if (!(params.grazing_incidence > 0)) return true;
+	// Eq. (3) as written: a missing return between a and b widens dphi, and
+	// dphi >= lambda always breaks.
+	AdaptiveBreakpointSegmenter::Parameters abd;
+	abd.lambda = params.grazing_incidence;
+	abd.breakAtMissingReturns = false;
+	return AdaptiveBreakpointSegmenter(abd).isBreakpoint(a, b);
 }
 
 void LineEllipseExtractor::split(
@@ -160,8 +178,7 @@ void LineEllipseExtractor::mergeRuns(const ScanPoints& s)
 			const auto& B = m_runs[r + 1];
 			// Only runs of the same cluster (sharing or adjacent points).
 			if (B.first > A.second + 1) continue;
-			if (gap(s.points[A.second], s.points[B.first]) > params.max_point_gap)
-				continue;
+			if (clusterBreak(s.points[A.second], s.points[B.first])) continue;
 			// One line if the joint fit is as good as the noise allows: a
 			// single noise spike (which may have caused the split) must not
 			// keep a straight wall in pieces.
@@ -227,9 +244,10 @@ void LineEllipseExtractor::refine(const ScanPoints& s)
 bool LineEllipseExtractor::Parameters::operator==(const Parameters& o) const
 {
 	auto fields = [](const Parameters& p) {
-		return std::tie(p.max_point_gap, p.split_distance_min, p.split_sigmas, p.trim_sigmas,
-			p.merge_sigmas, p.max_line_sigma, p.min_points, p.min_length, p.ellipse_max_length,
-			p.refine_iterations, p.min_point_sigma, p.ellipse_shape_sigma_ratio);
+		return std::tie(p.max_point_gap, p.grazing_incidence, p.split_distance_min, p.split_sigmas,
+			p.trim_sigmas, p.merge_sigmas, p.max_line_sigma, p.min_points, p.min_length,
+			p.ellipse_max_length, p.refine_iterations, p.min_point_sigma,
+			p.ellipse_shape_sigma_ratio, p.line_fit);
 	};
 	return fields(*this) == fields(o);
 }
@@ -258,8 +276,7 @@ void LineEllipseExtractor::extractAnew(const ScanPoints& s, std::vector<ScanFeat
 	for (size_t start = 0; start < n;)
 	{
 		size_t end = start;
-		while (end + 1 < n && gap(s.points[end], s.points[end + 1]) <= params.max_point_gap)
-			end++;
+		while (end + 1 < n && !clusterBreak(s.points[end], s.points[end + 1])) end++;
 		if (end > start) split(s, start, end, m_noise.estimate(s.points, start, end));
 		start = end + 1;
 	}

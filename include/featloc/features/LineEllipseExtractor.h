@@ -1,6 +1,7 @@
 #pragma once
 #include <string>
 #include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/core/bits_math.h>
 
 #include <utility>
 #include <vector>
@@ -17,7 +18,14 @@ namespace featloc
  * details it does not give. This class implements split-and-merge with a
  * clustering refinement:
  *  1. segmentation: consecutive points (in bearing order) closer than
- *     max_point_gap form a cluster;
+ *     max_point_gap form a cluster; so do points farther apart that
+ *     Borges & Aldon's adaptive breakpoint detector (AdaptiveBreakpoint-
+ *     Segmenter, eq. (3) of Nunez et al.) with lambda = grazing_incidence
+ *     keeps together (featloc's; 0 = off). Along a wall seen at grazing
+ *     incidence 8 m away, 0.5 degree beams land 0.5-0.9 m apart: a fixed
+ *     gap drops those points, and with them the lever arm that fixes the
+ *     wall's orientation (PCM's rotation error on the office: 1.66 ->
+ *     1.4x the Cramer-Rao bound, doc/benchmarks.md);
  *  2. split: a run is split at the point farthest from its end-to-end chord
  *     while that distance exceeds the cluster's threshold (iterative
  *     end-point fit). The threshold adapts to the noise:
@@ -74,6 +82,11 @@ class LineEllipseExtractor
 	struct Parameters : public mrpt::config::CLoadableOptions
 	{
 		double max_point_gap = 0.5;	 //!< [m] segmentation
+		/** [rad] segmentation: points farther apart than max_point_gap
+		 * stay in one cluster if a surface seen this grazingly could
+		 * space them so (eq. (3) of the adaptive breakpoint detector);
+		 * 0: max_point_gap alone. */
+		double grazing_incidence = mrpt::DEG2RAD(5.0);
 		double split_distance_min = 0.02;  //!< [m] split/merge threshold floor
 		double split_sigmas = 4;  //!< threshold in estimated noise sigmas
 		double trim_sigmas = 3;	 //!< end trimming, in estimated noise sigmas
@@ -108,6 +121,8 @@ class LineEllipseExtractor
 
    private:
 	using Run = std::pair<size_t, size_t>;	//!< [first, last] point indices
+	/** Step 1's test: consecutive points a, b belong to different clusters. */
+	bool clusterBreak(const ScanPoint& a, const ScanPoint& b) const;
 	void split(const ScanPoints& s, size_t first, size_t last, double noise);
 	void mergeRuns(const ScanPoints& s);
 	void setCovariances(const ScanPoints& s, std::vector<ScanFeature>& features) const;
