@@ -3,11 +3,16 @@
 #include <gtest/gtest.h>
 #include <mrpt/obs/CObservationRobotPose.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <mrpt/core/bits_math.h>
+
+#include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -711,6 +716,151 @@ TEST(FeatlocBench, EveryPairCountsAndTheBasinCurveIsDrawn)
 	const CommandResult bad = runCommand(common + " --basin x.png --basin-levels 0.1-2");
 	EXPECT_EQ(bad.exitCode, 2);
 	EXPECT_NE(bad.output.find("--basin-levels: '0.1-2'"), std::string::npos) << bad.output;
+}
+
+// --pairs: one row per matcher and pair, from which the tables' figures
+// come back (the mean |t| error over every pair, failures at the guess's
+// error; the NEES over the successes), and a failure carries the guess's
+// covariance.
+TEST(FeatlocBench, EveryPairsOutcomeIsWrittenAndGivesTheTablesFigures)
+{
+	TempDir dir;
+	const std::string sim = std::string(FEATLOC_SOURCE_DIR) + "/rawlogs/sim/";
+	const CommandResult r = runCommand(shellQuote(FEATLOC_BENCH_EXE) + " " + shellQuote(kConfig) +
+		" " + shellQuote(sim + "office.rawlog") + " -g " + shellQuote(sim + "office.gt.txt") +
+		" --max-pairs 40 -q --perturb-xy 0.3 --perturb-yaw-deg 10 --name office" +
+		" -j " + shellQuote(dir.file("b.json")) + " --pairs " + shellQuote(dir.file("p.tsv")) +
+		" -m 'never=featloc::IcpMatcher{coarse_search=true;coarse_min_score=1},idc=featloc::IdcMatcher'");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto j = readJson(dir.file("b.json"));
+	std::istringstream rows(readText(dir.file("p.tsv")));
+	std::string line;
+	std::map<std::string, std::vector<std::vector<std::string>>> byMatcher;
+	size_t header = 0;
+	while (std::getline(rows, line))
+	{
+		if (line.rfind("#", 0) == 0)
+		{
+			header++;
+			continue;
+		}
+		std::vector<std::string> c;
+		std::istringstream cells(line);
+		for (std::string cell; std::getline(cells, cell, '\t');) c.push_back(cell);
+		ASSERT_EQ(c.size(), 13u) << line;
+		EXPECT_EQ(c[0], "office");
+		byMatcher[c[1]].push_back(c);
+	}
+	EXPECT_EQ(header, 1u);
+	ASSERT_EQ(byMatcher["never"].size(), 40u);
+	ASSERT_EQ(byMatcher["idc"].size(), 40u);
+	for (size_t m = 0; m < 2; m++)
+	{
+		const auto& res = j["results"][m];
+		const auto& table = byMatcher[res["matcher"].get<std::string>()];
+		double sumT = 0, sumNees = 0;
+		size_t successes = 0;
+		for (size_t k = 0; k < table.size(); k++)
+		{
+			const auto& c = table[k];
+			EXPECT_EQ(std::stoul(c[2]), k);
+			const Eigen::Vector3d e(std::stod(c[4]), std::stod(c[5]), std::stod(c[6]));
+			Eigen::Matrix3d P;
+			P << std::stod(c[7]), std::stod(c[8]), std::stod(c[9]), std::stod(c[8]), std::stod(c[10]),
+				std::stod(c[11]), std::stod(c[9]), std::stod(c[11]), std::stod(c[12]);
+			sumT += std::hypot(e[0], e[1]);
+			if (c[3] == "failed")
+			{
+				// The guess's: uniform +-0.3 m / +-10 deg, sigma a / sqrt(3).
+				EXPECT_NEAR(P(0, 0), 0.09 / 3, 1e-9);
+				EXPECT_NEAR(P(2, 2), std::pow(mrpt::DEG2RAD(10.0), 2) / 3, 1e-9);
+				continue;
+			}
+			sumNees += e.dot(P.ldlt().solve(e));
+			successes++;
+		}
+		EXPECT_NEAR(sumT / 40, res["mean_trans_err_m"].get<double>(), 1e-6) << res["matcher"];
+		if (res["matcher"] == "never")
+			EXPECT_EQ(successes, 0u);
+		else
+		{
+			ASSERT_GT(successes, 30u);
+			EXPECT_NEAR(sumNees / static_cast<double>(successes), res["nees_mean"].get<double>(),
+				1e-3 * res["nees_mean"].get<double>());
+		}
+	}
+}
+
+// scripts/reference-error-share.py on outcomes whose errors are known: four
+// matchers, each with its own error, plus one reference error per pair that
+// all share. A, B and C report their own error's covariance; D reports half
+// its standard deviation (over-confident). Against the reference every NEES
+// is far above 3; the three-cornered hat finds each one's own spread (A's
+// as reported, D's twice what it reports) and the shared one, and the
+// difference NEES is 3 between consistent matchers and above it with D.
+TEST(ReferenceErrorShare, SplitsKnownOwnAndSharedErrors)
+{
+	TempDir dir;
+	mrpt::random::CRandomGenerator rng(5);
+	const double reported[3] = {0.005, 0.005, mrpt::DEG2RAD(0.05)};
+	const double shared[3] = {0.02, 0.02, mrpt::DEG2RAD(0.3)};
+	{
+		std::ofstream f(dir.file("p.tsv"));
+		f << "# data\tmatcher\tpair\tstatus\terr_x_m\terr_y_m\terr_yaw_rad\tcov_xx\tcov_xy\tcov_xyaw\tcov_yy\tcov_yyaw\tcov_yawyaw\n";
+		std::vector<Eigen::Vector3d> ref(4000);
+		for (auto& e : ref)
+			for (int i = 0; i < 3; i++) e[i] = shared[i] * rng.drawGaussian1D_normalized();
+		for (const std::string m : {"A", "B", "C", "D"})
+			for (size_t k = 0; k < ref.size(); k++)
+			{
+				const double own = m == "D" ? 2.0 : 1.0;
+				Eigen::Vector3d e;
+				for (int i = 0; i < 3; i++)
+					e[i] = own * reported[i] * rng.drawGaussian1D_normalized() - ref[k][i];
+				f << "log\t" << m << "\t" << k << "\tused\t" << e[0] << "\t" << e[1] << "\t" << e[2]
+				  << "\t" << reported[0] * reported[0] << "\t0\t0\t" << reported[1] * reported[1]
+				  << "\t0\t" << reported[2] * reported[2] << "\n";
+			}
+	}
+	const CommandResult r = runCommand("python3 " +
+		shellQuote(std::string(FEATLOC_SOURCE_DIR) + "/scripts/reference-error-share.py") + " " +
+		shellQuote(dir.file("p.tsv")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	std::map<std::string, std::vector<std::string>> hat, difference;
+	std::istringstream rows(r.output);
+	for (std::string line; std::getline(rows, line);)
+	{
+		if (line.rfind("| log |", 0) != 0) continue;
+		std::vector<std::string> c;
+		std::istringstream cells(line);
+		for (std::string cell; std::getline(cells, cell, '|');)
+			c.push_back(cell.size() >= 2 ? cell.substr(1, cell.size() - 2) : "");
+		if (c.size() == 10) hat[c[2]] = c;  // | log | A | with | pairs | NEES | own | reported | ratio | shared |
+		if (c.size() == 6) difference[c[2] + "-" + c[3]] = c;  // | log | A | B | pairs | NEES |
+	}
+	ASSERT_EQ(hat.size(), 4u) << r.output;
+	ASSERT_EQ(difference.size(), 6u) << r.output;
+	auto numbers = [](const std::string& cell) {
+		std::vector<double> v;
+		std::istringstream in(cell);
+		for (std::string x; std::getline(in, x, ',');) v.push_back(std::stod(x));
+		return v;
+	};
+	// Against the reference: (reported^2 + shared^2) / reported^2 per axis,
+	// 17 + 17 + 37 = 71 for A.
+	EXPECT_GT(std::stod(hat["A"][5]), 50) << r.output;
+	const auto ownA = numbers(hat["A"][6]);
+	ASSERT_EQ(ownA.size(), 3u);
+	EXPECT_NEAR(ownA[0], 5.0, 0.6);	 // [mm]
+	EXPECT_NEAR(ownA[2], 0.05, 0.006);	// [deg]
+	for (double ratio : numbers(hat["A"][8])) EXPECT_NEAR(ratio, 1.0, 0.15) << r.output;
+	for (double ratio : numbers(hat["D"][8])) EXPECT_NEAR(ratio, 2.0, 0.2) << r.output;
+	const auto sharedA = numbers(hat["A"][9]);
+	EXPECT_NEAR(sharedA[0], 20.0, 1.5);	 // [mm]
+	EXPECT_NEAR(sharedA[2], 0.3, 0.03);	 // [deg]
+	EXPECT_NEAR(std::stod(difference["A-B"][5]), 3.0, 0.25) << r.output;
+	// (1 + 4) / (1 + 1) per axis with D.
+	EXPECT_NEAR(std::stod(difference["A-D"][5]), 7.5, 0.8) << r.output;
 }
 
 // IDC's point-to-line phase can cycle for ever: points change lines as the

@@ -157,6 +157,33 @@ void attachWorld(std::vector<ScanPairSample>& pairs, const std::vector<size_t>& 
 	}
 }
 
+/** --pairs: one row per matcher and pair. The status is what featloc-bench
+ * counts: used (a success), ambiguous (flagged, used with its inflated
+ * covariance), failed (the guess, with the guess's covariance). */
+void writePairOutcomes(const std::string& path, const std::string& name,
+	const std::vector<ScanPairBenchmark::Result>& results)
+{
+	std::ofstream f(path);
+	if (!f) throw std::runtime_error("cannot write '" + path + "'");
+	f << "# data\tmatcher\tpair\tstatus\terr_x_m\terr_y_m\terr_yaw_rad\t"
+		 "cov_xx\tcov_xy\tcov_xyaw\tcov_yy\tcov_yyaw\tcov_yawyaw\n";
+	using Status = ScanPairBenchmark::PairOutcome::Status;
+	char buf[320];
+	for (const auto& r : results)
+		for (size_t k = 0; k < r.outcomes.size(); k++)
+		{
+			const auto& o = r.outcomes[k];
+			const char* status = o.status == Status::Used ? "used"
+				: o.status == Status::Ambiguous			 ? "ambiguous"
+														 : "failed";
+			std::snprintf(buf, sizeof(buf), "\t%zu\t%s\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\n",
+				k, status, o.error[0], o.error[1], o.error[2], o.cov(0, 0), o.cov(0, 1),
+				o.cov(0, 2), o.cov(1, 1), o.cov(1, 2), o.cov(2, 2));
+			f << name << '\t' << r.matcher << buf;
+		}
+	if (!f) throw std::runtime_error("cannot write '" + path + "'");
+}
+
 /** --basin-levels: "XY/YAW_DEG,..." as (metres, radians). */
 std::vector<std::pair<double, double>> parseBasinLevels(const std::string& text)
 {
@@ -339,6 +366,11 @@ int BenchApp::main(int argc, char** argv)
 		false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> argName("", "name", "Data name in the table", false, "",
 		"NAME", cmd);
+	TCLAP::ValueArg<std::string> argPairs("", "pairs",
+		"Also write every pair's outcome per matcher (TSV: status, error x y yaw "
+		"against the reference, the covariance used), for analyses across "
+		"matchers such as scripts/reference-error-share.py",
+		false, "", "FILE", cmd);
 	TCLAP::SwitchArg argHeader("", "header", "Print the Markdown table header", cmd);
 	TCLAP::ValueArg<std::string> argBasin("", "basin",
 		"Also run every matcher at each --basin-levels initial error (the "
@@ -530,6 +562,7 @@ int BenchApp::main(int argc, char** argv)
 			plot.pairedSeries = variants[m + 1].className == variants[m].className;
 		plot.save(argBasin.getValue());
 	}
+	if (argPairs.isSet()) writePairOutcomes(argPairs.getValue(), name, results);
 	if (argJson.isSet())
 	{
 		std::ofstream f(argJson.getValue());

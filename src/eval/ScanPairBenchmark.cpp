@@ -113,6 +113,12 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			// the pipeline then uses.
 			const auto& e = r.success ? r.estimate.mean : guess.mean;
 			const Eigen::Vector3d err = poseDifference(e, truth);
+			auto& outcome = res[m].outcomes.emplace_back();
+			outcome.status = !r.success ? PairOutcome::Status::Failed
+				: r.ambiguous			? PairOutcome::Status::Ambiguous
+										: PairOutcome::Status::Used;
+			outcome.error = err;
+			outcome.cov = (r.success ? r.estimate.cov : guess.cov).asEigen();
 			const double et = std::hypot(err[0], err[1]), ew = std::abs(err[2]);
 			a.ex.push_back(std::abs(err[0]));
 			a.ey.push_back(std::abs(err[1]));

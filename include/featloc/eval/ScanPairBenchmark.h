@@ -1,4 +1,5 @@
 #pragma once
+#include <Eigen/Core>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -69,9 +70,27 @@ class ScanPairBenchmark
 		double grossTrans = 0.10;  //!< [m]
 		double grossYaw = 0.03490658503988659;	//!< [rad] (2 deg)
 	};
+	/** One pair's outcome for one matcher (featloc-bench --pairs). */
+	struct PairOutcome
+	{
+		enum class Status : uint8_t
+		{
+			Used,  //!< a success, not flagged
+			Ambiguous,	//!< flagged ambiguous, used with an inflated covariance
+			Failed	//!< the guess is what the pipeline uses
+		};
+		Status status = Status::Used;
+		/** What the pipeline uses (the estimate, or the guess on a failure)
+		 * minus the truth, in the reference's robot frame (x, y, yaw). */
+		Eigen::Vector3d error = Eigen::Vector3d::Zero();
+		/** The estimate's covariance (the guess's on a failure). */
+		Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+	};
 	struct Result
 	{
 		std::string matcher;
+		/** Per pair, in the pairs' order (one entry per pair). */
+		std::vector<PairOutcome> outcomes;
 		size_t pairs = 0;
 		size_t failures = 0;  //!< flagged: the matcher said it failed
 		std::map<std::string, size_t> failuresByKind;  //!< MatchResult::failureKind
