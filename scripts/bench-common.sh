@@ -23,6 +23,28 @@ held_out_radish_logs() {
     [ "$(basename "$f")" = orebro-corrected.log.gz ] || echo "$f"
   done
 }
+# The held-out scenes of issue 15's PCM benches, each through the caller's
+# `bench NAME DATA ARGS...`, Borges & Aldon's protocol: the corridor with
+# people (+-0.3 m / 10 deg and +-0.5 m / 15 deg), the hall with people, the
+# room with doors and a cart (Cramer-Rao bound and moved points with
+# --world), and the held-out Radish logs in $LASER2D.
+bench_held_out_scenes() {
+  local world f
+  for world in corridor-people hall-people room-moving-objects; do
+    "$BIN/featloc-sim" "$ROOT/worlds/$world.ini" --out "$OUT/$world" -q > /dev/null
+    bench "$world +-0.3/10" "$OUT/$world.rawlog" -g "$OUT/$world.gt.txt" \
+      --perturb-xy 0.3 --perturb-yaw-deg 10 --world "$ROOT/worlds/$world.ini"
+  done
+  bench "corridor-people +-0.5/15" "$OUT/corridor-people.rawlog" -g "$OUT/corridor-people.gt.txt" \
+    --perturb-xy 0.5 --perturb-yaw-deg 15 --world "$ROOT/worlds/corridor-people.ini"
+  if [ -d "$LASER2D" ]; then
+    for f in $(held_out_radish_logs); do
+      bench "$(basename "$f" -corrected.log.gz)" "$f" --perturb-xy 0.3 --perturb-yaw-deg 10
+    done
+  else
+    echo "(no real logs: $LASER2D not found)"
+  fi
+}
 # featloc-sim's log of worlds/SCENE.ini with 1 cm range noise, as
 # $OUT/SCENE-1cm.rawlog (+ .gt.txt): the static calibration scenes; with a
 # SEED, that seed's path as $OUT/SCENE-seedSEED.rawlog (whole runs).

@@ -40,17 +40,4 @@ done
 
 echo "### Held out"
 echo
-for world in corridor-people hall-people room-moving-objects; do
-  "$BIN/featloc-sim" "$ROOT/worlds/$world.ini" --out "$OUT/$world" -q > /dev/null
-  bench "$world +-0.3/10" "$OUT/$world.rawlog" -g "$OUT/$world.gt.txt" \
-    --perturb-xy 0.3 --perturb-yaw-deg 10 --world "$ROOT/worlds/$world.ini"
-done
-bench "corridor-people +-0.5/15" "$OUT/corridor-people.rawlog" -g "$OUT/corridor-people.gt.txt" \
-  --perturb-xy 0.5 --perturb-yaw-deg 15 --world "$ROOT/worlds/corridor-people.ini"
-if [ -d "$LASER2D" ]; then
-  for f in $(held_out_radish_logs); do
-    bench "$(basename "$f" -corrected.log.gz)" "$f" --perturb-xy 0.3 --perturb-yaw-deg 10
-  done
-else
-  echo "(no real logs: $LASER2D not found)"
-fi
+bench_held_out_scenes

@@ -5,6 +5,7 @@
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cmath>
+#include <functional>
 
 #include "featloc/features/LineEllipseExtractor.h"
 #include "featloc/features/LineFit.h"
@@ -36,6 +37,27 @@ ScanPoints pointsOn(double rho, double alpha, double s0, double s1, size_t n, do
 	return out;
 }
 
+/** A scan of a wall parallel to the x axis at y = wallYAt(bearing), from
+ * bearing `from` to `to` [rad] every `step`, with Gaussian range noise. */
+ScanPoints wallScan(double from, double to, double step, double sigma,
+	mrpt::random::CRandomGenerator& rng, const std::function<double(double)>& wallYAt)
+{
+	ScanPoints s;
+	s.angularStep = step;
+	s.maxRange = 30;
+	for (double b = from; b <= to; b += step)
+	{
+		const double r = wallYAt(b) / std::sin(b) + sigma * rng.drawGaussian1D_normalized();
+		ScanPoint p;
+		p.range = r;
+		p.bearing = b;
+		p.x = r * std::cos(b);
+		p.y = r * std::sin(b);
+		p.beam = static_cast<uint32_t>(s.points.size());
+		s.points.push_back(p);
+	}
+	return s;
+}
 }  // namespace
 
 TEST(LineFit, ExactOnCollinearPointsAndSigmaIsTheResidualRms)
@@ -176,21 +198,8 @@ TEST(LineEllipseExtractor, WeightedFitUsesTheGrazingPointsAndItsCovarianceHolds)
 	mrpt::random::CRandomGenerator rng(7);
 	const double sigma = 0.01, wallY = 1.0;
 	auto scan = [&]() {
-		ScanPoints s;
-		s.angularStep = mrpt::DEG2RAD(0.25);
-		s.maxRange = 30;
-		for (double b = std::atan2(wallY, 6.0); b <= std::atan2(wallY, 0.5); b += s.angularStep)
-		{
-			const double r = wallY / std::sin(b) + sigma * rng.drawGaussian1D_normalized();
-			ScanPoint p;
-			p.range = r;
-			p.bearing = b;
-			p.x = r * std::cos(b);
-			p.y = r * std::sin(b);
-			p.beam = static_cast<uint32_t>(s.points.size());
-			s.points.push_back(p);
-		}
-		return s;
+		return wallScan(std::atan2(wallY, 6.0), std::atan2(wallY, 0.5), mrpt::DEG2RAD(0.25), sigma, rng,
+			[&](double) { return wallY; });
 	};
 	struct Spread
 	{
@@ -244,22 +253,8 @@ TEST(LineEllipseExtractor, AWallSeenGrazinglyKeepsItsFarPoints)
 	// Beams from the bearing of (11, 1) to that of (0.5, 1) on the wall y = 1,
 	// then (when `recess`) beams past x = 3 on a wall at y = 2 instead.
 	auto scan = [&](bool recess) {
-		ScanPoints s;
-		s.angularStep = mrpt::DEG2RAD(0.5);
-		s.maxRange = 30;
-		for (double b = std::atan2(1.0, 11.0); b <= std::atan2(1.0, 0.5); b += s.angularStep)
-		{
-			const double wallY = recess && 1.0 / std::tan(b) > 3.0 ? 2.0 : 1.0;
-			const double r = wallY / std::sin(b) + sigma * rng.drawGaussian1D_normalized();
-			ScanPoint p;
-			p.range = r;
-			p.bearing = b;
-			p.x = r * std::cos(b);
-			p.y = r * std::sin(b);
-			p.beam = static_cast<uint32_t>(s.points.size());
-			s.points.push_back(p);
-		}
-		return s;
+		return wallScan(std::atan2(1.0, 11.0), std::atan2(1.0, 0.5), mrpt::DEG2RAD(0.5), sigma, rng,
+			[&](double b) { return recess && 1.0 / std::tan(b) > 3.0 ? 2.0 : 1.0; });
 	};
 	double sumErr2[2] = {0, 0};
 	size_t farKept[2] = {0, 0};
