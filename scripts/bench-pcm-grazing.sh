@@ -11,7 +11,9 @@
 #    +-0.5 m / 15 deg), the hall with people, the room with doors and a cart,
 #    and the other five Radish logs (../shared/data/laser2d or
 #    $FEATLOC_LASER2D).
-# Usage: scripts/bench-pcm-grazing.sh [OUTDIR]   (about 8 min on 2 cores)
+#  - Whole runs (featloc-run, PCM, matcher chain and EKF, lambda 5 and 0): the
+#    corridor with people, seeds 1-6, and the office at 1 cm, seeds 1-4.
+# Usage: scripts/bench-pcm-grazing.sh [OUTDIR]   (about 11 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-pcm-grazing "$@"
@@ -41,3 +43,31 @@ done
 echo "### Held out"
 echo
 bench_held_out_scenes
+
+echo "### Whole runs (featloc-run, PCM as config.ini has it; ATE rmse [mm])"
+echo
+echo "| estimator | grazing_incidence_DEG | corridor-people seeds 1-6 (held out) | mean | office 1 cm seeds 1-4 | mean |"
+echo "|---|---|---|---|---|---|"
+for seed in 1 2 3 4 5 6; do
+  "$BIN/featloc-sim" "$ROOT/worlds/corridor-people.ini" --out "$OUT/corridor-people-seed$seed" \
+    --seed "$seed" -q > /dev/null
+done
+for seed in 1 2 3 4; do sim_1cm office "$seed"; done
+for est in matcher ekf; do
+  for g in 5 0; do
+    cells=()
+    for log in corridor-people-seed{1..6} office-seed{1..4}; do
+      r="$OUT/run-$est-$g-$log"
+      "$BIN/featloc-run" "$ROOT/config.ini" "$OUT/$log.rawlog" --out "$r" -q \
+        --set ScanMatcher:class=featloc::PcmFeatureMatcher --set "Pipeline:estimator=$est" \
+        --set "Evaluation:ground_truth=$OUT/$log.gt.txt" \
+        --set Output:write_scene=false --set Output:write_rawlog=false \
+        --set "ScanMatcher.PcmFeatureMatcher:grazing_incidence_DEG=$g" > /dev/null
+      cells+=("$(jq -r '.evaluation.ate_m.rmse * 1000' "$r/summary.json")")
+    done
+    corridor="${cells[*]:0:6}" office="${cells[*]:6:4}"
+    mean() { echo "$@" | awk '{ s = 0; for (i = 1; i <= NF; i++) s += $i; printf "%.1f", s / NF }'; }
+    list() { echo "$@" | awk '{ for (i = 1; i <= NF; i++) printf "%s%.1f", (i > 1 ? ", " : ""), $i }'; }
+    echo "| $est | $g | $(list $corridor) | $(mean $corridor) | $(list $office) | $(mean $office) |"
+  done
+done
