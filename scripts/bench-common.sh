@@ -29,7 +29,7 @@ held_out_radish_logs() {
 # room with doors and a cart (Cramer-Rao bound and moved points with
 # --world), and the held-out Radish logs in $LASER2D.
 bench_held_out_scenes() {
-  local world f
+  local world
   for world in corridor-people hall-people room-moving-objects; do
     "$BIN/featloc-sim" "$ROOT/worlds/$world.ini" --out "$OUT/$world" -q > /dev/null
     bench "$world +-0.3/10" "$OUT/$world.rawlog" -g "$OUT/$world.gt.txt" \
@@ -37,9 +37,15 @@ bench_held_out_scenes() {
   done
   bench "corridor-people +-0.5/15" "$OUT/corridor-people.rawlog" -g "$OUT/corridor-people.gt.txt" \
     --perturb-xy 0.5 --perturb-yaw-deg 15 --world "$ROOT/worlds/corridor-people.ini"
+  bench_held_out_radish_logs
+}
+# The held-out Radish logs through the caller's `bench NAME DATA ARGS...`,
+# Borges & Aldon's protocol, each named after its log (plus SUFFIX).
+bench_held_out_radish_logs() { # [suffix]
+  local f
   if [ -d "$LASER2D" ]; then
     for f in $(held_out_radish_logs); do
-      bench "$(basename "$f" -corrected.log.gz)" "$f" --perturb-xy 0.3 --perturb-yaw-deg 10
+      bench "$(basename "$f" -corrected.log.gz)${1:-}" "$f" --perturb-xy 0.3 --perturb-yaw-deg 10
     done
   else
     echo "(no real logs: $LASER2D not found)"

@@ -4,7 +4,8 @@
 # grazing_incidence_DEG = 5 (the default) and 0 (the paper's fixed
 # max_point_gap alone), each with its coarse search (the default) and
 # without; Borges & Aldon's protocol (+-0.3 m / +-10 deg uniform, seed 1),
-# every pair counted, the Cramer-Rao bound on the simulated scenes.
+# every pair counted, the Cramer-Rao bound on the simulated scenes; MRPT's
+# ICP beside them (the peer, timed in the same run).
 #  - Calibration (where 5 deg was chosen): the office and lab at 1 cm noise,
 #    the real orebro log.
 #  - Held out: the corridor with people (+-0.3 m / 10 deg and
@@ -22,6 +23,8 @@ LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 PCM=featloc::PcmFeatureMatcher
 M="grazing 5 (config.ini)=$PCM,grazing 0=$PCM{grazing_incidence_DEG=0}"
 M="$M,grazing 5 no search=$PCM{coarse_search=false},grazing 0 no search=$PCM{grazing_incidence_DEG=0;coarse_search=false}"
+# The peer, timed in the same run.
+M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
 bench() { # name, data, extra args...
   local name="$1" data="$2"; shift 2
   "$BIN/featloc-bench" "$ROOT/config.ini" "$data" --seed 1 -q -m "$M" --name "$name" "$@" \

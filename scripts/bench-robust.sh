@@ -71,13 +71,7 @@ HEADER=--header
 bench "hall-people +-0.3/10" "$OUT/hall-people.rawlog" -g "$OUT/hall-people.gt.txt" \
   --perturb-xy 0.3 --perturb-yaw-deg 10 --world "$ROOT/worlds/hall-people.ini"
 HEADER=--header
-if [ -d "$LASER2D" ]; then
-  for f in $(held_out_radish_logs); do
-    bench "$(basename "$f" -corrected.log.gz) +-0.3/10" "$f" --perturb-xy 0.3 --perturb-yaw-deg 10
-  done
-else
-  echo "(no real logs: $LASER2D not found)"
-fi
+bench_held_out_radish_logs " +-0.3/10"
 
 # The whole-run cost (MRPT's simulated log with ICP; the office and lab,
 # four seeds, every matcher; search off / on): one script makes those tables
