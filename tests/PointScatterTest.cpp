@@ -44,3 +44,38 @@ TEST(PointScatter, LineFarFromTheOriginIsExact)
 	EXPECT_NEAR(std::abs(v.line().nx), 1.0, 1e-15);
 	EXPECT_NEAR(v.line().ny, 0.0, 1e-15);
 }
+
+// LineEllipseExtractor's weighted lines: a point of weight w counts as w
+// copies of it, so a weight of 3 gives the fit of the point added three
+// times; and a far outlier of weight 1e-9 does not tilt the line, where
+// unweighted it would.
+TEST(PointScatter, AWeightCountsAsThatManyCopiesOfThePoint)
+{
+	const double pts[][2] = {{0, 0}, {1, 0.1}, {2, 0.15}, {3, 0.35}, {4, 0.4}};
+	const int copies[] = {1, 3, 2, 1, 4};
+	PointScatter weighted, repeated;
+	for (int k = 0; k < 5; k++)
+	{
+		weighted.add(pts[k][0], pts[k][1], copies[k]);
+		for (int c = 0; c < copies[k]; c++) repeated.add(pts[k][0], pts[k][1]);
+	}
+	EXPECT_DOUBLE_EQ(weighted.weight(), 11.0);
+	EXPECT_EQ(weighted.count(), 5u);
+	EXPECT_NEAR(weighted.cx(), repeated.cx(), 1e-12);
+	EXPECT_NEAR(weighted.cy(), repeated.cy(), 1e-12);
+	EXPECT_NEAR(weighted.line().nx, repeated.line().nx, 1e-12);
+	EXPECT_NEAR(weighted.line().ny, repeated.line().ny, 1e-12);
+	EXPECT_NEAR(weighted.line().gap, repeated.line().gap, 1e-12);
+
+	PointScatter light, heavy;
+	for (int k = 0; k < 5; k++)
+	{
+		light.add(k, 0);
+		heavy.add(k, 0);
+	}
+	light.add(2, 5, 1e-9);
+	heavy.add(2, 5);
+	EXPECT_NEAR(light.line().nx, 0.0, 1e-6);  // still the x axis
+	EXPECT_NEAR(light.cy(), 0.0, 1e-6);
+	EXPECT_GT(heavy.cy(), 0.8);	 // unweighted, the outlier pulls the centroid
+}

@@ -8,6 +8,7 @@
 
 #include "featloc/config/ConfigValues.h"
 #include "featloc/features/LineFit.h"
+#include "featloc/features/PointScatter.h"
 #include "featloc/scan/AdaptiveBreakpointSegmenter.h"
 
 namespace featloc
@@ -445,30 +446,15 @@ void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, do
 	for (int pass = 0; pass < 2; pass++)
 	{
 		const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
-		double sw = 0, mx = 0, my = 0;
-		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
-		{
-			const auto& p = s.points[k];
-			const double w = weight(p, ca, sa);
-			sw += w;
-			mx += w * p.x;
-			my += w * p.y;
-		}
-		mx /= sw;
-		my /= sw;
-		double sxx = 0, syy = 0, sxy = 0;
-		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
-		{
-			const auto& p = s.points[k];
-			const double w = weight(p, ca, sa);
-			sxx += w * (p.x - mx) * (p.x - mx);
-			syy += w * (p.y - my) * (p.y - my);
-			sxy += w * (p.x - mx) * (p.y - my);
-		}
 		// The normal: the weighted scatter's direction of least spread
-		// (eq. 4's angle on weighted sums).
-		double alpha = 0.5 * std::atan2(-2 * sxy, syy - sxx);
-		double rho = mx * std::cos(alpha) + my * std::sin(alpha);
+		// (eq. 4 on weighted sums), through the weighted centroid.
+		PointScatter scatter;
+		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
+			scatter.add(s.points[k].x, s.points[k].y, weight(s.points[k], ca, sa));
+		const double sw = scatter.weight(), mx = scatter.cx(), my = scatter.cy();
+		const PointScatter::Line line = scatter.line();
+		double alpha = std::atan2(line.ny, line.nx);
+		double rho = mx * line.nx + my * line.ny;
 		if (rho < 0)
 		{
 			rho = -rho;
