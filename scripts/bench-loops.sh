@@ -8,7 +8,12 @@
 # relations (Kuemmerle et al. 2009). The relations are built twice, from
 # the matcher's and from the EKF's trajectory, to show they do not depend
 # on the trajectory that proposed them.
-# Usage: scripts/bench-loops.sh [OUTDIR]      (about 1 minute)
+# Issue 15 (Malaga is one of its real logs, with the Radish ones): every
+# matcher as config.ini has it, matcher chain and EKF, against the same
+# relations and against relations that IdcMatcher made instead of MRPT's
+# ICP (so that the reference does not favour one matcher); and each run's
+# failed matches.
+# Usage: scripts/bench-loops.sh [OUTDIR]      (about 2 minutes)
 set -euo pipefail
 source "$(dirname "$0")/bench-common.sh"
 bench_init loops "$@"
@@ -30,25 +35,46 @@ run ekf-covariance-check --set Pipeline:estimator=ekf --set Odometry:covariance_
 run ekf-direction-off --set Pipeline:estimator=ekf --set Ekf:odometry_direction_sigma_DEG=0
 run ekf-direction-5deg --set Pipeline:estimator=ekf --set Ekf:odometry_direction_sigma_DEG=5
 
+relations() { # trajectory run, reference matcher class, relations file
+  "$BIN/featloc-bench" "$ROOT/config.ini" "$MALAGA" -q --reference-matcher "$2" \
+    --set "ScanMatcher.${2#featloc::}:coarse_search=true" --loop-relations "$OUT/$1/poses_cov.txt" \
+    --write-relations "$3"
+}
+# Prints "relations | translation error mean / median / max [m] | rotation
+# error mean / median / max [deg]" of run $2's estimate against relations $1.
+against() { # relations file, run
+  "$BIN/featloc-eval" "$1" "$OUT/$2/poses_cov.txt" --reference-format relations -j > "$OUT/eval.json"
+  python3 - "$OUT/eval.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+t, r = j["relation_translation_m"], j["relation_rotation"]  # m, deg
+print("%d | %.3f / %.3f / %.3f | %.2f / %.2f / %.2f" % (j["relations_matched"],
+    t["mean"], t["median"], t["max"], r["mean"], r["median"], r["max"]))
+PY
+}
+
 for from in matcher ekf; do
-  "$BIN/featloc-bench" "$ROOT/config.ini" "$MALAGA" -q --reference-matcher featloc::IcpMatcher \
-    --set ScanMatcher.IcpMatcher:coarse_search=true --loop-relations "$OUT/$from/poses_cov.txt" \
-    --write-relations "$OUT/loops-from-$from.txt"
+  relations "$from" featloc::IcpMatcher "$OUT/loops-from-$from.txt"
 done
 echo
 echo "| relations from | estimate | relations | translation error mean / median / max [m] | rotation error mean / median / max [deg] |"
 echo "|---|---|---|---|---|"
 for from in matcher ekf; do
   for est in odometry matcher ekf ekf-covariance-check ekf-direction-off ekf-direction-5deg; do
-    "$BIN/featloc-eval" "$OUT/loops-from-$from.txt" "$OUT/$est/poses_cov.txt" \
-      --reference-format relations -j > "$OUT/eval-$from-$est.json"
-    python3 - "$OUT/eval-$from-$est.json" "$from" "$est" <<'PY'
-import json, sys
-j = json.load(open(sys.argv[1]))
-t, r = j["relation_translation_m"], j["relation_rotation"]  # m, deg
-print("| %s's | %s | %d | %.3f / %.3f / %.3f | %.2f / %.2f / %.2f |" % (
-    sys.argv[2], sys.argv[3], j["relations_matched"],
-    t["mean"], t["median"], t["max"], r["mean"], r["median"], r["max"]))
-PY
+    echo "| $from's | $est | $(against "$OUT/loops-from-$from.txt" "$est") |"
+  done
+done
+
+echo
+echo "### Every matcher as config.ini has it (issue 15)"
+echo
+relations matcher featloc::IdcMatcher "$OUT/loops-idc-from-matcher.txt"
+echo "| matcher | estimator | failed matches (of 224) | relations by MRPT's ICP: count, translation error mean / median / max [m], rotation [deg] | relations by IdcMatcher: the same |"
+echo "|---|---|---|---|---|"
+for cls in IcpMatcher PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
+  for est in matcher ekf; do
+    run "$est-$cls" --set "Pipeline:estimator=$est" --set "ScanMatcher:class=featloc::$cls"
+    failed=$(jq -r '.counts.match_failures' "$OUT/$est-$cls/summary.json")
+    echo "| $cls | $est | $failed | $(against "$OUT/loops-from-matcher.txt" "$est-$cls") | $(against "$OUT/loops-idc-from-matcher.txt" "$est-$cls") |"
   done
 done
