@@ -1,5 +1,6 @@
-// The one total-least-squares line fit that LineFit (PCM's features) and
-// ReferencePolyline (IDC's local lines) share.
+// The one total-least-squares line fit that LineFit (PCM's features),
+// LineEllipseExtractor's weighted refits and ReferencePolyline (IDC's local
+// lines) share.
 #include <gtest/gtest.h>
 
 #include <cmath>
