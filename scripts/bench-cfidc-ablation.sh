@@ -63,7 +63,6 @@ done
 
 # The same switch on scenes that did not decide it: the static office and
 # lab (1 cm noise) and the real Radish logs, Borges & Aldon's protocol.
-LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 echo
 echo "### curvature_pairing on the static scenes and the real logs (+-0.3 m / +-10 deg)"
 echo

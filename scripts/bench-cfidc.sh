@@ -21,7 +21,6 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-cfidc "$@"
-LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 
 # As published, as far as switches go (doc/cfidc-matcher.md).
 PAPER_IDC="coarse_search=false;final_phase=idc;breakpoint_at_missing_returns=false;guess_gate_chi2=0;max_translation_sigma=1e9;max_rotation_sigma_DEG=1e9"

@@ -10,6 +10,8 @@ bench_init() { # name, script arguments...
   BIN="${FEATLOC_BUILD_DIR:-$ROOT/build}/bin"
   OUT="${1:-$(mktemp -d "/tmp/featloc-$name-XXXXXX")}"
   mkdir -p "$OUT"
+  # The real CARMEN logs (Radish) the benches and the functions below read.
+  LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 }
 fmt() { printf "%.${2:-3}f" "$1"; }
 machine_line() {

@@ -15,7 +15,6 @@
 set -euo pipefail
 source "$(dirname "$0")/bench-common.sh"
 bench_init gate-rejections "$@"
-LASER2D="$ROOT/../shared/data/laser2d"
 machine_line
 
 # count SUMMARY STATUS within|outside

@@ -13,7 +13,6 @@ source "$(dirname "$0")/bench-common.sh"
 bench_init gates "$@"
 RUN="$BIN/featloc-run"
 MALAGA="/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog"
-LASER2D="$ROOT/../shared/data/laser2d"
 machine_line
 
 # run NAME INPUT GT [--set ...]: prints "ATEmm failures fallbacks"

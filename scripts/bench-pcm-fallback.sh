@@ -20,7 +20,6 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-pcm-fallback "$@"
-LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 
 PCM=featloc::PcmFeatureMatcher
 M="PCM alone with merge_sigmas 1.5 (before)=$PCM{fallback_class=;merge_sigmas=1.5}"

@@ -18,7 +18,6 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-pcm-grazing "$@"
-LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 
 PCM=featloc::PcmFeatureMatcher
 M="grazing 5 (config.ini)=$PCM,grazing 0=$PCM{grazing_incidence_DEG=0}"

@@ -16,7 +16,6 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-pcm "$@"
-LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 
 # Three matchers in one featloc-bench run: PCM as published (every featloc
 # addition switched off, doc/pcm-matcher.md), PCM with them (config.ini),

@@ -13,7 +13,6 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-reference-share "$@"
-LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 
 M="IcpMatcher=featloc::IcpMatcher,PcmFeatureMatcher=featloc::PcmFeatureMatcher"
 M="$M,IdcMatcher=featloc::IdcMatcher,CfIdcMatcher=featloc::CfIdcMatcher"

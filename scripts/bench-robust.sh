@@ -25,7 +25,6 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-robust "$@"
-LASER2D="${FEATLOC_LASER2D:-$ROOT/../shared/data/laser2d}"
 
 M=""
 for c in IcpMatcher PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
