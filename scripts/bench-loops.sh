@@ -42,9 +42,11 @@ relations() { # trajectory run, reference matcher class, relations file
 }
 # Prints "relations | translation error mean / median / max [m] | rotation
 # error mean / median / max [deg]" of run $2's estimate against relations $1.
+# featloc-eval's JSON is kept as OUT/eval-RELATIONS-RUN.json.
 against() { # relations file, run
-  "$BIN/featloc-eval" "$1" "$OUT/$2/poses_cov.txt" --reference-format relations -j > "$OUT/eval.json"
-  python3 - "$OUT/eval.json" <<'PY'
+  local json="$OUT/eval-$(basename "$1" .txt)-$2.json"
+  "$BIN/featloc-eval" "$1" "$OUT/$2/poses_cov.txt" --reference-format relations -j > "$json"
+  python3 - "$json" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
 t, r = j["relation_translation_m"], j["relation_rotation"]  # m, deg
@@ -69,8 +71,8 @@ echo
 echo "### Every matcher as config.ini has it (issue 15)"
 echo
 relations matcher featloc::IdcMatcher "$OUT/loops-idc-from-matcher.txt"
-echo "| matcher | estimator | failed matches (of 224) | relations by MRPT's ICP: count, translation error mean / median / max [m], rotation [deg] | relations by IdcMatcher: the same |"
-echo "|---|---|---|---|---|"
+echo "| matcher | estimator | failed matches (of 224) | relations by MRPT's ICP | translation error mean / median / max [m] | rotation error mean / median / max [deg] | relations by IdcMatcher | translation error [m] | rotation error [deg] |"
+echo "|---|---|---|---|---|---|---|---|---|"
 for cls in IcpMatcher PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
   for est in matcher ekf; do
     run "$est-$cls" --set "Pipeline:estimator=$est" --set "ScanMatcher:class=featloc::$cls"
