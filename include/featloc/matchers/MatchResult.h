@@ -49,7 +49,9 @@ struct MatchResult
 	 * featloc-bench. */
 	std::string matcherFallback;
 	/** Non-empty when the configured matcher failed and its fallback
-	 * (`fallback_class`) made this result: "<class>: <why it failed>".
+	 * (`fallback_class`) made this result: "<class>: <why it failed>", or
+	 * when its match was ambiguous and the fallback's was not
+	 * (`fallback_on_ambiguity`): "<class>: ambiguous, <why>".
 	 * Everything else in the result is the fallback's. Counted by
 	 * summary.json and featloc-bench. */
 	std::string primaryFailure;

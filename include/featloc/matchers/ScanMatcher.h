@@ -132,7 +132,9 @@ class ScanMatcher : public mrpt::rtti::CObject
 	/** A failed match `r` handed to the fallback (`run` makes the
 	 * fallback's match from the same input): its result, which says whose
 	 * it is (MatchResult::primaryFailure), or `r` when no fallback applies.
-	 * A failure for too few points stays: no matcher can do better. */
+	 * A failure for too few points stays: no matcher can do better. With
+	 * fallback_on_ambiguity, an ambiguous `r` goes to the fallback too and
+	 * is replaced only by a success that is not ambiguous. */
 	template <typename Run>
 	MatchResult tryFallback(MatchResult r, Run&& run);
 
@@ -164,6 +166,7 @@ class ScanMatcher : public mrpt::rtti::CObject
 	std::string m_fallbackClass;  //!< `fallback_class` as written ("" none)
 	std::shared_ptr<ScanMatcher> m_fallback;
 	bool m_followFallback = true;  //!< false for a fallback itself
+	bool m_fallbackOnAmbiguity = true;	//!< `fallback_on_ambiguity`
 	bool m_lastMatchByFallback = false;	 //!< for inspectLastMatch()
 	void checkAgainstGuess(const mrpt::poses::CPosePDFGaussian& guess, MatchResult& r) const;
 };
