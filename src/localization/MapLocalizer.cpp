@@ -76,15 +76,24 @@ MapLocalizer::Placement MapLocalizer::placed(
 {
 	const auto local = m_global->refine(scan, around, kTrackXY, kTrackYaw);
 	Placement out{local.pose, local.score, 0};
-	const auto through = m_map->beamsSeenThrough(scan, local.pose);
-	const auto hits = m_global->beamHits(scan, local.pose);
+	std::vector<bool> through;
+	out.logLikelihood = logLikelihoodAt(scan, local.pose, through);
+	if (m_options.global_see_through) out.score -= LocalizationMap::shareOf(through);
+	return out;
+}
+
+double MapLocalizer::logLikelihoodAt(const mrpt::obs::CObservation2DRangeScan& scan,
+	const mrpt::poses::CPose2D& pose, std::vector<bool>& through) const
+{
+	through = m_map->beamsSeenThrough(scan, pose);
+	const auto hits = m_global->beamHits(scan, pose);
+	double sum = 0;
 	for (size_t i = 0; i < hits.size() && i < through.size(); i++)
 	{
 		const bool t = m_options.global_see_through && through[i];
-		out.logLikelihood += t ? std::log(kThrough) : std::log(kStray + (1 - kStray) * hits[i]);
+		sum += t ? std::log(kThrough) : std::log(kStray + (1 - kStray) * hits[i]);
 	}
-	if (m_options.global_see_through) out.score -= LocalizationMap::shareOf(through);
-	return out;
+	return sum;
 }
 
 double MapLocalizer::Hypothesis::totalLogLikelihood() const
@@ -234,8 +243,32 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 			h->totalLogLikelihood() - runnerUpLogLikelihood);
 		evidence += buf;
 	}
+	// The map match refines the hypothesis, and the map judges the
+	// refinement: where the scan fits the map far worse at the match than
+	// at the hypothesis, the robot is found at the hypothesis, with the
+	// search grid's covariance. (Held-out office start 182, in the far
+	// corner facing away from both near walls: PCM on the virtual scan
+	// walked 0.245 m from a hypothesis 4 cm from the truth, along the
+	// direction the far walls leave loose, 556 nats worse on the map, and
+	// the robot was "found" 3.4 sigma off.)
 	const auto refined = m_tracker.track(*step.scan, start);
-	if (refined.match.success) start = refined.pose;
+	if (refined.match.success)
+	{
+		std::vector<bool> through;
+		const double lead = logLikelihoodAt(*step.scan, h->pose, through) -
+			logLikelihoodAt(*step.scan, refined.pose.mean, through);
+		if (lead <= kRefinementLead)
+			start = refined.pose;
+		else
+		{
+			std::snprintf(buf, sizeof(buf),
+				"; its map match (%.3f m, %.3f m, %.1f deg) not used: %.0f nats less likely on "
+				"the map",
+				refined.pose.mean.x(), refined.pose.mean.y(),
+				mrpt::RAD2DEG(refined.pose.mean.phi()), lead);
+			evidence += buf;
+		}
+	}
 	estimator.initialize(start);
 	m_tracking = true;
 	m_misses = 0;
