@@ -254,8 +254,10 @@ void MapLocalizer::search(const EstimationStep& step, PoseEstimator& estimator, 
 	const auto refined = m_tracker.track(*step.scan, start);
 	if (refined.match.success)
 	{
+		// The hypothesis's own placement on this scan is at h->pose: its
+		// log-likelihood there is already known.
 		std::vector<bool> through;
-		const double lead = logLikelihoodAt(*step.scan, h->pose, through) -
+		const double lead = h->scans.back().logLikelihood -
 			logLikelihoodAt(*step.scan, refined.pose.mean, through);
 		if (lead <= kRefinementLead)
 			start = refined.pose;
