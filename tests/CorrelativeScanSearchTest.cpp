@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/serialization/CArchive.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/random/RandomGenerators.h>
 
@@ -8,6 +10,7 @@
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/ConfigError.h"
 #include "featloc/matchers/CorrelativeScanSearch.h"
+#include "featloc/matchers/ReferenceOverlap.h"
 #include "featloc/math/DiagonalPoseGaussian.h"
 #include "support/CommandRunner.h"
 #include "support/ErrorMessage.h"
@@ -146,11 +149,18 @@ TEST(CorrelativeScanSearch, EveryMatcherConvergesFromTheWideBasin)
 		const auto g = diagonalPoseGaussian(guess, 0.5 / std::sqrt(3.0), mrpt::DEG2RAD(20) / std::sqrt(3.0));
 		for (const std::string cls : kMatchers)
 		{
-			const MatchResult r = matcher(cls)->match(*ref, *cur, g);
-			ASSERT_TRUE(r.success) << cls << " draw " << k << ": " << r.failureReason;
-			EXPECT_LT(translationError(r.estimate.mean, motion), 0.02) << cls << " draw " << k;
-			EXPECT_LT(yawErrorDeg(r.estimate.mean, motion), 0.5) << cls << " draw " << k;
-			EXPECT_GT(r.coarseScore, 0.5) << cls;
+			// The search every time, and the matcher's default, which skips
+			// it where the points confirm the iterations from the guess.
+			for (const std::string confirm : {"coarse_confirm_share=0", ""})
+			{
+				const MatchResult r =
+					matcher(cls, "coarse_search=true\n" + confirm)->match(*ref, *cur, g);
+				ASSERT_TRUE(r.success) << cls << " draw " << k << ": " << r.failureReason;
+				EXPECT_LT(translationError(r.estimate.mean, motion), 0.02) << cls << " draw " << k;
+				EXPECT_LT(yawErrorDeg(r.estimate.mean, motion), 0.5) << cls << " draw " << k;
+				if (!confirm.empty()) EXPECT_GT(r.coarseScore, 0.5) << cls;
+				EXPECT_TRUE(r.coarseScore > 0.5 || r.confirmedShare >= 0.85) << cls;
+			}
 			const MatchResult p = matcher(cls, "coarse_search=false")->match(*ref, *cur, g);
 			if (p.success && (translationError(p.estimate.mean, motion) > 0.1 ||
 								 yawErrorDeg(p.estimate.mean, motion) > 2))
@@ -227,6 +237,8 @@ TEST(CorrelativeScanSearch, ParametersRoundTripAndBadValuesNameTheKey)
 	o.resolution = 0.04;
 	o.ambiguityZ = 2.5;
 	o.maxWindowYaw = mrpt::DEG2RAD(30);
+	o.confirmShare = 0.9;
+	o.confirmDistance = 0.04;
 	mrpt::config::CConfigFileMemory saved;
 	o.saveToConfigFile(saved, "S");
 	TrackedConfig cfg;
@@ -237,8 +249,11 @@ TEST(CorrelativeScanSearch, ParametersRoundTripAndBadValuesNameTheKey)
 	EXPECT_DOUBLE_EQ(back.resolution, 0.04);
 	EXPECT_DOUBLE_EQ(back.ambiguityZ, 2.5);
 	EXPECT_NEAR(back.maxWindowYaw, mrpt::DEG2RAD(30), 1e-12);
+	EXPECT_DOUBLE_EQ(back.confirmShare, 0.9);
+	EXPECT_DOUBLE_EQ(back.confirmDistance, 0.04);
 	for (const char* bad : {"coarse_resolution = 0", "coarse_max_window_xy = 0.01",
-			 "coarse_ambiguity_z = -1", "coarse_min_score = 2"})
+			 "coarse_ambiguity_z = -1", "coarse_min_score = 2", "coarse_confirm_share = 1.5",
+			 "coarse_confirm_distance = 0"})
 	{
 		mrpt::config::CConfigFileMemory c;
 		c.setContent(std::string("[S]\n") + bad + "\n");
@@ -289,4 +304,111 @@ TEST(CorrelativeScanSearch, IterationsThatLeaveTheWindowFailInsteadOfRuiningTheR
 	EXPECT_LT(double(summary["evaluation"]["ate_m"]["rmse"]), 0.10) << summary["counts"].dump();
 	EXPECT_GE(summary["counts"]["match_failures_by_kind"].value("left_window", 0), 1)
 		<< summary["counts"].dump();
+}
+
+namespace
+{
+/** The two scans of a pair featloc-bench matched, from tests/data. */
+void readPair(const std::string& file, mrpt::obs::CObservation2DRangeScan& reference,
+	mrpt::obs::CObservation2DRangeScan& current)
+{
+	mrpt::io::CFileGZInputStream in(std::string(FEATLOC_SOURCE_DIR) + "/tests/data/" + file);
+	auto ar = mrpt::serialization::archiveFrom(in);
+	ar >> reference >> current;
+}
+
+/** Borges & Aldon's protocol: a uniform draw of +-xy / +-yawDeg, as its
+ * Gaussian. */
+mrpt::poses::CPosePDFGaussian uniformGuess(const CPose2D& mean, double xy, double yawDeg)
+{
+	return diagonalPoseGaussian(mean, xy / std::sqrt(3.0), mrpt::DEG2RAD(yawDeg) / std::sqrt(3.0));
+}
+
+/** The share of the current scan's points within `distance` of the
+ * reference at a robot-frame motion (both scans' sensor poses applied). */
+double shareAt(const mrpt::obs::CObservation2DRangeScan& ref,
+	const mrpt::obs::CObservation2DRangeScan& cur, const CPose2D& motion, double distance = 0.05)
+{
+	const CPose2D s1(ref.sensorPose), s2(cur.sensorPose);
+	return ReferenceOverlap::share(ScanPoints::fromScan(ref), ScanPoints::fromScan(cur),
+		(CPose2D() - s1) + motion + s2, distance);
+}
+}  // namespace
+
+// coarse_confirm_share (on by default for featloc's matchers): where the
+// iterations from the guess land on a pose the points confirm, the search
+// is not run, and the match is what the iterations alone give.
+// featloc-bench's pair 304 of the simulated office (1 cm noise), from a
+// guess 2 cm / 1 deg off.
+TEST(CorrelativeScanSearch, TheSearchIsSkippedWhereThePointsConfirmTheIterationsFromTheGuess)
+{
+	mrpt::obs::CObservation2DRangeScan ref, cur;
+	readPair("office-1cm-pair-304.rawlog", ref, cur);
+	const CPose2D truth(0.15, 0, 0);
+	const auto guess = uniformGuess(CPose2D(0.17, 0.02, mrpt::DEG2RAD(1.0)), 0.3, 10);
+	for (const std::string cls :
+		{"featloc::PcmFeatureMatcher", "featloc::IdcMatcher", "featloc::CfIdcMatcher"})
+	{
+		const MatchResult r = matcher(cls, "")->match(ref, cur, guess);
+		ASSERT_TRUE(r.success) << cls << ": " << r.failureReason;
+		EXPECT_GE(r.confirmedShare, 0.85) << cls;
+		EXPECT_EQ(r.coarseScore, 0.0) << cls << ": the search ran";
+		EXPECT_LT(translationError(r.estimate.mean, truth), 0.005) << cls;
+		const MatchResult alone = matcher(cls, "coarse_search=false")->match(ref, cur, guess);
+		ASSERT_TRUE(alone.success) << cls;
+		EXPECT_EQ(r.estimate.mean.x(), alone.estimate.mean.x()) << cls;
+		EXPECT_EQ(r.estimate.mean.y(), alone.estimate.mean.y()) << cls;
+		EXPECT_EQ(r.estimate.mean.phi(), alone.estimate.mean.phi()) << cls;
+	}
+}
+
+// The same pair from featloc-bench's guess (+-0.3 m / +-10 deg, seed 1):
+// IDC's iterations alone slide 0.5 m along the office's corridor to a
+// confident wrong answer, whose points the reference does not confirm, so
+// the search runs and the match is right.
+TEST(CorrelativeScanSearch, AWrongMinimumTheReferenceDoesNotConfirmGoesToTheSearch)
+{
+	mrpt::obs::CObservation2DRangeScan ref, cur;
+	readPair("office-1cm-pair-304.rawlog", ref, cur);
+	const CPose2D truth(0.15, 0, 0);
+	const auto guess = uniformGuess(CPose2D(0.395576, 0.299863, -0.034581), 0.3, 10);
+	const std::string idc = "featloc::IdcMatcher";
+	const MatchResult alone = matcher(idc, "coarse_search=false")->match(ref, cur, guess);
+	ASSERT_TRUE(alone.success) << alone.failureReason;
+	EXPECT_GT(translationError(alone.estimate.mean, truth), 0.4);
+	EXPECT_LT(shareAt(ref, cur, alone.estimate.mean), 0.85);
+
+	const MatchResult r = matcher(idc, "")->match(ref, cur, guess);
+	ASSERT_TRUE(r.success) << r.failureReason;
+	EXPECT_EQ(r.confirmedShare, 0.0);
+	EXPECT_GT(r.coarseScore, 0.5);
+	EXPECT_LT(translationError(r.estimate.mean, truth), 0.005);
+}
+
+// A pose slid along a corridor keeps most points near the walls: the
+// confirming distance must be tight enough to tell. featloc-bench's pair
+// 387 of the simulated corridor with walking people (+-0.5 m / +-15 deg,
+// seed 1): IDC's and CF-IDC's iterations alone slide 0.23 m along it, where
+// 0.85 or more of the points lie within 10 cm of the reference but not
+// within coarse_confirm_distance (5 cm); the search runs, and the match is
+// right or flagged.
+TEST(CorrelativeScanSearch, APoseSlidAlongACorridorIsNotConfirmed)
+{
+	mrpt::obs::CObservation2DRangeScan ref, cur;
+	readPair("corridor-people-pair-387.rawlog", ref, cur);
+	const CPose2D truth(0.08, 0, 0);
+	const auto guess = uniformGuess(CPose2D(-0.409228, -0.304963, -0.132512), 0.5, 15);
+	for (const std::string cls : {"featloc::IdcMatcher", "featloc::CfIdcMatcher"})
+	{
+		const MatchResult alone = matcher(cls, "coarse_search=false")->match(ref, cur, guess);
+		ASSERT_TRUE(alone.success) << cls << ": " << alone.failureReason;
+		EXPECT_GT(translationError(alone.estimate.mean, truth), 0.2) << cls;
+		EXPECT_GE(shareAt(ref, cur, alone.estimate.mean, 0.10), 0.85) << cls;
+		EXPECT_LT(shareAt(ref, cur, alone.estimate.mean, 0.05), 0.85) << cls;
+
+		const MatchResult r = matcher(cls, "")->match(ref, cur, guess);
+		EXPECT_EQ(r.confirmedShare, 0.0) << cls;
+		EXPECT_TRUE(!r.success || r.ambiguous || translationError(r.estimate.mean, truth) < 0.01)
+			<< cls << ": silently " << translationError(r.estimate.mean, truth) << " m off";
+	}
 }

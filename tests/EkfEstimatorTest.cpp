@@ -35,6 +35,11 @@ class EveryOtherFailingIdcMatcher : public IdcMatcher
 {
 	DEFINE_MRPT_OBJECT(EveryOtherFailingIdcMatcher, featloc)
 
+   public:
+	// One matchPoints() call per match: the iterations run once, from the
+	// coarse search (with coarse_confirm_share they may run twice).
+	EveryOtherFailingIdcMatcher() { coarseSearchOptions().confirmShare = 0; }
+
    protected:
 	void matchPoints(
 		const ScanPoints& reference, const ScanPoints& current,

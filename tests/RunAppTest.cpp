@@ -936,3 +936,46 @@ TEST(FeatlocRun, TheFallbackMatcherMakesTheMatchesPcmCannot)
 		std::string::npos)
 		<< matches.substr(0, 2000);
 }
+
+// coarse_confirm_share in a run: in a room whose corners fix every
+// direction, the points confirm PCM's iterations from the odometry guess
+// and the coarse search is not run; summary.json and the console count
+// those matches, and with the key at 0 the search runs for every match.
+TEST(FeatlocRun, SummaryCountsTheMatchesMadeWithoutTheCoarseSearch)
+{
+	registerClasses();
+	TempDir dir;
+	const featloc::test::SyntheticRoom room = featloc::test::SyntheticRoom::office();
+	TestRawlog log;
+	log.scans = 12;
+	log.path = [](double t) { return CPose2D(0.3 * t, 0.05 * t, 0.05 * t); };
+	log.editScan = [&](size_t k, mrpt::obs::CObservation2DRangeScan& s) {
+		auto c = room.scan(log.path(log.scanPeriod * static_cast<double>(k)));
+		c->sensorLabel = s.sensorLabel;
+		c->timestamp = s.timestamp;
+		c->sensorPose = s.sensorPose;
+		s = *c;
+	};
+	log.write(dir.file("room.rawlog"));
+	const std::string common = shellQuote(kConfig) + " " + shellQuote(dir.file("room.rawlog")) +
+		" --set ScanMatcher:class=PcmFeatureMatcher --set Pipeline:estimator=matcher"
+		" --set Pipeline:keyframe_distance=0 --set Pipeline:keyframe_angle_DEG=0"
+		" --set Output:write_scene=false";
+	const CommandResult r = featlocRun(common + " --out " + shellQuote(dir.file("out")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto s = readJson(dir.file("out/summary.json"));
+	EXPECT_EQ(s["counts"]["matches"], 11);
+	EXPECT_EQ(s["counts"]["match_failures"], 0);
+	EXPECT_EQ(s["counts"]["coarse_search_skipped"], 11);
+	EXPECT_NE(r.output.find("11 without the coarse search: the points confirmed the iterations"),
+		std::string::npos)
+		<< r.output;
+
+	const CommandResult always = featlocRun(common + " --out " + shellQuote(dir.file("always")) +
+		" --set ScanMatcher.PcmFeatureMatcher:coarse_confirm_share=0");
+	ASSERT_EQ(always.exitCode, 0) << always.output;
+	const auto a = readJson(dir.file("always/summary.json"));
+	EXPECT_EQ(a["counts"]["match_failures"], 0);
+	EXPECT_EQ(a["counts"]["coarse_search_skipped"], 0);
+	EXPECT_EQ(always.output.find("without the coarse search"), std::string::npos);
+}

@@ -294,6 +294,7 @@ nlohmann::json toJson(const ScanPairBenchmark::Result& r)
 		{"matcher_fallbacks", r.matcherFallbacks},
 		{"fallback_matcher_matches", r.fallbackMatches},
 		{"fallback_matcher_successes", r.fallbackSuccesses},
+		{"coarse_search_skipped", r.searchSkipped},
 		{"success_rate", r.successRate()}, {"mae_x_m", r.maeX}, {"mae_y_m", r.maeY},
 		{"mae_yaw_deg", mrpt::RAD2DEG(r.maeYaw)}, {"mean_trans_err_m", r.meanTrans},
 		{"median_trans_err_m", r.medianTrans}, {"p95_trans_err_m", r.p95Trans},
@@ -517,6 +518,12 @@ int BenchApp::main(int argc, char** argv)
 						"ambiguous (%zu of them succeeded; counted above as its results)\n",
 				results[m].matcher.c_str(), matchers[m]->fallback()->className().c_str(),
 				results[m].fallbackMatches, results[m].pairs, results[m].fallbackSuccesses);
+	for (const auto& r : results)
+		if (r.searchSkipped > 0)
+			std::printf("\n%s: the coarse search was skipped on %zu of %zu pairs, where the "
+						"iterations from the guess put coarse_confirm_share of the points on the "
+						"reference\n",
+				r.matcher.c_str(), r.searchSkipped, r.pairs);
 	if (argWorld.isSet()) printWorldTables(name, results);
 	if (argBasin.isSet())
 	{

@@ -124,6 +124,10 @@ void RunReport::printSummary(const RunStats& s)
 			std::printf("    %zu made by the fallback matcher after %s failed (%zu of them succeeded; "
 						"fallback_class)\n",
 				s.fallbackMatcherMatches, s.matcherClass.c_str(), s.fallbackMatcherSuccesses);
+		if (s.coarseSearchSkipped)
+			std::printf("    %zu without the coarse search: the points confirmed the iterations from "
+						"the guess (coarse_confirm_share)\n",
+				s.coarseSearchSkipped);
 		for (const auto& ex : s.failureExamples) std::printf("    failed: %s\n", ex.c_str());
 		for (const auto& ex : s.rejectionExamples) std::printf("    not used: %s\n", ex.c_str());
 	}

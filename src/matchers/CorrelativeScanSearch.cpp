@@ -74,6 +74,8 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	readChoice(c, s, "coarse_on_ambiguity", onAmbiguity, {"inflate", "fail"});
 	read(c, s, "coarse_distinct_xy", distinctXY);
 	readDegrees(c, s, "coarse_distinct_yaw_DEG", distinctYaw);
+	read(c, s, "coarse_confirm_share", confirmShare);
+	read(c, s, "coarse_confirm_distance", confirmDistance);
 	require(windowSigmas > 0, c, s, "coarse_window_sigmas", "> 0");
 	require(minWindowXY >= 0, c, s, "coarse_min_window_xy", ">= 0");
 	require(minWindowYaw >= 0, c, s, "coarse_min_window_yaw_DEG", ">= 0");
@@ -92,6 +94,9 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	require(sharpSigma > 0, c, s, "coarse_sharp_sigma", "> 0");
 	require(distinctXY > 0, c, s, "coarse_distinct_xy", "> 0");
 	require(distinctYaw > 0, c, s, "coarse_distinct_yaw_DEG", "> 0");
+	require(confirmShare >= 0 && confirmShare <= 1, c, s, "coarse_confirm_share",
+		"in [0, 1] (0: the search always runs)");
+	require(confirmDistance > 0, c, s, "coarse_confirm_distance", "> 0");
 }
 
 void CorrelativeScanSearch::Options::saveToConfigFile(
@@ -134,6 +139,12 @@ void CorrelativeScanSearch::Options::saveToConfigFile(
 		"[m] solutions further apart than this (or coarse_distinct_yaw_DEG) are distinct");
 	writeDegrees(c, s, "coarse_distinct_yaw_DEG", distinctYaw,
 		"[deg] solutions turned further apart than this are distinct");
+	write(c, s, "coarse_confirm_share", confirmShare,
+		"skip the search when the iterations from the guess succeed, unflagged, and put this "
+		"share of the current points within coarse_confirm_distance of the reference "
+		"(0: the search always runs)");
+	write(c, s, "coarse_confirm_distance", confirmDistance,
+		"[m] a current point this close to a reference point is confirmed");
 }
 
 mrpt::math::CMatrixDouble33 CorrelativeScanSearch::Result::gridCovariance() const

@@ -13,6 +13,7 @@
 #include "featloc/config/ConfigValues.h"
 #include "featloc/core/ConfigError.h"
 #include "featloc/math/PoseDifference.h"
+#include "featloc/matchers/ReferenceOverlap.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 
 namespace featloc
@@ -261,12 +262,46 @@ MatchResult ScanMatcher::matchInSensorFrames(
 			std::to_string(kMinPointsPerScan) + ")";
 	}
 	else if (m_coarse.options.enabled)
-		matchFromCoarseSearch(reference, current, window, r);
+	{
+		if (!matchConfirmedFromGuess(reference, current, initialGuess, r))
+			matchFromCoarseSearch(reference, current, window, r);
+	}
 	else
 		matchPoints(reference, current, initialGuess, r);
 	// Every failure has a kind; the matcher's own reasons are "matcher".
 	if (!r.success && r.failureKind.empty()) r.failureKind = "matcher";
 	return r;
+}
+
+bool ScanMatcher::matchConfirmedFromGuess(const ScanPoints& reference,
+	const ScanPoints& current, const mrpt::poses::CPosePDFGaussian& initialGuess,
+	MatchResult& r)
+{
+	const double minShare = m_coarse.options.confirmShare;
+	if (minShare <= 0) return false;
+	// The search costs ten to twenty times the iterations on a 361-beam
+	// scan; where the iterations from the guess already land on a pose
+	// that the reference confirms point by point, it would start them at
+	// that same pose. A wrong minimum leaves points off the reference: on
+	// the calibration scenes, without the search, 0.06-0.52 (10th-90th
+	// percentile) of the points of orebro's gross errors lay within 5 cm,
+	// against 0.86-0.99 on the simulated office. The search runs then, as
+	// it does on a failure. (10 cm was too loose: a room pair 86 mm off
+	// had 0.90 of its points within 10 cm and 0.27 within 5 cm; IDC's
+	// slides along the corridor with people passed at 10 cm and not at
+	// 5 cm.) Along a corridor a slid pose is confirmed as well as the
+	// right one: the featloc matchers' own checks fail a match whose
+	// points leave a direction free (MotionConstraintCheck), which is why
+	// IcpMatcher, whose covariance does not, has this off.
+	MatchResult local = r;
+	matchPoints(reference, current, initialGuess, local);
+	if (!local.success) return false;
+	const double share = ReferenceOverlap::share(
+		reference, current, local.estimate.mean, m_coarse.options.confirmDistance, minShare);
+	if (share < minShare) return false;
+	r = std::move(local);
+	r.confirmedShare = share;
+	return true;
 }
 
 void ScanMatcher::matchFromCoarseSearch(const ScanPoints& reference, const ScanPoints& current,

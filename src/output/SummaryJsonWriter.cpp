@@ -43,6 +43,7 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"matcher_fallbacks", s.matcherFallbacks},
 		{"fallback_matcher_matches", s.fallbackMatcherMatches},
 		{"fallback_matcher_successes", s.fallbackMatcherSuccesses},
+		{"coarse_search_skipped", s.coarseSearchSkipped},
 		{"fallbacks_to_odometry", s.fallbacks},
 		{"ignored_observations", s.ignoredObservations}};
 	if (s.stereoFrames)

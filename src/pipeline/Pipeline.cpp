@@ -265,6 +265,7 @@ void Pipeline::processStep(
 			if (match.ambiguous) stats.ambiguousMatches++;
 			if (!match.guessGateOverruled.empty()) stats.guessGateOverruled++;
 			if (!match.matcherFallback.empty()) stats.matcherFallbacks++;
+			if (match.confirmedShare > 0) stats.coarseSearchSkipped++;
 			if (!match.primaryFailure.empty())
 			{
 				stats.fallbackMatcherMatches++;

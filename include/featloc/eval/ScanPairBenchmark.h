@@ -101,6 +101,9 @@ class ScanPairBenchmark
 		/** Pairs the fallback matcher made after the matcher failed
 		 * (MatchResult::primaryFailure), and of those the successes. */
 		size_t fallbackMatches = 0, fallbackSuccesses = 0;
+		/** Pairs whose coarse search was skipped: the points confirmed the
+		 * iterations from the guess (MatchResult::confirmedShare). */
+		size_t searchSkipped = 0;
 		size_t silentGross = 0;	 //!< other successes off by > grossTrans or > grossYaw
 		/** Over every pair (failures at the guess's error). */
 		double maeX = 0, maeY = 0, maeYaw = 0;	//!< [m], [m], [rad]

@@ -80,6 +80,13 @@ class CorrelativeScanSearch
 		 * distinct: the silent-gross-error thresholds of featloc-bench. */
 		double distinctXY = 0.10;  //!< [m]
 		double distinctYaw = 0.03490658503988659;  //!< [rad] (2 deg)
+		/** The search is skipped when the matcher's iterations from the
+		 * guess succeed at a pose that puts at least this share of the
+		 * current points within confirmDistance of a reference point
+		 * (ReferenceOverlap, ScanMatcher::matchConfirmedFromGuess; 0: the
+		 * search always runs; IcpMatcher: 0). */
+		double confirmShare = 0.85;
+		double confirmDistance = 0.05;	//!< [m]
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& c, const std::string& s) override;

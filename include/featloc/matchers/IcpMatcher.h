@@ -55,8 +55,15 @@ class IcpMatcher : public ScanMatcher
 
 	/** MRPT's ICP as MRPT runs it, the peer featloc is measured against:
 	 * the wide-basin search that every featloc matcher runs by default is
-	 * off here unless `coarse_search = true`. */
-	IcpMatcher() { coarseSearchOptions().enabled = false; }
+	 * off here unless `coarse_search = true`. With it on, the search
+	 * always runs (`coarse_confirm_share` 0): skipping it needs a
+	 * covariance that grows along a corridor, and MRPT's ICP reports 16 mm
+	 * there (CorrelativeScanSearchTest, the corridor). */
+	IcpMatcher()
+	{
+		coarseSearchOptions().enabled = false;
+		coarseSearchOptions().confirmShare = 0;
+	}
 
    protected:
 	void loadOwnParams(

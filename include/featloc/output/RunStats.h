@@ -63,6 +63,9 @@ struct RunStats
 	 * (MatchResult::primaryFailure), and how many of those succeeded. */
 	size_t fallbackMatcherMatches = 0;
 	size_t fallbackMatcherSuccesses = 0;
+	/** Matches whose coarse search was skipped: the points confirmed the
+	 * iterations from the guess (MatchResult::confirmedShare). */
+	size_t coarseSearchSkipped = 0;
 	size_t fallbacks = 0;  //!< steps where the estimator used odometry
 	/** A few failure examples: "scan 123: reason". */
 	std::vector<std::string> failureExamples;
