@@ -26,7 +26,7 @@
 # start uniform over the same +-0.1 m / +-3 deg.
 # Usage: scripts/bench-localization.sh [OUTDIR] [PF_PARTICLES (default 2000)] [STARTS (default 100)]
 #   [FIRST_START_SEED (default 101)]
-# Takes about 17 minutes on 2 cores.
+# Takes about 8 minutes on 2 cores.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-localization "$@"

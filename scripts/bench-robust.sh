@@ -21,7 +21,7 @@
 #    (featloc-run on MRPT's 5 cm-noise simulated log with ICP, and over the
 #    office and lab with four seeds each with every matcher, coarse_search
 #    off / on; ATE against the ground truth).
-# Usage: scripts/bench-robust.sh [OUTDIR]   (about 15 min on 2 cores)
+# Usage: scripts/bench-robust.sh [OUTDIR]   (about 5 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-robust "$@"

@@ -13,7 +13,7 @@
 #  - Held out: the corridor with people (+-0.3 m / 10 deg and +-0.5 m /
 #    15 deg), the hall with people, the room with doors and a cart, and the
 #    other five Radish logs (../shared/data/laser2d or $FEATLOC_LASER2D).
-# Usage: scripts/bench-search-confirm.sh [OUTDIR]   (about 6 min on 2 cores)
+# Usage: scripts/bench-search-confirm.sh [OUTDIR]   (about 3 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-search-confirm "$@"

@@ -158,7 +158,10 @@ TEST(CorrelativeScanSearch, EveryMatcherConvergesFromTheWideBasin)
 				ASSERT_TRUE(r.success) << cls << " draw " << k << ": " << r.failureReason;
 				EXPECT_LT(translationError(r.estimate.mean, motion), 0.02) << cls << " draw " << k;
 				EXPECT_LT(yawErrorDeg(r.estimate.mean, motion), 0.5) << cls << " draw " << k;
-				if (!confirm.empty()) EXPECT_GT(r.coarseScore, 0.5) << cls;
+				if (!confirm.empty())
+				{
+					EXPECT_GT(r.coarseScore, 0.5) << cls;
+				}
 				EXPECT_TRUE(r.coarseScore > 0.5 || r.confirmedShare >= 0.85) << cls;
 			}
 			const MatchResult p = matcher(cls, "coarse_search=false")->match(*ref, *cur, g);

@@ -140,7 +140,7 @@ void CorrelativeScanSearch::Options::saveToConfigFile(
 	writeDegrees(c, s, "coarse_distinct_yaw_DEG", distinctYaw,
 		"[deg] solutions turned further apart than this are distinct");
 	write(c, s, "coarse_confirm_share", confirmShare,
-		"skip the search when the iterations from the guess succeed, unflagged, and put this "
+		"skip the search when the iterations from the guess succeed and put this "
 		"share of the current points within coarse_confirm_distance of the reference "
 		"(0: the search always runs)");
 	write(c, s, "coarse_confirm_distance", confirmDistance,

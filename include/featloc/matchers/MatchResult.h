@@ -59,8 +59,8 @@ struct MatchResult
 	 * pose (CorrelativeScanSearch; 0 when it did not run). */
 	double coarseScore = 0;
 	/** The coarse search was on but skipped: the iterations from the guess
-	 * succeeded, unflagged, at a pose that puts this share of the current
-	 * points near the reference (coarse_confirm_share; 0 otherwise). */
+	 * succeeded at a pose that puts this share of the current points near
+	 * the reference (coarse_confirm_share; 0 otherwise). */
 	double confirmedShare = 0;
 	/** What the gates add to the guess's covariance (ScanMatcher::match's
 	 * gateAllowance; zero when none). */

@@ -23,8 +23,9 @@ class ReferenceOverlap
 	/** `reference` and `current` in their sensor frames; `pose` is the
 	 * current sensor's pose in the reference's. With stopBelow > 0 the
 	 * count stops as soon as the share cannot reach it, and what is
-	 * returned is then some value below stopBelow (a probe that only needs
-	 * the answer to "at least stopBelow?" does not count every point). */
+	 * returned is then some value below stopBelow (a caller that only
+	 * needs the answer to "at least stopBelow?" need not count every
+	 * point). */
 	static double share(const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPose2D& pose, double distance, double stopBelow = 0);
 };
