@@ -25,6 +25,20 @@ held_out_radish_logs() {
     [ "$(basename "$f")" = orebro-corrected.log.gz ] || echo "$f"
   done
 }
+# The calibration scenes of issue 15's benches, each through the caller's
+# `bench NAME DATA ARGS...`, Borges & Aldon's protocol: the simulated office
+# and lab at 1 cm noise, and the real orebro log in $LASER2D.
+bench_calibration_scenes() {
+  local scene
+  for scene in office lab; do
+    sim_1cm "$scene"
+    bench "sim $scene (1 cm)" "$OUT/$scene-1cm.rawlog" -g "$OUT/$scene-1cm.gt.txt" \
+      --perturb-xy 0.3 --perturb-yaw-deg 10
+  done
+  if [ -d "$LASER2D" ]; then
+    bench "orebro" "$LASER2D/orebro-corrected.log.gz" --perturb-xy 0.3 --perturb-yaw-deg 10
+  fi
+}
 # The held-out scenes of issue 15's PCM benches, each through the caller's
 # `bench NAME DATA ARGS...`, Borges & Aldon's protocol: the corridor with
 # people (+-0.3 m / 10 deg and +-0.5 m / 15 deg), the hall with people, the

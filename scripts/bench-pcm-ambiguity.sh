@@ -29,7 +29,7 @@ bench() { # name, data, extra args...
   # shellcheck disable=SC2086
   "$BIN/featloc-bench" "$ROOT/config.ini" "$data" $COMMON -m "$M" $HEADER \
     --name "$name" "$@" -j "$OUT/$(echo "$name" | tr " /+()" "_____").json" \
-    | awk -F'|' 'NF == 13'  # the main table only (--world adds the bound's and moved points')
+    | awk -F'|' '/^\| data \| matcher \| pairs \| flagged/ || (NF == 13 && !/pairs with a bound/)'  # the main table only (--world adds the bound's and moved points')
   HEADER=
 }
 
@@ -37,12 +37,7 @@ machine_line
 echo
 echo "### Calibration scenes"
 echo
-for scene in office lab; do
-  sim_1cm "$scene"
-  bench "sim $scene (1 cm)" "$OUT/$scene-1cm.rawlog" -g "$OUT/$scene-1cm.gt.txt" \
-    --perturb-xy 0.3 --perturb-yaw-deg 10
-done
-[ -d "$LASER2D" ] && bench "orebro" "$LASER2D/orebro-corrected.log.gz" --perturb-xy 0.3 --perturb-yaw-deg 10
+bench_calibration_scenes
 echo
 echo "### Held out"
 echo

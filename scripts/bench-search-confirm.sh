@@ -13,7 +13,7 @@
 #  - Held out: the corridor with people (+-0.3 m / 10 deg and +-0.5 m /
 #    15 deg), the hall with people, the room with doors and a cart, and the
 #    other five Radish logs (../shared/data/laser2d or $FEATLOC_LASER2D).
-# Usage: scripts/bench-search-confirm.sh [OUTDIR]   (about 3 min on 2 cores)
+# Usage: scripts/bench-search-confirm.sh [OUTDIR]   (about 4 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-search-confirm "$@"
@@ -31,7 +31,7 @@ bench() { # name, data, extra args...
   # shellcheck disable=SC2086
   "$BIN/featloc-bench" "$ROOT/config.ini" "$data" $COMMON -m "$M" $HEADER \
     --name "$name" "$@" -j "$OUT/$(echo "$name" | tr " /+()" "_____").json" \
-    | awk -F'|' 'NF == 13 || /coarse search was skipped/'  # the main table and the skip counts
+    | awk -F'|' '/^\| data \| matcher \| pairs \| flagged/ || (NF == 13 && !/pairs with a bound/) || /coarse search was skipped/'  # the main table and the skip counts
   HEADER=
 }
 
@@ -39,16 +39,25 @@ machine_line
 echo
 echo "### Calibration scenes"
 echo
-for scene in office lab; do
-  sim_1cm "$scene"
-  bench "sim $scene (1 cm)" "$OUT/$scene-1cm.rawlog" -g "$OUT/$scene-1cm.gt.txt" \
-    --perturb-xy 0.3 --perturb-yaw-deg 10
-done
-[ -d "$LASER2D" ] && bench "orebro" "$LASER2D/orebro-corrected.log.gz" --perturb-xy 0.3 --perturb-yaw-deg 10
+bench_calibration_scenes
 echo
 echo "### Held out"
 echo
 HEADER=--header
 bench_held_out_scenes
+echo
+echo "### Speed: PCM beside MRPT's ICP alone, the office, three runs"
+echo
+# In the tables above every matcher runs in turn on each pair, and the
+# searches of the ones before evict the caches PCM's iterations use.
+HEADER=--header
+for run in 1 2 3; do
+  # shellcheck disable=SC2086
+  "$BIN/featloc-bench" "$ROOT/config.ini" "$OUT/office-1cm.rawlog" -g "$OUT/office-1cm.gt.txt" \
+    $COMMON -m "PCM (config.ini)=$PCM,IcpMatcher (MRPT)=featloc::IcpMatcher" $HEADER \
+    --name "sim office (1 cm), run $run" --perturb-xy 0.3 --perturb-yaw-deg 10 \
+    | awk -F'|' '/^\| data \| matcher \| pairs \| flagged/ || (NF == 13 && !/pairs with a bound/)'
+  HEADER=
+done
 echo
 echo "(raw outputs in $OUT)"

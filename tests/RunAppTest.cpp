@@ -87,6 +87,21 @@ std::pair<size_t, size_t> countPoses(const std::string& rawlog, const std::strin
 	}
 	return {poses, entries};
 }
+/** `log` with every scan replaced by the exact scan of `room` from the
+ * log's path (the scan's label, time and sensor pose kept), written to
+ * `file`. */
+void writeWithScansOf(TestRawlog log, const featloc::test::SyntheticRoom& room,
+	const std::string& file)
+{
+	log.editScan = [&](size_t k, mrpt::obs::CObservation2DRangeScan& s) {
+		auto c = room.scan(log.path(log.scanPeriod * static_cast<double>(k)));
+		c->sensorLabel = s.sensorLabel;
+		c->timestamp = s.timestamp;
+		c->sensorPose = s.sensorPose;
+		s = *c;
+	};
+	log.write(file);
+}
 }  // namespace
 
 TEST(FeatlocRun, HelpListsTheSetOption)
@@ -902,14 +917,7 @@ TEST(FeatlocRun, TheFallbackMatcherMakesTheMatchesPcmCannot)
 	TestRawlog log;
 	log.scans = 12;
 	log.path = [](double t) { return CPose2D(0.5 * t, 0.02 * t, 0.01 * t); };
-	log.editScan = [&](size_t k, mrpt::obs::CObservation2DRangeScan& s) {
-		auto c = corridor.scan(log.path(log.scanPeriod * static_cast<double>(k)));
-		c->sensorLabel = s.sensorLabel;
-		c->timestamp = s.timestamp;
-		c->sensorPose = s.sensorPose;
-		s = *c;
-	};
-	log.write(dir.file("corridor.rawlog"));
+	writeWithScansOf(log, corridor, dir.file("corridor.rawlog"));
 	const std::string common = shellQuote(kConfig) + " " + shellQuote(dir.file("corridor.rawlog")) +
 		" --set ScanMatcher:class=PcmFeatureMatcher --set Pipeline:estimator=matcher"
 		" --set Pipeline:keyframe_distance=0 --set Pipeline:keyframe_angle_DEG=0"
@@ -949,14 +957,7 @@ TEST(FeatlocRun, SummaryCountsTheMatchesMadeWithoutTheCoarseSearch)
 	TestRawlog log;
 	log.scans = 12;
 	log.path = [](double t) { return CPose2D(0.3 * t, 0.05 * t, 0.05 * t); };
-	log.editScan = [&](size_t k, mrpt::obs::CObservation2DRangeScan& s) {
-		auto c = room.scan(log.path(log.scanPeriod * static_cast<double>(k)));
-		c->sensorLabel = s.sensorLabel;
-		c->timestamp = s.timestamp;
-		c->sensorPose = s.sensorPose;
-		s = *c;
-	};
-	log.write(dir.file("room.rawlog"));
+	writeWithScansOf(log, room, dir.file("room.rawlog"));
 	const std::string common = shellQuote(kConfig) + " " + shellQuote(dir.file("room.rawlog")) +
 		" --set ScanMatcher:class=PcmFeatureMatcher --set Pipeline:estimator=matcher"
 		" --set Pipeline:keyframe_distance=0 --set Pipeline:keyframe_angle_DEG=0"
