@@ -576,3 +576,53 @@ TEST(CfIdcMatcher, TheCurvatureStageDropsWhatTheReferenceHasNoShapeFor)
 	EXPECT_GE(legs, 1u);
 	EXPECT_EQ(wallsDropped, 0u);
 }
+
+// IdcMatcher builds a reference's segments and polyline once for every
+// match against it (a keyframe's matches, and the second run of the
+// iterations after the points did not confirm the first): a kept build
+// answers as a fresh one, and another reference or other segmentation or
+// local-line parameters build anew.
+TEST(IdcMatcher, AKeptReferenceBuildAnswersAsAFreshOne)
+{
+	registerClasses();
+	const SyntheticRoom room = SyntheticRoom::office();
+	mrpt::random::CRandomGenerator rng(5);
+	const CPose2D p0(0.3, -0.4, 0.2), p1(1.1, 0.2, -0.3), motion(0.2, 0.1, mrpt::DEG2RAD(5.0));
+	const auto ref0 = noisy(room.scan(p0), rng, 0.01), ref1 = noisy(room.scan(p1), rng, 0.01);
+	const auto cur0 = noisy(room.scan(p0 + motion), rng, 0.01),
+			   cur1 = noisy(room.scan(p1 + motion), rng, 0.01);
+	const auto guess = diagonalPoseGaussian(CPose2D(0.25, 0.05, mrpt::DEG2RAD(3.0)), 0.1, 0.05);
+	IdcMatcher kept;
+	kept.coarseSearchOptions().enabled = false;
+	struct Run
+	{
+		bool second;  // ref1 / cur1, else ref0 / cur0
+		double lambdaDeg;
+		unsigned int lineHalfWindow;
+	};
+	// The same reference (kept), another (rebuilt), the first again
+	// (rebuilt), then other segmentation and local-line parameters, and the
+	// defaults again.
+	const Run runs[] = {{false, 10, 6}, {false, 10, 6}, {true, 10, 6}, {false, 10, 6},
+		{false, 1, 6}, {false, 1, 2}, {false, 10, 6}};
+	std::vector<double> xs;
+	for (const Run& run : runs)
+	{
+		kept.params.segmentation.lambda = mrpt::DEG2RAD(run.lambdaDeg);
+		kept.params.idc.line_half_window = run.lineHalfWindow;
+		IdcMatcher fresh;
+		fresh.coarseSearchOptions().enabled = false;
+		fresh.params = kept.params;
+		const auto& ref = run.second ? *ref1 : *ref0;
+		const auto& cur = run.second ? *cur1 : *cur0;
+		const MatchResult a = kept.match(ref, cur, guess), b = fresh.match(ref, cur, guess);
+		ASSERT_TRUE(a.success && b.success) << a.failureReason << b.failureReason;
+		EXPECT_EQ(a.estimate.mean, b.estimate.mean) << run.lambdaDeg << " " << run.lineHalfWindow;
+		EXPECT_EQ(a.estimate.cov, b.estimate.cov) << run.lambdaDeg << " " << run.lineHalfWindow;
+		EXPECT_LT(std::hypot(a.estimate.mean.x() - motion.x(), a.estimate.mean.y() - motion.y()), 0.01);
+		xs.push_back(a.estimate.mean.x());
+	}
+	// The parameters change the answer, so a build they did not redo shows.
+	EXPECT_NE(xs[3], xs[4]);
+	EXPECT_NE(xs[4], xs[5]);
+}

@@ -28,12 +28,28 @@ void IdcMatcher::saveOwnParams(mrpt::config::CConfigFileBase& cfg, const std::st
 	params.saveToConfigFile(cfg, section);
 }
 
+void IdcMatcher::buildReference(const ScanPoints& reference)
+{
+	// One build serves every match against the same scan: a keyframe's,
+	// and the second run of the iterations when coarse_confirm_share sends
+	// a match to the coarse search.
+	if (m_built && m_builtSegmentation == params.segmentation &&
+		m_builtLineHalfWindow == params.idc.line_half_window &&
+		m_builtReference.samePointsAs(reference))
+		return;
+	AdaptiveBreakpointSegmenter(params.segmentation).segment(reference, m_segments);
+	m_polyline.build(reference, m_segments, params.idc.line_half_window);
+	m_built = true;
+	m_builtReference = reference;
+	m_builtSegmentation = params.segmentation;
+	m_builtLineHalfWindow = params.idc.line_half_window;
+}
+
 void IdcMatcher::matchPoints(
 	const ScanPoints& reference, const ScanPoints& current,
 	const mrpt::poses::CPosePDFGaussian& initialGuess, MatchResult& result)
 {
-	AdaptiveBreakpointSegmenter(params.segmentation).segment(reference, m_segments);
-	m_polyline.build(reference, m_segments, params.idc.line_half_window);
+	buildReference(reference);
 	m_idc.params = params.idc;
 	IterativeDualCorrespondence::Result r;
 	m_idc.run(m_polyline, current.points, initialGuess, r);

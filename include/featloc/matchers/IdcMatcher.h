@@ -50,8 +50,17 @@ class IdcMatcher : public ScanMatcher
 		MatchResult& result) override;
 
    private:
-	std::vector<ScanSegment> m_segments;  // reused buffers
+	/** Segments and polyline of `reference`, unless they are already of
+	 * these points with these parameters. */
+	void buildReference(const ScanPoints& reference);
+
+	std::vector<ScanSegment> m_segments;
 	ReferencePolyline m_polyline;
 	IterativeDualCorrespondence m_idc;
+	/** What m_segments and m_polyline were built from. */
+	bool m_built = false;
+	ScanPoints m_builtReference;
+	AdaptiveBreakpointSegmenter::Parameters m_builtSegmentation;
+	unsigned int m_builtLineHalfWindow = 0;
 };
 }  // namespace featloc

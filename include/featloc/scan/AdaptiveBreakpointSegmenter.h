@@ -42,6 +42,12 @@ class AdaptiveBreakpointSegmenter
 		double sigma_r = 0.005;	 //!< [m] sigma_r of eq. (3)
 		bool breakAtMissingReturns = true;	//!< featloc (false: the paper)
 
+		bool operator==(const Parameters& o) const
+		{
+			return lambda == o.lambda && sigma_r == o.sigma_r &&
+				breakAtMissingReturns == o.breakAtMissingReturns;
+		}
+
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& c,
 			const std::string& s) override;
