@@ -51,10 +51,10 @@ def read(paths):
                 if line.startswith("#") or not line.strip():
                     continue
                 c = line.rstrip("\n").split("\t")
-                if len(c) != 13:
-                    sys.exit(f"{path}:{n}: {len(c)} columns, expected 13 (featloc-bench --pairs)")
+                if len(c) != 14:
+                    sys.exit(f"{path}:{n}: {len(c)} columns, expected 14 (featloc-bench --pairs)")
                 data, matcher, pair, status = c[0], c[1], int(c[2]), c[3]
-                v = [float(x) for x in c[4:]]
+                v = [float(x) for x in c[4:13]]
                 e = v[0:3]
                 xx, xy, xw, yy, yw, ww = v[3:9]
                 cov = [[xx, xy, xw], [xy, yy, yw], [xw, yw, ww]]

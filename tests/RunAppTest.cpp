@@ -736,7 +736,7 @@ TEST(FeatlocBench, EveryPairCountsAndTheBasinCurveIsDrawn)
 // --pairs: one row per matcher and pair, from which the tables' figures
 // come back (the mean |t| error over every pair, failures at the guess's
 // error; the NEES over the successes), and a failure carries the guess's
-// covariance.
+// covariance and the matcher's reason.
 TEST(FeatlocBench, EveryPairsOutcomeIsWrittenAndGivesTheTablesFigures)
 {
 	TempDir dir;
@@ -760,9 +760,12 @@ TEST(FeatlocBench, EveryPairsOutcomeIsWrittenAndGivesTheTablesFigures)
 			continue;
 		}
 		std::vector<std::string> c;
-		std::istringstream cells(line);
-		for (std::string cell; std::getline(cells, cell, '\t');) c.push_back(cell);
-		ASSERT_EQ(c.size(), 13u) << line;
+		size_t from = 0;
+		for (size_t tab; (tab = line.find('\t', from)) != std::string::npos; from = tab + 1)
+			c.push_back(line.substr(from, tab - from));
+		c.push_back(line.substr(from));
+		ASSERT_EQ(c.size(), 14u) << line;
+		EXPECT_EQ(c[13].empty(), c[3] == "used") << line;
 		EXPECT_EQ(c[0], "office");
 		byMatcher[c[1]].push_back(c);
 	}
@@ -789,6 +792,10 @@ TEST(FeatlocBench, EveryPairsOutcomeIsWrittenAndGivesTheTablesFigures)
 				// The guess's: uniform +-0.3 m / +-10 deg, sigma a / sqrt(3).
 				EXPECT_NEAR(P(0, 0), 0.09 / 3, 1e-9);
 				EXPECT_NEAR(P(2, 2), std::pow(mrpt::DEG2RAD(10.0), 2) / 3, 1e-9);
+				if (res["matcher"] == "never")
+				{
+					EXPECT_NE(c[13].find("coarse search"), std::string::npos) << c[13];
+				}
 				continue;
 			}
 			sumNees += e.dot(P.ldlt().solve(e));
@@ -821,7 +828,7 @@ TEST(ReferenceErrorShare, SplitsKnownOwnAndSharedErrors)
 	const double shared[3] = {0.02, 0.02, mrpt::DEG2RAD(0.3)};
 	{
 		std::ofstream f(dir.file("p.tsv"));
-		f << "# data\tmatcher\tpair\tstatus\terr_x_m\terr_y_m\terr_yaw_rad\tcov_xx\tcov_xy\tcov_xyaw\tcov_yy\tcov_yyaw\tcov_yawyaw\n";
+		f << "# data\tmatcher\tpair\tstatus\terr_x_m\terr_y_m\terr_yaw_rad\tcov_xx\tcov_xy\tcov_xyaw\tcov_yy\tcov_yyaw\tcov_yawyaw\treason\n";
 		std::vector<Eigen::Vector3d> ref(4000);
 		for (auto& e : ref)
 			for (int i = 0; i < 3; i++) e[i] = shared[i] * rng.drawGaussian1D_normalized();
@@ -834,7 +841,7 @@ TEST(ReferenceErrorShare, SplitsKnownOwnAndSharedErrors)
 					e[i] = own * reported[i] * rng.drawGaussian1D_normalized() - ref[k][i];
 				f << "log\t" << m << "\t" << k << "\tused\t" << e[0] << "\t" << e[1] << "\t" << e[2]
 				  << "\t" << reported[0] * reported[0] << "\t0\t0\t" << reported[1] * reported[1]
-				  << "\t0\t" << reported[2] * reported[2] << "\n";
+				  << "\t0\t" << reported[2] * reported[2] << "\t\n";
 			}
 	}
 	const CommandResult r = runCommand("python3 " +

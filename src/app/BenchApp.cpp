@@ -3,6 +3,7 @@
 #include <mrpt/core/bits_math.h>
 #include <mrpt/system/string_utils.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -159,14 +160,16 @@ void attachWorld(std::vector<ScanPairSample>& pairs, const std::vector<size_t>& 
 
 /** --pairs: one row per matcher and pair. The status is what featloc-bench
  * counts: used (a success), ambiguous (flagged, used with its inflated
- * covariance), failed (the guess, with the guess's covariance). */
+ * covariance), failed (the guess, with the guess's covariance); the last
+ * column says why a pair failed or is ambiguous (tabs and line breaks
+ * turned into spaces, so that every row stays one TSV row). */
 void writePairOutcomes(const std::string& path, const std::string& name,
 	const std::vector<ScanPairBenchmark::Result>& results)
 {
 	std::ofstream f(path);
 	if (!f) throw std::runtime_error("cannot write '" + path + "'");
 	f << "# data\tmatcher\tpair\tstatus\terr_x_m\terr_y_m\terr_yaw_rad\t"
-		 "cov_xx\tcov_xy\tcov_xyaw\tcov_yy\tcov_yyaw\tcov_yawyaw\n";
+		 "cov_xx\tcov_xy\tcov_xyaw\tcov_yy\tcov_yyaw\tcov_yawyaw\treason\n";
 	using Status = ScanPairBenchmark::PairOutcome::Status;
 	char buf[320];
 	for (const auto& r : results)
@@ -176,10 +179,13 @@ void writePairOutcomes(const std::string& path, const std::string& name,
 			const char* status = o.status == Status::Used ? "used"
 				: o.status == Status::Ambiguous			 ? "ambiguous"
 														 : "failed";
-			std::snprintf(buf, sizeof(buf), "\t%zu\t%s\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\n",
+			std::snprintf(buf, sizeof(buf), "\t%zu\t%s\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t",
 				k, status, o.error[0], o.error[1], o.error[2], o.cov(0, 0), o.cov(0, 1),
 				o.cov(0, 2), o.cov(1, 1), o.cov(1, 2), o.cov(2, 2));
-			f << name << '\t' << r.matcher << buf;
+			std::string reason = o.reason;
+			std::replace_if(reason.begin(), reason.end(),
+				[](char c) { return c == '\t' || c == '\n' || c == '\r'; }, ' ');
+			f << name << '\t' << r.matcher << buf << reason << '\n';
 		}
 	if (!f) throw std::runtime_error("cannot write '" + path + "'");
 }

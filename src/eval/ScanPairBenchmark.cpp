@@ -119,6 +119,7 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 				: r.ambiguous			? PairOutcome::Status::Ambiguous
 										: PairOutcome::Status::Used;
 			outcome.error = err;
+			outcome.reason = !r.success ? r.failureReason : r.ambiguous ? r.ambiguityReason : "";
 			outcome.cov = (r.success ? r.estimate.cov : guess.cov).asEigen();
 			const double et = std::hypot(err[0], err[1]), ew = std::abs(err[2]);
 			a.ex.push_back(std::abs(err[0]));

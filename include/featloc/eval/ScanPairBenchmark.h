@@ -85,6 +85,8 @@ class ScanPairBenchmark
 		Eigen::Vector3d error = Eigen::Vector3d::Zero();
 		/** The estimate's covariance (the guess's on a failure). */
 		Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+		/** Why it failed, or why it is ambiguous; empty when used. */
+		std::string reason;
 	};
 	struct Result
 	{
