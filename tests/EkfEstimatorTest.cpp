@@ -154,6 +154,42 @@ TEST(EkfEstimator, AnOverruledGuessGateIsNotAskedAgainByTheEkfGate)
 	EXPECT_NEAR(used.pose().mean.x(), 0.65, 1e-3);
 }
 
+// A match that kept the guess along the direction its scans left free (a
+// corridor, MatchResult::guessKeptAlongFreeDirection) carries there the
+// guess's own variance; the guess is the filter's odometry, so fused as it
+// is the odometry would count twice and the variance along the corridor
+// would halve. The filter keeps its prediction along that direction and
+// takes the match across it; the same match without the mark is fused
+// along the corridor too.
+TEST(EkfEstimator, AlongAMatchsFreeDirectionTheFilterKeepsItsPrediction)
+{
+	EstimationStep step;
+	step.hasOdometry = true;
+	step.odometry = diag(CPose2D(0.5, 0, 0), 0.01, 1e-4);
+	MatchResult m;
+	m.success = true;
+	m.ambiguous = true;
+	CPosePDFGaussian z = diag(CPose2D(0.5, 0.05, 0), 1e-4, 1e-6);
+	z.cov(0, 0) = 0.01;	 // the guess's own variance along x
+	m.estimate = z;
+	m.freeDirection[0] = 1;
+	auto fuse = [&](bool kept) {
+		m.guessKeptAlongFreeDirection = kept;
+		EkfEstimator e(EkfOptions{});
+		e.initialize(diag(CPose2D(), 0, 0));
+		EXPECT_TRUE(e.process(step, &m)) << e.lastFallbackReason();
+		e.markKeyframe();
+		return e.pose();
+	};
+	const CPosePDFGaussian kept = fuse(true), fused = fuse(false);
+	// Across the corridor both take the match.
+	EXPECT_NEAR(kept.mean.y(), 0.05 * 0.01 / (0.01 + 1e-4), 1e-4);
+	EXPECT_NEAR(fused.mean.y(), kept.mean.y(), 1e-6);
+	// Along it: the prediction's variance, not half of it.
+	EXPECT_NEAR(kept.cov(0, 0), 0.01, 1e-5);
+	EXPECT_NEAR(fused.cov(0, 0), 0.005, 1e-5);
+}
+
 // A loop around the lab's tables with drifting odometry: the matcher's
 // result is thrown away every other step. The filter must
 // still follow the exact ground truth within its own covariance.

@@ -2,9 +2,7 @@
 // match when the configured one fails.
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt/serialization/CArchive.h>
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cmath>
@@ -52,14 +50,6 @@ ScanMatcher::Ptr fromIni(const std::string& cls, const std::string& ini)
  * Delta_0). */
 const std::string kBenchPcm = "[ScanMatcher.PcmFeatureMatcher]\ninitial_bounds_source = config\n";
 
-/** The two scans of a pair featloc-bench matched, from tests/data. */
-void readPair(const std::string& file, mrpt::obs::CObservation2DRangeScan& reference,
-	mrpt::obs::CObservation2DRangeScan& current)
-{
-	mrpt::io::CFileGZInputStream in(std::string(FEATLOC_SOURCE_DIR) + "/tests/data/" + file);
-	auto ar = mrpt::serialization::archiveFrom(in);
-	ar >> reference >> current;
-}
 
 std::string configErrorOf(const std::string& cls, const std::string& ini)
 {
@@ -128,7 +118,8 @@ TEST(ScanMatcherFallback, WhenBothFailTheReasonNamesBoth)
 	const auto ref = corridor.scan(CPose2D(0, 0, 0));
 	const auto cur = corridor.scan(CPose2D(0.3, 0.05, 0.02));
 	auto m = fromIni("featloc::PcmFeatureMatcher",
-		"[ScanMatcher.PcmFeatureMatcher]\nfallback_class = featloc::IdcMatcher\n");
+		"[ScanMatcher.PcmFeatureMatcher]\nfallback_class = featloc::IdcMatcher\n"
+		"[ScanMatcher.IdcMatcher]\nfree_direction_from_guess = false\n");
 	const MatchResult r =
 		m->match(*ref, *cur, diagonalPoseGaussian(CPose2D(0.25, 0, 0), 0.1, 0.05));
 	ASSERT_FALSE(r.success);
@@ -214,9 +205,11 @@ TEST(ScanMatcherFallback, PcmFallsBackOnIdcByDefault)
 // pairs each beam with its own and returns no motion at all, 0.5 m off,
 // with a sigma of 2 cm; a chain of such matches slid 2.3 m along the
 // held-out corridor with people (doc/benchmarks.md). IDC says the motion
-// along the corridor is unconstrained, and so PCM with its default fallback
+// along the corridor is unconstrained: PCM with its default fallback keeps
+// the guess along the corridor, with the guess's sigma, and the points'
+// answer across it (free_direction_from_guess), flagged; with that off it
 // fails, and the estimator keeps its prediction.
-TEST(ScanMatcherFallback, AlongABareCorridorPcmFailsWhereMrptIcpIsConfidentlyWrong)
+TEST(ScanMatcherFallback, AlongABareCorridorPcmKeepsTheGuessWhereMrptIcpIsConfidentlyWrong)
 {
 	const SyntheticRoom corridor = SyntheticRoom::corridor();
 	mrpt::random::CRandomGenerator rng(3);
@@ -224,6 +217,8 @@ TEST(ScanMatcherFallback, AlongABareCorridorPcmFailsWhereMrptIcpIsConfidentlyWro
 	const auto guess = diagonalPoseGaussian(CPose2D(0.4, 0, 0), 0.05, 0.02);
 	auto icp = fromIni("featloc::IcpMatcher", "");
 	auto pcm = fromIni("featloc::PcmFeatureMatcher", "");
+	auto pcmFailing = fromIni("featloc::PcmFeatureMatcher",
+		"[ScanMatcher.IdcMatcher]\nfree_direction_from_guess = false\n");
 	for (int trial = 0; trial < 5; trial++)
 	{
 		const auto ref = test::withRangeNoise(corridor.scan(CPose2D()), rng, 0.01);
@@ -233,11 +228,19 @@ TEST(ScanMatcherFallback, AlongABareCorridorPcmFailsWhereMrptIcpIsConfidentlyWro
 		EXPECT_GT(std::abs(i.estimate.mean.x() - truth.x()), 10 * std::sqrt(i.estimate.cov(0, 0)))
 			<< "MRPT's ICP at x = " << i.estimate.mean.x();
 		const MatchResult p = pcm->match(*ref, *cur, guess);
-		EXPECT_FALSE(p.success) << "PCM at x = " << p.estimate.mean.x();
-		EXPECT_NE(p.failureReason.find("the fallback featloc::IdcMatcher failed too: the paired "
+		ASSERT_TRUE(p.success) << p.failureReason;
+		EXPECT_TRUE(p.ambiguous);
+		EXPECT_TRUE(p.guessKeptAlongFreeDirection);
+		EXPECT_EQ(p.primaryFailure.rfind("featloc::PcmFeatureMatcher: ", 0), 0u) << p.primaryFailure;
+		EXPECT_NEAR(p.estimate.mean.x(), guess.mean.x(), 1e-3);
+		EXPECT_LT(std::abs(p.estimate.mean.x() - truth.x()), 3 * std::sqrt(p.estimate.cov(0, 0)));
+		EXPECT_LT(std::abs(p.estimate.mean.y() - truth.y()), 0.01);
+		const MatchResult f = pcmFailing->match(*ref, *cur, guess);
+		EXPECT_FALSE(f.success) << "PCM at x = " << f.estimate.mean.x();
+		EXPECT_NE(f.failureReason.find("the fallback featloc::IdcMatcher failed too: the paired "
 										"points leave the translation along direction (1.00, "),
 			std::string::npos)
-			<< p.failureReason;
+			<< f.failureReason;
 	}
 }
 
@@ -251,7 +254,7 @@ TEST(ScanMatcherFallback, AlongABareCorridorPcmFailsWhereMrptIcpIsConfidentlyWro
 TEST(ScanMatcherFallback, AnAmbiguousMatchIsReplacedByTheFallbacksUnambiguousOne)
 {
 	mrpt::obs::CObservation2DRangeScan ref, cur;
-	readPair("room-moving-objects-pair-388.rawlog", ref, cur);
+	test::readScanPair("room-moving-objects-pair-388.rawlog", ref, cur);
 	const CPose2D truth(0.08, 0, 0);
 	const double a = 1 / std::sqrt(3.0);  // a uniform draw's sigma
 	const auto guess = diagonalPoseGaussian(
@@ -293,7 +296,7 @@ TEST(ScanMatcherFallback, AnAmbiguousMatchIsReplacedByTheFallbacksUnambiguousOne
 TEST(ScanMatcherFallback, AnAmbiguousMatchStaysWhenTheFallbackIsNoBetter)
 {
 	mrpt::obs::CObservation2DRangeScan ref, cur;
-	readPair("corridor-people-pair-359.rawlog", ref, cur);
+	test::readScanPair("corridor-people-pair-359.rawlog", ref, cur);
 	const double a = 1 / std::sqrt(3.0);
 	const auto guess = diagonalPoseGaussian(
 		CPose2D(0.367847, -0.087563, 0.109263), 0.3 * a, mrpt::DEG2RAD(10.0) * a);
@@ -304,7 +307,9 @@ TEST(ScanMatcherFallback, AnAmbiguousMatchStaysWhenTheFallbackIsNoBetter)
 	ASSERT_TRUE(own.ambiguous);
 	auto idc = fromIni("featloc::IdcMatcher", "");
 	const MatchResult byIdc = idc->match(ref, cur, guess);
-	EXPECT_FALSE(byIdc.success);
+	// Flagged too: IDC keeps the guess along the corridor.
+	EXPECT_TRUE(byIdc.success && byIdc.ambiguous && byIdc.guessKeptAlongFreeDirection)
+		<< byIdc.failureReason;
 
 	auto pcm = fromIni("featloc::PcmFeatureMatcher", kBenchPcm);
 	const MatchResult r = pcm->match(ref, cur, guess);

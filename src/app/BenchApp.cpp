@@ -301,6 +301,7 @@ nlohmann::json toJson(const ScanPairBenchmark::Result& r)
 		{"fallback_matcher_matches", r.fallbackMatches},
 		{"fallback_matcher_successes", r.fallbackSuccesses},
 		{"coarse_search_skipped", r.searchSkipped},
+		{"guess_kept_along_free_direction", r.guessKeptAlongFreeDirection},
 		{"success_rate", r.successRate()}, {"mae_x_m", r.maeX}, {"mae_y_m", r.maeY},
 		{"mae_yaw_deg", mrpt::RAD2DEG(r.maeYaw)}, {"mean_trans_err_m", r.meanTrans},
 		{"median_trans_err_m", r.medianTrans}, {"p95_trans_err_m", r.p95Trans},
@@ -530,6 +531,12 @@ int BenchApp::main(int argc, char** argv)
 						"iterations from the guess put coarse_confirm_share of the points on the "
 						"reference\n",
 				r.matcher.c_str(), r.searchSkipped, r.pairs);
+	for (const auto& r : results)
+		if (r.guessKeptAlongFreeDirection > 0)
+			std::printf("\n%s: %zu of %zu pairs kept the guess along the one direction their points "
+						"left free (free_direction_from_guess; counted above as flagged, at the "
+						"error of what they used)\n",
+				r.matcher.c_str(), r.guessKeptAlongFreeDirection, r.pairs);
 	if (argWorld.isSet()) printWorldTables(name, results);
 	if (argBasin.isSet())
 	{

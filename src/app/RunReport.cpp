@@ -128,6 +128,10 @@ void RunReport::printSummary(const RunStats& s)
 			std::printf("    %zu without the coarse search: the points confirmed the iterations from "
 						"the guess (coarse_confirm_share)\n",
 				s.coarseSearchSkipped);
+		if (s.guessKeptAlongFreeDirection)
+			std::printf("    %zu kept the guess along the one direction their points left free, as "
+						"along a corridor (free_direction_from_guess; used, flagged ambiguous)\n",
+				s.guessKeptAlongFreeDirection);
 		for (const auto& ex : s.failureExamples) std::printf("    failed: %s\n", ex.c_str());
 		for (const auto& ex : s.rejectionExamples) std::printf("    not used: %s\n", ex.c_str());
 	}

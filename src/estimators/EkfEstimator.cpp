@@ -2,6 +2,7 @@
 
 #include <mrpt/obs/CObservationStereoImages.h>
 
+#include <Eigen/Core>
 #include <cmath>
 
 #include "featloc/estimators/StereoStepResult.h"
@@ -11,6 +12,13 @@
 namespace featloc
 {
 IMPLEMENTS_MRPT_OBJECT(EkfEstimator, PoseEstimator, featloc)
+
+namespace
+{
+/** [m^2 or rad^2] What a match's direction taken from the guess adds to
+ * its covariance before fusion: no information there. */
+constexpr double kFreeDirectionVariance = 1e4;
+}  // namespace
 
 void EkfEstimator::loadParams(const mrpt::config::CConfigFileBase& cfg)
 {
@@ -39,6 +47,14 @@ bool EkfEstimator::process(const EstimationStep& step, const MatchResult* match)
 	{
 		mrpt::poses::CPosePDFGaussian z = match->estimate;
 		z.cov *= m_filter.options.matcher_covariance_scale;
+		if (match->guessKeptAlongFreeDirection)
+		{
+			// Along the direction the scans left free the match is the
+			// guess, which is this filter's own odometry: fused again it
+			// would count twice. The filter keeps its prediction there.
+			const Eigen::Vector3d w = match->freeDirection.asEigen();
+			z.cov += mrpt::math::CMatrixDouble33(Eigen::Matrix3d(kFreeDirectionVariance * w * w.transpose()));
+		}
 		// Gated against the state without this keyframe's earlier matches:
 		// they measured (nearly) the same thing, with (nearly) the same
 		// error, so only the latest accepted one is held for fusion.

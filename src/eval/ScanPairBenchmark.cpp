@@ -105,6 +105,7 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			a.iterations += r.iterations;
 			if (!r.matcherFallback.empty()) res[m].matcherFallbacks++;
 			if (r.confirmedShare > 0) res[m].searchSkipped++;
+			if (r.guessKeptAlongFreeDirection) res[m].guessKeptAlongFreeDirection++;
 			if (!r.primaryFailure.empty())
 			{
 				res[m].fallbackMatches++;

@@ -376,6 +376,7 @@ void CfIdcMatcher::matchPoints(
 	result.iterations = r.iterations;
 	result.estimate.mean = mrpt::poses::CPose2D(r.estimate);
 	result.estimate.cov = r.cov;
+	result.freeDirection = r.freeDirection;
 	result.goodness = current.empty()
 		? 0.0
 		: static_cast<double>(r.pairs) / static_cast<double>(current.size());

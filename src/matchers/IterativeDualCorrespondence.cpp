@@ -414,5 +414,14 @@ void IterativeDualCorrespondence::run(
 	r.cov *= params.covariance_inflation;
 	r.failureReason = check.tooUncertain(r.cov);
 	r.success = r.failureReason.empty();
+	if (r.success) return;
+	// Is it one direction only? The covariance the estimate would have if
+	// its position along the most uncertain direction w were known is
+	// C - C w w^T C / (w^T C w); if that passes, the pairs fix the rest.
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(r.cov);
+	const Eigen::Vector3d w = eig.eigenvectors().col(2);
+	const Eigen::Vector3d Cw = r.cov * w;
+	if (check.tooUncertain(r.cov - Cw * Cw.transpose() / w.dot(Cw)).empty())
+		r.freeDirection = w;
 }
 }  // namespace featloc

@@ -102,13 +102,14 @@ bool PointToLineCovariance::compute(
 	information = H;
 	if (pairs.size() < 3) return false;
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(H);
-	if (eig.eigenvalues()[0] <= 1e-12 * std::max(1.0, eig.eigenvalues()[2])) return false;
+	const double singular = 1e-12 * std::max(1.0, eig.eigenvalues()[2]);
+	if (eig.eigenvalues()[1] <= singular) return false;
 	// What is left along the weakest direction must stand out of what the
 	// normals' noise invents by chance (its expectation is taken out, its
 	// scatter is not): else that direction is unconstrained, as along a
-	// corridor's noisy walls.
+	// corridor's noisy walls, or exactly singular, as along ideal ones.
 	const Eigen::Vector3d weakest = eig.eigenvectors().col(0);
-	const bool unconstrained =
+	const bool unconstrained = eig.eigenvalues()[0] <= singular ||
 		eig.eigenvalues()[0] < kInventedMargin * weakest.dot(invented * weakest);
 	Eigen::Vector3d inverse = eig.eigenvalues().cwiseInverse();
 	if (unconstrained)

@@ -1,6 +1,7 @@
 #include "featloc/matchers/ScanMatcher.h"
 
 #include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/system/string_utils.h>
@@ -43,6 +44,7 @@ void ScanMatcher::loadParams(
 	config::read(cfg, section, "fallback_class", m_fallbackClass);
 	m_fallbackClass = mrpt::system::trim(m_fallbackClass);
 	config::read(cfg, section, "fallback_on_ambiguity", m_fallbackOnAmbiguity);
+	config::read(cfg, section, "free_direction_from_guess", m_freeDirectionFromGuess);
 	m_fallback.reset();
 	m_followFallback = followFallback;
 	if (followFallback && !m_fallbackClass.empty())
@@ -74,6 +76,9 @@ void ScanMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::stri
 	config::write(cfg, section, "fallback_on_ambiguity", m_fallbackOnAmbiguity,
 		"an ambiguous match (flagged) goes to the fallback too; the fallback's result "
 		"replaces it when it is a success that is not ambiguous");
+	config::write(cfg, section, "free_direction_from_guess", m_freeDirectionFromGuess,
+		"a match that fails only because its points leave one direction free (a corridor) "
+		"keeps the guess along it and the match across it, flagged ambiguous");
 	saveOwnParams(cfg, section);
 }
 
@@ -153,6 +158,19 @@ MatchResult ScanMatcher::match(
 
 	r.estimate.changeCoordinatesReference(s1);
 	r.estimate += mrpt::poses::CPose2D() - s2;
+	if (r.freeDirection.asEigen().squaredNorm() > 0)
+	{
+		// The direction as the estimate's covariance goes: through the
+		// Jacobians of both compositions (a lever arm turns a rotation
+		// into a translation too).
+		mrpt::poses::CPosePDFGaussian along(sensorEstimate,
+			mrpt::math::CMatrixDouble33(
+				r.freeDirection.asEigen() * r.freeDirection.asEigen().transpose()));
+		along.changeCoordinatesReference(s1);
+		along += mrpt::poses::CPose2D() - s2;
+		const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(along.cov.asEigen());
+		r.freeDirection = eig.eigenvectors().col(2);
+	}
 	r.gateAllowance = gateAllowance;
 	r.guess = initialGuess;
 	r.referenceTime = reference.timestamp;
@@ -270,7 +288,42 @@ MatchResult ScanMatcher::matchInSensorFrames(
 		matchPoints(reference, current, initialGuess, r);
 	// Every failure has a kind; the matcher's own reasons are "matcher".
 	if (!r.success && r.failureKind.empty()) r.failureKind = "matcher";
+	if (!r.success && r.failureKind == "matcher" && m_freeDirectionFromGuess &&
+		r.freeDirection.asEigen().squaredNorm() > 0)
+		keepGuessAlongFreeDirection(window, r);
+	else if (!r.success)
+		r.freeDirection = mrpt::math::CVectorFixedDouble<3>();
 	return r;
+}
+
+void ScanMatcher::keepGuessAlongFreeDirection(
+	const mrpt::poses::CPosePDFGaussian& window, MatchResult& r)
+{
+	// Along a corridor the scans fix the heading and the cross-track
+	// position, not where along it: failing the whole match would throw
+	// the two away with the third (a failure is counted, and used, at the
+	// guess's error). The guess is one scalar measurement along w, of the
+	// guess's own variance there; the matcher's estimate carries next to
+	// no information along w (kUnconstrainedVariance, or a sigma beyond
+	// max_translation_sigma), so the update takes the guess's position
+	// there and leaves the rest as the matcher had it, with the
+	// covariance what the guess knows along w and the points across it.
+	const Eigen::Vector3d w = r.freeDirection.asEigen().normalized();
+	const Eigen::Matrix3d C = r.estimate.cov.asEigen();
+	const Eigen::Vector3d Cw = C * w;
+	const double innovation = w.dot(poseDifference(window.mean, r.estimate.mean));
+	const double S = w.dot(Cw) + w.dot(window.cov.asEigen() * w);
+	const Eigen::Vector3d step = Cw * (innovation / S);
+	const mrpt::poses::CPose2D& x = r.estimate.mean;
+	r.estimate.mean = mrpt::poses::CPose2D(
+		x.x() + step[0], x.y() + step[1], mrpt::math::wrapToPi(x.phi() + step[2]));
+	r.estimate.cov = mrpt::math::CMatrixDouble33(Eigen::Matrix3d(C - Cw * Cw.transpose() / S));
+	r.success = true;
+	r.ambiguous = true;
+	r.guessKeptAlongFreeDirection = true;
+	r.ambiguityReason = r.failureReason + ": the guess is kept along it (free_direction_from_guess)";
+	r.failureReason.clear();
+	r.failureKind.clear();
 }
 
 bool ScanMatcher::matchConfirmedFromGuess(const ScanPoints& reference,

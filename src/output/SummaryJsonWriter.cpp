@@ -44,6 +44,7 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"fallback_matcher_matches", s.fallbackMatcherMatches},
 		{"fallback_matcher_successes", s.fallbackMatcherSuccesses},
 		{"coarse_search_skipped", s.coarseSearchSkipped},
+		{"guess_kept_along_free_direction", s.guessKeptAlongFreeDirection},
 		{"fallbacks_to_odometry", s.fallbacks},
 		{"ignored_observations", s.ignoredObservations}};
 	if (s.stereoFrames)

@@ -266,6 +266,7 @@ void Pipeline::processStep(
 			if (!match.guessGateOverruled.empty()) stats.guessGateOverruled++;
 			if (!match.matcherFallback.empty()) stats.matcherFallbacks++;
 			if (match.confirmedShare > 0) stats.coarseSearchSkipped++;
+			if (match.guessKeptAlongFreeDirection) stats.guessKeptAlongFreeDirection++;
 			if (!match.primaryFailure.empty())
 			{
 				stats.fallbackMatcherMatches++;

@@ -1,6 +1,8 @@
 #include "MatcherTestHelpers.h"
 
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include "featloc/matchers/ScanMatcherFactory.h"
 #include "featloc/registerClasses.h"
@@ -25,5 +27,13 @@ mrpt::obs::CObservation2DRangeScan::Ptr withRangeNoise(
 			s->setScanRange(
 				i, s->getScanRange(i) + static_cast<float>(sigma * rng.drawGaussian1D_normalized()));
 	return s;
+}
+
+void readScanPair(const std::string& file, mrpt::obs::CObservation2DRangeScan& reference,
+	mrpt::obs::CObservation2DRangeScan& current)
+{
+	mrpt::io::CFileGZInputStream in(std::string(FEATLOC_SOURCE_DIR) + "/tests/data/" + file);
+	auto ar = mrpt::serialization::archiveFrom(in);
+	ar >> reference >> current;
 }
 }  // namespace featloc::test

@@ -16,4 +16,9 @@ ScanMatcher::Ptr configuredMatcher(const std::string& cls, const std::string& ov
 mrpt::obs::CObservation2DRangeScan::Ptr withRangeNoise(
 	mrpt::obs::CObservation2DRangeScan::Ptr scan, mrpt::random::CRandomGenerator& rng,
 	double sigma);
+
+/** The two scans of a pair featloc-bench matched, saved in tests/data
+ * (`file` is the name there). */
+void readScanPair(const std::string& file, mrpt::obs::CObservation2DRangeScan& reference,
+	mrpt::obs::CObservation2DRangeScan& current);
 }  // namespace featloc::test

@@ -106,6 +106,10 @@ class ScanPairBenchmark
 		/** Pairs whose coarse search was skipped: the points confirmed the
 		 * iterations from the guess (MatchResult::confirmedShare). */
 		size_t searchSkipped = 0;
+		/** Pairs whose match kept the guess along the one direction its
+		 * points left free (MatchResult::guessKeptAlongFreeDirection; also
+		 * in ambiguousUsed). */
+		size_t guessKeptAlongFreeDirection = 0;
 		size_t silentGross = 0;	 //!< other successes off by > grossTrans or > grossYaw
 		/** Over every pair (failures at the guess's error). */
 		double maeX = 0, maeY = 0, maeYaw = 0;	//!< [m], [m], [rad]

@@ -135,6 +135,11 @@ class IterativeDualCorrespondence
 		unsigned int iterations = 0;
 		size_t pairs = 0;  //!< closest-point pairs at the end
 		double rangeSigma = 0;	//!< noise estimated for the covariance [m]
+		/** On a failure because the pairs leave one direction
+		 * unconstrained while they fix the other two (a corridor): that
+		 * direction (unit, x y yaw; the largest of `cov`), for
+		 * ScanMatcher's free_direction_from_guess. Zero otherwise. */
+		Eigen::Vector3d freeDirection = Eigen::Vector3d::Zero();
 	};
 
 	IterativeDualCorrespondence() = default;

@@ -1,5 +1,6 @@
 #pragma once
 #include <mrpt/core/Clock.h>
+#include <mrpt/math/CVectorFixed.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
 
 #include <cstddef>
@@ -43,6 +44,18 @@ struct MatchResult
 	 * match across it. Counted as flagged, not as a silent error. */
 	bool ambiguous = false;
 	std::string ambiguityReason;
+	/** Set by the matcher on a failure whose only cause is one direction
+	 * its points leave free while they fix the other two (a corridor): that
+	 * direction (unit; x, y, yaw). ScanMatcher's free_direction_from_guess
+	 * then keeps the guess along it and makes the result a flagged success
+	 * (`ambiguous`, `guessKeptAlongFreeDirection`); in the robot frame once
+	 * ScanMatcher::match returns. Zero otherwise. */
+	mrpt::math::CVectorFixedDouble<3> freeDirection;
+	/** The estimate along `freeDirection` is the guess's (fused with the
+	 * little the points say along it), across it the matcher's, and the
+	 * covariance along it the guess's: a filter whose prediction is that
+	 * guess keeps its prediction there (EkfEstimator). */
+	bool guessKeptAlongFreeDirection = false;
 	/** Non-empty when the matcher took its own fallback and why (CF-IDC:
 	 * the curvature pairing kept under a third of the points, so IDC
 	 * started from every segment). Counted by summary.json and

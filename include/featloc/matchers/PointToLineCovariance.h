@@ -68,11 +68,13 @@ class PointToLineCovariance
 	 * kInventedMargin times that invented information, or it counts as
 	 * unconstrained.
 	 *
-	 * The covariance of such a direction is kUnconstrainedVariance (the
-	 * caller's max_translation_sigma test then names it), the other two
-	 * directions keep theirs; `information` has its eigenvalue zeroed.
-	 * False when H is singular (the pairs do not constrain the motion);
-	 * `information` receives H either way. */
+	 * The covariance of such a direction, or of the one direction along
+	 * which H is singular (ideal walls of a corridor), is
+	 * kUnconstrainedVariance (the caller's max_translation_sigma test then
+	 * names it), the other two directions keep theirs; `information` has
+	 * its eigenvalue zeroed. False when H is singular in two directions or
+	 * more (the pairs do not constrain the motion); `information` receives
+	 * H either way. */
 	static constexpr double kInventedMargin = 2.0;
 	static constexpr double kUnconstrainedVariance = 1e4;  //!< [m^2 or rad^2]
 	static bool compute(

@@ -155,6 +155,13 @@ class ScanMatcher : public mrpt::rtti::CObject
 	void matchFromCoarseSearch(const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPosePDFGaussian& window, MatchResult& r);
 
+	/** free_direction_from_guess: a match that failed only because the
+	 * points leave one direction free (MatchResult::freeDirection, a
+	 * corridor) takes the guess's position along it, fused with the
+	 * little the points say there as one scalar Kalman update, and the
+	 * matcher's across it; it becomes a success flagged ambiguous. */
+	static void keepGuessAlongFreeDirection(
+		const mrpt::poses::CPosePDFGaussian& window, MatchResult& r);
 	/** A guess-gate rejection (r.rejectedByGuessGate) put to the scans:
 	 * the odometry can be wrong by more than its covariance (a reading
 	 * taken long before the scan), and then the gate throws a good match
@@ -172,6 +179,7 @@ class ScanMatcher : public mrpt::rtti::CObject
 	std::shared_ptr<ScanMatcher> m_fallback;
 	bool m_followFallback = true;  //!< false for a fallback itself
 	bool m_fallbackOnAmbiguity = true;	//!< `fallback_on_ambiguity`
+	bool m_freeDirectionFromGuess = true;	 //!< `free_direction_from_guess`
 	bool m_lastMatchByFallback = false;	 //!< for inspectLastMatch()
 	void checkAgainstGuess(const mrpt::poses::CPosePDFGaussian& guess, MatchResult& r) const;
 };

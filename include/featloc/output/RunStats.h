@@ -66,6 +66,10 @@ struct RunStats
 	/** Matches whose coarse search was skipped: the points confirmed the
 	 * iterations from the guess (MatchResult::confirmedShare). */
 	size_t coarseSearchSkipped = 0;
+	/** Matches that kept the guess along the one direction their points
+	 * left free (MatchResult::guessKeptAlongFreeDirection; also counted in
+	 * ambiguousMatches). */
+	size_t guessKeptAlongFreeDirection = 0;
 	size_t fallbacks = 0;  //!< steps where the estimator used odometry
 	/** A few failure examples: "scan 123: reason". */
 	std::vector<std::string> failureExamples;
