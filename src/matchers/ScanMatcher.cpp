@@ -145,6 +145,10 @@ MatchResult ScanMatcher::match(
 		g += s2;
 		return g;
 	};
+	auto toRobotFrames = [&](mrpt::poses::CPosePDFGaussian& g) {
+		g.changeCoordinatesReference(s1);
+		g += mrpt::poses::CPose2D() - s2;
+	};
 	// The coarse search's window also covers what the gate allows for.
 	mrpt::poses::CPosePDFGaussian window = initialGuess;
 	window.cov += gateAllowance;
@@ -156,8 +160,7 @@ MatchResult ScanMatcher::match(
 		matchInSensorFrames(refPoints, curPoints, toSensorFrames(initialGuess), sensorWindow);
 	const mrpt::poses::CPose2D sensorEstimate = r.estimate.mean;
 
-	r.estimate.changeCoordinatesReference(s1);
-	r.estimate += mrpt::poses::CPose2D() - s2;
+	toRobotFrames(r.estimate);
 	if (r.freeDirection.asEigen().squaredNorm() > 0)
 	{
 		// The direction as the estimate's covariance goes: through the
@@ -166,8 +169,7 @@ MatchResult ScanMatcher::match(
 		mrpt::poses::CPosePDFGaussian along(sensorEstimate,
 			mrpt::math::CMatrixDouble33(
 				r.freeDirection.asEigen() * r.freeDirection.asEigen().transpose()));
-		along.changeCoordinatesReference(s1);
-		along += mrpt::poses::CPose2D() - s2;
+		toRobotFrames(along);
 		const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(along.cov.asEigen());
 		r.freeDirection = eig.eigenvectors().col(2);
 	}
