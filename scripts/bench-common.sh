@@ -67,6 +67,26 @@ bench_held_out_radish_logs() { # [suffix]
     echo "(no real logs: $LASER2D not found)"
   fi
 }
+# Where a bench table named NAME keeps its files: $OUT/NAME with " /+()"
+# turned into "_", without extension.
+bench_file() { echo "$OUT/$(echo "$1" | tr " /+()" "_____")"; }
+# One featloc-bench run of the caller's $M on DATA, with its $COMMON options
+# and $HEADER, its JSON as "$(bench_file NAME).json". The caller clears
+# HEADER after the first table (not here: piped, this runs in a subshell).
+bench_run() { # name, data, extra args...
+  local name="$1" data="$2"
+  shift 2
+  # shellcheck disable=SC2086
+  "$BIN/featloc-bench" "$ROOT/config.ini" "$data" $COMMON -m "$M" $HEADER \
+    --name "$name" "$@" -j "$(bench_file "$name").json"
+}
+# Keeps featloc-bench's main table (its header and rows; not --world's
+# Cramer-Rao and moved-points tables) and the note lines that match the
+# awk regex NOTES.
+main_table() { # [notes]
+  awk -F'|' -v notes="${1:-}" \
+    '/^\| data \| matcher \| pairs \| flagged/ || (NF == 13 && !/pairs with a bound/) || (notes != "" && $0 ~ notes)'
+}
 # featloc-sim's log of worlds/SCENE.ini with 1 cm range noise, as
 # $OUT/SCENE-1cm.rawlog (+ .gt.txt): the static calibration scenes; with a
 # SEED, that seed's path as $OUT/SCENE-seedSEED.rawlog (whole runs).

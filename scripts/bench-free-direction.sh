@@ -28,21 +28,17 @@ M="PCM (config.ini)=$PCM,IDC (config.ini)=$IDC,IDC failing there=$IDC{$OFF}"
 M="$M,CF-IDC (config.ini)=$CF,CF-IDC failing there=$CF{$OFF},IcpMatcher (MRPT)=featloc::IcpMatcher"
 COMMON="--set ScanMatcher.PcmFeatureMatcher:initial_bounds_source=config --seed 1 -q"
 HEADER=--header
-rows() { # the main table's rows and the notes on kept guesses
-  awk -F'|' '/^\| data \| matcher \| pairs \| flagged/ || (NF == 13 && !/pairs with a bound/) || /kept the guess along/'
-}
+NOTES="kept the guess along"  # main_table: the notes on kept guesses
 bench() { # name, data, extra args...
   local name="$1" data="$2" file
   shift 2
-  file="$OUT/$(echo "$name" | tr " /+()" "_____")"
-  # shellcheck disable=SC2086
-  "$BIN/featloc-bench" "$ROOT/config.ini" "$data" $COMMON -m "$M" $HEADER \
-    --name "$name" "$@" -j "$file.json" --pairs "$file.pairs.tsv" | rows
+  file="$(bench_file "$name")"
+  bench_run "$name" "$data" "$@" --pairs "$file.pairs.tsv" | main_table "$NOTES"
   HEADER=
   # shellcheck disable=SC2086
   "$BIN/featloc-bench" "$ROOT/config.ini" "$data" $COMMON \
     -m "PCM (IDC fallback failing there)=$PCM" --set "ScanMatcher.IdcMatcher:$OFF" \
-    --name "$name" "$@" -j "$file.pcm-off.json" | rows
+    --name "$name" "$@" -j "$file.pcm-off.json" | main_table "$NOTES"
 }
 
 machine_line

@@ -25,11 +25,7 @@ M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
 COMMON="--set ScanMatcher.PcmFeatureMatcher:initial_bounds_source=config --seed 1 -q"
 HEADER=--header
 bench() { # name, data, extra args...
-  local name="$1" data="$2"; shift 2
-  # shellcheck disable=SC2086
-  "$BIN/featloc-bench" "$ROOT/config.ini" "$data" $COMMON -m "$M" $HEADER \
-    --name "$name" "$@" -j "$OUT/$(echo "$name" | tr " /+()" "_____").json" \
-    | awk -F'|' '/^\| data \| matcher \| pairs \| flagged/ || (NF == 13 && !/pairs with a bound/)'  # the main table only (--world adds the bound's and moved points')
+  bench_run "$@" | main_table
   HEADER=
 }
 

@@ -33,9 +33,7 @@ done
 COMMON="--set ScanMatcher.PcmFeatureMatcher:initial_bounds_source=config --seed 1 -q"
 HEADER=--header
 bench() { # name, data, extra args...
-  local name="$1" data="$2"; shift 2
-  "$BIN/featloc-bench" "$ROOT/config.ini" "$data" $COMMON -m "$M" $HEADER \
-    --name "$name" "$@" -j "$OUT/$(echo "$name" | tr " /+()" "_____").json"
+  bench_run "$@"
   HEADER=
 }
 

@@ -26,12 +26,8 @@ M="$M,CF-IDC (config.ini)=$CF,CF-IDC search always=$CF{coarse_confirm_share=0}"
 M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
 COMMON="--set ScanMatcher.PcmFeatureMatcher:initial_bounds_source=config --seed 1 -q"
 HEADER=--header
-bench() { # name, data, extra args...
-  local name="$1" data="$2"; shift 2
-  # shellcheck disable=SC2086
-  "$BIN/featloc-bench" "$ROOT/config.ini" "$data" $COMMON -m "$M" $HEADER \
-    --name "$name" "$@" -j "$OUT/$(echo "$name" | tr " /+()" "_____").json" \
-    | awk -F'|' '/^\| data \| matcher \| pairs \| flagged/ || (NF == 13 && !/pairs with a bound/) || /coarse search was skipped/'  # the main table and the skip counts
+bench() { # name, data, extra args...: the main table and the skip counts
+  bench_run "$@" | main_table "coarse search was skipped"
   HEADER=
 }
 
@@ -55,8 +51,7 @@ for run in 1 2 3; do
   # shellcheck disable=SC2086
   "$BIN/featloc-bench" "$ROOT/config.ini" "$OUT/office-1cm.rawlog" -g "$OUT/office-1cm.gt.txt" \
     $COMMON -m "PCM (config.ini)=$PCM,IcpMatcher (MRPT)=featloc::IcpMatcher" $HEADER \
-    --name "sim office (1 cm), run $run" --perturb-xy 0.3 --perturb-yaw-deg 10 \
-    | awk -F'|' '/^\| data \| matcher \| pairs \| flagged/ || (NF == 13 && !/pairs with a bound/)'
+    --name "sim office (1 cm), run $run" --perturb-xy 0.3 --perturb-yaw-deg 10 | main_table
   HEADER=
 done
 echo
