@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "featloc/eval/TrajectoryFile.h"
+#include "featloc/io/MatchTableFile.h"
 #include "featloc/io/RawlogReader.h"
 #include "featloc/registerClasses.h"
 #include "support/CommandRunner.h"
@@ -114,6 +115,14 @@ TEST(EkfApp, AlongACorridorKeepingTheGuessOnlyWhereThePointsLeaveItFreeHelps)
 	{
 		const double kept = ate(p, estimator, idc);
 		const auto s = readJson(p + "-" + estimator + "/summary.json")["counts"];
+		// matches.txt says which used matches kept the guess, and why.
+		int keptRows = 0;
+		for (const auto& row : MatchTableFile::read(p + "-" + estimator + "/matches.txt"))
+			if (row.status == "ok" &&
+				row.reason.find("ambiguous: ") != std::string::npos &&
+				row.reason.find("the guess is kept along it") != std::string::npos)
+				keptRows++;
+		EXPECT_EQ(keptRows, s["guess_kept_along_free_direction"].get<int>());
 		const double failed = ate(p, estimator, idc + off);
 		const auto sOff = readJson(p + "-" + estimator + "/summary.json")["counts"];
 		// Measured: matcher 5.6 against 17.3 mm, ekf 4.3 against 10.0 mm.

@@ -22,16 +22,25 @@ void MatchTableWriter::onStep(const StepRecord& r)
 	const bool overruled = !m.guessGateOverruled.empty();
 	const char* status = m.success ? (overruled ? "overruled" : "ok")
 								   : m.rejectedByGuessGate ? "gate" : "failed";
-	// An overruled gate's reason comes first; the estimator's, if it did
-	// not use the match, after it.
-	std::string reason = m.success ? r.fallbackReason : m.failureReason;
-	if (overruled)
-		reason = m.guessGateOverruled + (reason.empty() ? "" : "; not used: " + reason);
-	// A success of the fallback matcher says so, and why the configured
-	// matcher gave up (a failure's reason already names both).
-	if (m.success && !m.primaryFailure.empty())
-		reason = "made by the fallback matcher after " + m.primaryFailure +
-			(reason.empty() ? "" : "; not used: " + reason);
+	// A failure says why. A success says what is to be known about it, in
+	// this order: the guess gate the scans overruled, that the fallback
+	// matcher made it and why the configured one gave up, why it is
+	// flagged (ambiguous: its covariance inflated, or the guess kept along
+	// a free direction), and why the estimator did not use it.
+	std::string reason = m.failureReason;
+	if (m.success)
+	{
+		reason.clear();
+		auto add = [&reason](const std::string& part) {
+			reason += (reason.empty() ? "" : "; ") + part;
+		};
+		if (overruled) add(m.guessGateOverruled);
+		if (!m.primaryFailure.empty())
+			add("made by the fallback matcher after " + m.primaryFailure);
+		if (m.ambiguous) add("ambiguous: " + m.ambiguityReason);
+		if (!r.fallbackReason.empty())
+			add(reason.empty() ? r.fallbackReason : "not used: " + r.fallbackReason);
+	}
 	const auto& g = m.guess.mean;
 	const auto& e = m.estimate.mean;
 	std::string row(4096, '\0');

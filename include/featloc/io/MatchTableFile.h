@@ -23,8 +23,10 @@ namespace featloc
  * used: 1 if the estimator used it; poses are robot-frame motions from the
  * reference scan (m, rad), c_ the estimate's covariance, g_ the guess's,
  * a_ the gate allowance added to the guess's (ScanMatcher::match); reason: the
- * failure, the overruled gate's and the evidence, or the estimator's gate
- * reason, to the end of the line ('-': none). */
+ * failure, the overruled gate's and the evidence, a fallback matcher's
+ * success and why the configured matcher gave up, a flagged success's
+ * ambiguity ("ambiguous: ..."), or the estimator's gate reason ("not used:
+ * ..."), to the end of the line ('-': none). */
 class MatchTableFile
 {
    public:
