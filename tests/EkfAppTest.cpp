@@ -135,6 +135,24 @@ TEST(EkfApp, AlongACorridorKeepingTheGuessOnlyWhereThePointsLeaveItFreeHelps)
 	}
 }
 
+// After the turn at the corridor's far end, PCM took matches 0.3-0.4 m off
+// along the corridor with a sigma of centimetres there; odometry's was
+// millimetres. Its guess gate (IDC's test) rejects them, IDC takes them
+// over, and the matcher chain stays on the path.
+TEST(EkfApp, PcmsGuessGateKeepsTheCorridorChainOnThePath)
+{
+	TempDir dir;
+	const std::string p =
+		simulate(dir, "corridor-people.ini", "--seed 4 --set Simulation:max_scans=400");
+	const std::string pcm = "--set ScanMatcher:class=featloc::PcmFeatureMatcher ";
+	const double gated = ate(p, "matcher", pcm);
+	const double ungated =
+		ate(p, "matcher", pcm + "--set ScanMatcher.PcmFeatureMatcher:guess_gate_chi2=0");
+	// Measured: 20 against 130 mm.
+	EXPECT_LT(gated, 0.5 * ungated);
+	EXPECT_LT(gated, 0.05);
+}
+
 // A loop around the lab's tables: ICP reports success on a few wrong
 // matches there (the matcher estimator ends metres off); the filter's gate
 // rejects them and the loop closes within centimetres.

@@ -14,7 +14,8 @@ using mrpt::poses::CPose2D;
 
 namespace
 {
-const char* kGatedMatchers[] = {"featloc::IdcMatcher", "featloc::CfIdcMatcher"};
+const char* kGatedMatchers[] = {
+	"featloc::PcmFeatureMatcher", "featloc::IdcMatcher", "featloc::CfIdcMatcher"};
 
 double translationError(const CPose2D& a, const CPose2D& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
 double yawErrorDeg(const CPose2D& a, const CPose2D& b)
@@ -30,7 +31,9 @@ bool right(const MatchResult& r, const CPose2D& truth)
 // Odometry wrong by far more than its covariance (a reading taken long
 // before the scan): the guess gate rejects the converged match, and the
 // scans overrule it, because they fix the motion and reject the guess.
-// With coarse_overrule_guess_z = 0 the gate decides alone.
+// With coarse_overrule_guess_z = 0 the gate decides alone (and no fallback
+// matcher, PCM's IDC, takes the rejected match over); with
+// guess_gate_chi2 = 0 there is no gate.
 TEST(GuessGateArbiter, AGoodMatchFromAWrongGuessIsOverruledInARoom)
 {
 	const SyntheticRoom room = SyntheticRoom::office();
@@ -48,12 +51,18 @@ TEST(GuessGateArbiter, AGoodMatchFromAWrongGuessIsOverruledInARoom)
 		EXPECT_NE(r.guessGateOverruled.find("guess_gate_chi2"), std::string::npos)
 			<< cls << ": " << r.guessGateOverruled;
 		EXPECT_NE(r.guessGateOverruled.find("overruled"), std::string::npos) << cls;
-		const MatchResult g =
-			test::configuredMatcher(cls, "coarse_overrule_guess_z=0")->match(*ref, *cur, guess);
+		const MatchResult g = test::configuredMatcher(cls, "coarse_overrule_guess_z=0\nfallback_class=")
+								  ->match(*ref, *cur, guess);
 		EXPECT_FALSE(g.success) << cls;
 		EXPECT_TRUE(g.rejectedByGuessGate) << cls;
 		EXPECT_EQ(g.failureKind, "guess_gate") << cls;
 		EXPECT_TRUE(g.guessGateOverruled.empty()) << cls;
+		const MatchResult n =
+			test::configuredMatcher(cls, "coarse_overrule_guess_z=0\nfallback_class=\nguess_gate_chi2=0")
+				->match(*ref, *cur, guess);
+		EXPECT_TRUE(n.success) << cls << ": " << n.failureReason;
+		EXPECT_FALSE(n.rejectedByGuessGate) << cls;
+		EXPECT_TRUE(right(n, motion)) << cls << ": " << n.estimate.mean;
 	}
 }
 

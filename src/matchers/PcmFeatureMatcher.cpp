@@ -110,6 +110,8 @@ void PcmFeatureMatcher::Parameters::loadFromConfigFile(
 	readChoice(c, s, "dmax_corners", dmax_corners, {"all", "published"});
 	read(c, s, "motion_window_bounds", motion_window_bounds);
 	require(motion_window_bounds >= 0, c, s, "motion_window_bounds", ">= 0 (0: no window)");
+	read(c, s, "guess_gate_chi2", guess_gate_chi2);
+	require(guess_gate_chi2 >= 0, c, s, "guess_gate_chi2", ">= 0 (0 disables it)");
 	read(c, s, "min_matched_features", min_matched_features);
 	read(c, s, "max_translation_sigma", max_translation_sigma);
 	readDegrees(c, s, "max_rotation_sigma_DEG", max_rotation_sigma);
@@ -153,6 +155,9 @@ void PcmFeatureMatcher::Parameters::saveToConfigFile(
 	write(c, s, "motion_window_bounds", motion_window_bounds,
 		"the estimate stays within this many Delta_0 of the guess: rotation candidates "
 		"outside are dropped, an estimate outside fails (0: neither, as published)");
+	write(c, s, "guess_gate_chi2", guess_gate_chi2,
+		"failure when the estimate's Mahalanobis^2 from the initial guess exceeds this "
+		"(21.1: 99.99% for 3 dof; 0 = off, as published)");
 	write(c, s, "min_matched_features", min_matched_features,
 		"failure below this many matched current features");
 	write(c, s, "max_translation_sigma", max_translation_sigma,

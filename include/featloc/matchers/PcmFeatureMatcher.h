@@ -95,6 +95,12 @@ class PcmFeatureMatcher : public ScanMatcher
 		 * not considered (a pi - w flip won once in a symmetric room), and
 		 * an estimate outside it fails. 0: neither, as published. */
 		double motion_window_bounds = 2.0;
+		/** featloc: failure when the estimate's Mahalanobis^2 from the
+		 * initial guess exceeds this (ScanMatcher::guessGateChi2, as IDC's):
+		 * along a corridor PCM took estimates 0.3-0.4 m from odometry with
+		 * a sigma of centimetres there (doc/pcm-matcher.md). 0: off, as
+		 * published. */
+		double guess_gate_chi2 = 21.1;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& c,
@@ -123,6 +129,7 @@ class PcmFeatureMatcher : public ScanMatcher
 		const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPosePDFGaussian& initialGuess,
 		MatchResult& result) override;
+	double guessGateChi2() const override { return params.guess_gate_chi2; }
 
    private:
 	/** Steps 2-4 of section 4: eta_i from the bounds, mu_ij for every
