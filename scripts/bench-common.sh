@@ -98,6 +98,17 @@ sim_1cm() { # scene [seed]
     "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$1-1cm" -q --set Laser:range_noise=0.01 > /dev/null
   fi
 }
+# featloc-sim's held-out corridor with people walking, seeds 1-6, as
+# $OUT/corridor-people-seedSEED.rawlog (+ .gt.txt): the whole-run logs of
+# issue 15's benches (made once per OUT).
+sim_corridor_seeds() {
+  local seed
+  for seed in 1 2 3 4 5 6; do
+    [ -f "$OUT/corridor-people-seed$seed.rawlog" ] ||
+      "$BIN/featloc-sim" "$ROOT/worlds/corridor-people.ini" --out "$OUT/corridor-people-seed$seed" \
+        --seed "$seed" -q > /dev/null
+  done
+}
 # A benchmark's laser matcher: MATCHER from its second argument (else the
 # default given), and MATCHER_SETS, --set options for its arguments 3..
 # (KEY=VALUE in that matcher's section).

@@ -56,10 +56,7 @@ echo "### Whole runs: the corridor with people walking, seeds 1-6: ATE rmse [mm]
 echo
 echo "| estimator | matcher | free_direction_from_guess$(for s in 1 2 3 4 5 6; do printf ' | seed %s' $s; done) | mean | kept / failed (all seeds) |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|"
-for seed in 1 2 3 4 5 6; do
-  "$BIN/featloc-sim" "$ROOT/worlds/corridor-people.ini" --out "$OUT/corridor-people-seed$seed" \
-    --seed "$seed" -q > /dev/null
-done
+sim_corridor_seeds
 corridor_row() { # estimator, matcher, on
   local est="$1" m="$2" on="$3" row sum=0 kept=0 failed=0 a seed r
   row="| $est | $m | $on"

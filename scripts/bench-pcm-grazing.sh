@@ -50,10 +50,7 @@ echo "### Whole runs (featloc-run, PCM as config.ini has it; ATE rmse [mm])"
 echo
 echo "| estimator | grazing_incidence_DEG | corridor-people seeds 1-6 (held out) | mean | office 1 cm seeds 1-4 | mean |"
 echo "|---|---|---|---|---|---|"
-for seed in 1 2 3 4 5 6; do
-  "$BIN/featloc-sim" "$ROOT/worlds/corridor-people.ini" --out "$OUT/corridor-people-seed$seed" \
-    --seed "$seed" -q > /dev/null
-done
+sim_corridor_seeds
 for seed in 1 2 3 4; do sim_1cm office "$seed"; done
 for est in matcher ekf; do
   for g in 5 0; do

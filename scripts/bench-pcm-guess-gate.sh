@@ -78,10 +78,7 @@ echo "### Whole runs, held out: the corridor with people walking, seeds 1-6, PCM
 echo
 echo "| estimator | guess gate$(for s in 1 2 3 4 5 6; do printf ' | seed %s' $s; done) | mean |"
 echo "|---|---|---|---|---|---|---|---|---|"
-for seed in 1 2 3 4 5 6; do
-  "$BIN/featloc-sim" "$ROOT/worlds/corridor-people.ini" --out "$OUT/corridor-people-seed$seed" \
-    --seed "$seed" -q > /dev/null
-done
+sim_corridor_seeds
 for est in matcher ekf; do
   for gate in on off; do
     row="| $est | $gate" sum=0

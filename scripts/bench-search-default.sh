@@ -71,11 +71,7 @@ echo "### Held out: the corridor with people walking, seeds 1-6, every matcher a
 echo
 echo "| estimator | matcher$(for s in 1 2 3 4 5 6; do printf ' | seed %s' $s; done) | mean |"
 echo "|---|---|---|---|---|---|---|---|---|"
-for seed in 1 2 3 4 5 6; do
-  [ -f "$OUT/corridor-people-seed$seed.rawlog" ] ||
-    "$BIN/featloc-sim" "$ROOT/worlds/corridor-people.ini" --out "$OUT/corridor-people-seed$seed" \
-      --seed "$seed" -q > /dev/null
-done
+sim_corridor_seeds
 corridor_row() { # estimator, matcher[, label, extra --set args...]
   local est="$1" m="$2" label="${3:-$2}" row sum=0 a seed r
   shift 2
