@@ -37,7 +37,10 @@ void MatchTableWriter::onStep(const StepRecord& r)
 		if (overruled) add(m.guessGateOverruled);
 		if (!m.primaryFailure.empty())
 			add("made by the fallback matcher after " + m.primaryFailure);
-		if (m.ambiguous) add("ambiguous: " + m.ambiguityReason);
+		// (The coarse search's reasons already begin with "ambiguous".)
+		if (m.ambiguous)
+			add(m.ambiguityReason.rfind("ambiguous", 0) == 0 ? m.ambiguityReason
+															 : "ambiguous: " + m.ambiguityReason);
 		if (!r.fallbackReason.empty())
 			add(reason.empty() ? r.fallbackReason : "not used: " + r.fallbackReason);
 	}
