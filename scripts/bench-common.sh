@@ -39,6 +39,20 @@ bench_calibration_scenes() {
     bench "orebro" "$LASER2D/orebro-corrected.log.gz" --perturb-xy 0.3 --perturb-yaw-deg 10
   fi
 }
+# Issue 15's two per-pair tables: the calibration scenes, then the held-out
+# ones, each through the caller's `bench` (HEADER set again for the second
+# table), under "### [PREFIX]Calibration scenes" and "### [PREFIX]Held out".
+bench_calibration_and_held_out() { # [title prefix]
+  echo
+  echo "### ${1:-}Calibration scenes"
+  echo
+  bench_calibration_scenes
+  echo
+  echo "### ${1:-}Held out"
+  echo
+  HEADER=--header
+  bench_held_out_scenes
+}
 # The held-out scenes of issue 15's PCM benches, each through the caller's
 # `bench NAME DATA ARGS...`, Borges & Aldon's protocol: the corridor with
 # people (+-0.3 m / 10 deg and +-0.5 m / 15 deg), the hall with people, the

@@ -42,15 +42,7 @@ bench() { # name, data, extra args...
 }
 
 machine_line
-echo
-echo "### Calibration scenes"
-echo
-bench_calibration_scenes
-echo
-echo "### Held out"
-echo
-HEADER=--header
-bench_held_out_scenes
+bench_calibration_and_held_out ""
 echo
 echo "### Whole runs: the corridor with people walking, seeds 1-6: ATE rmse [mm], matches that kept the guess along a free direction"
 echo

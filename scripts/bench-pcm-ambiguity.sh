@@ -25,19 +25,11 @@ M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
 COMMON="--set ScanMatcher.PcmFeatureMatcher:initial_bounds_source=config --seed 1 -q"
 HEADER=--header
 bench() { # name, data, extra args...
-  bench_run "$@" | main_table
+  bench_run "$@" | main_table ""
   HEADER=
 }
 
 machine_line
-echo
-echo "### Calibration scenes"
-echo
-bench_calibration_scenes
-echo
-echo "### Held out"
-echo
-HEADER=--header
-bench_held_out_scenes
+bench_calibration_and_held_out ""
 echo
 echo "(raw outputs in $OUT)"

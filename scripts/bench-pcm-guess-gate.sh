@@ -44,15 +44,7 @@ run() { # name, input (empty: config.ini's), ground truth (empty: config.ini's o
 NOGATE=(--set "ScanMatcher.PcmFeatureMatcher:guess_gate_chi2=0")
 
 machine_line
-echo
-echo "### Per pair: calibration scenes"
-echo
-bench_calibration_scenes
-echo
-echo "### Per pair: held out"
-echo
-HEADER=--header
-bench_held_out_scenes
+bench_calibration_and_held_out "Per pair: "
 echo
 echo "### Whole runs: ATE [mm] / failed matches / fallbacks to odometry / gate rejections overruled"
 echo

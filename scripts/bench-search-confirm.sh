@@ -32,15 +32,7 @@ bench() { # name, data, extra args...: the main table and the skip counts
 }
 
 machine_line
-echo
-echo "### Calibration scenes"
-echo
-bench_calibration_scenes
-echo
-echo "### Held out"
-echo
-HEADER=--header
-bench_held_out_scenes
+bench_calibration_and_held_out ""
 echo
 echo "### Speed: PCM beside MRPT's ICP alone, the office, three runs"
 echo
