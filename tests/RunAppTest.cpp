@@ -102,6 +102,15 @@ void writeWithScansOf(TestRawlog log, const featloc::test::SyntheticRoom& room,
 	};
 	log.write(file);
 }
+/** featloc-run's arguments for PCM's matcher chain over `rawlog` with
+ * every scan a keyframe (each match against the previous scan). */
+std::string pcmChainEveryScanArgs(const std::string& rawlog)
+{
+	return shellQuote(kConfig) + " " + shellQuote(rawlog) +
+		" --set ScanMatcher:class=PcmFeatureMatcher --set Pipeline:estimator=matcher"
+		" --set Pipeline:keyframe_distance=0 --set Pipeline:keyframe_angle_DEG=0"
+		" --set Output:write_scene=false";
+}
 }  // namespace
 
 TEST(FeatlocRun, HelpListsTheSetOption)
@@ -925,10 +934,7 @@ TEST(FeatlocRun, TheFallbackMatcherMakesTheMatchesPcmCannot)
 	log.scans = 12;
 	log.path = [](double t) { return CPose2D(0.5 * t, 0.02 * t, 0.01 * t); };
 	writeWithScansOf(log, corridor, dir.file("corridor.rawlog"));
-	const std::string common = shellQuote(kConfig) + " " + shellQuote(dir.file("corridor.rawlog")) +
-		" --set ScanMatcher:class=PcmFeatureMatcher --set Pipeline:estimator=matcher"
-		" --set Pipeline:keyframe_distance=0 --set Pipeline:keyframe_angle_DEG=0"
-		" --set Output:write_scene=false";
+	const std::string common = pcmChainEveryScanArgs(dir.file("corridor.rawlog"));
 	const CommandResult alone = featlocRun(
 		common + " --out " + shellQuote(dir.file("alone")) +
 		" --set ScanMatcher.PcmFeatureMatcher:fallback_class=");
@@ -965,10 +971,7 @@ TEST(FeatlocRun, SummaryCountsTheMatchesMadeWithoutTheCoarseSearch)
 	log.scans = 12;
 	log.path = [](double t) { return CPose2D(0.3 * t, 0.05 * t, 0.05 * t); };
 	writeWithScansOf(log, room, dir.file("room.rawlog"));
-	const std::string common = shellQuote(kConfig) + " " + shellQuote(dir.file("room.rawlog")) +
-		" --set ScanMatcher:class=PcmFeatureMatcher --set Pipeline:estimator=matcher"
-		" --set Pipeline:keyframe_distance=0 --set Pipeline:keyframe_angle_DEG=0"
-		" --set Output:write_scene=false";
+	const std::string common = pcmChainEveryScanArgs(dir.file("room.rawlog"));
 	const CommandResult r = featlocRun(common + " --out " + shellQuote(dir.file("out")));
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	const auto s = readJson(dir.file("out/summary.json"));
