@@ -97,7 +97,7 @@ class PcmFeatureMatcher : public ScanMatcher
 		double motion_window_bounds = 2.0;
 		/** featloc: failure when the estimate's Mahalanobis^2 from the
 		 * initial guess exceeds this (ScanMatcher::guessGateChi2, as IDC's):
-		 * along a corridor PCM took estimates 0.3-0.4 m from odometry with
+		 * along a corridor PCM took estimates 0.1-0.75 m off with
 		 * a sigma of centimetres there (doc/pcm-matcher.md). 0: off, as
 		 * published. */
 		double guess_gate_chi2 = 21.1;
