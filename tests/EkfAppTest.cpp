@@ -135,7 +135,7 @@ TEST(EkfApp, AlongACorridorKeepingTheGuessOnlyWhereThePointsLeaveItFreeHelps)
 	}
 }
 
-// After the turn at the corridor's far end, PCM took matches 0.3-0.4 m off
+// After the turn at the corridor's far end, PCM took matches 0.1-0.75 m off
 // along the corridor with a sigma of centimetres there; odometry's was
 // millimetres. Its guess gate (IDC's test) rejects them, IDC takes them
 // over, and the matcher chain stays on the path.
