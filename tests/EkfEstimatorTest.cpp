@@ -17,47 +17,13 @@
 #include "featloc/registerClasses.h"
 #include "featloc/sim/SimConfiguration.h"
 #include "featloc/sim/Simulator.h"
+#include "support/EveryOtherFailingIdcMatcher.h"
 #include "support/TempDir.h"
 
 using namespace featloc;
 using featloc::test::TempDir;
 using mrpt::poses::CPose2D;
 using mrpt::poses::CPosePDFGaussian;
-
-namespace featloc
-{
-/** IDC that reports failure on every other match (a real matcher run, its
- * result thrown away): the pipeline must carry on with odometry. (IDC, not
- * MRPT's ICP: every failure starts a new keyframe, so most matches are
- * between consecutive scans, where ICP's covariance is over-confident;
- * doc/ekf.md.) */
-class EveryOtherFailingIdcMatcher : public IdcMatcher
-{
-	DEFINE_MRPT_OBJECT(EveryOtherFailingIdcMatcher, featloc)
-
-   public:
-	// One matchPoints() call per match: the iterations run once, from the
-	// coarse search (with coarse_confirm_share they may run twice).
-	EveryOtherFailingIdcMatcher() { coarseSearchOptions().confirmShare = 0; }
-
-   protected:
-	void matchPoints(
-		const ScanPoints& reference, const ScanPoints& current,
-		const CPosePDFGaussian& initialGuess, MatchResult& result) override
-	{
-		IdcMatcher::matchPoints(reference, current, initialGuess, result);
-		if (m_calls++ % 2 == 1)
-		{
-			result.success = false;
-			result.failureReason = "forced failure (test)";
-		}
-	}
-
-   private:
-	size_t m_calls = 0;
-};
-IMPLEMENTS_MRPT_OBJECT(EveryOtherFailingIdcMatcher, IdcMatcher, featloc)
-}  // namespace featloc
 
 namespace
 {

@@ -217,12 +217,13 @@ bool Pipeline::isNewKeyframe(const MatchResult* match) const
 	// counting a gated match as failed (new keyframe), or using the
 	// estimate's motion instead, were both measured worse on most logs
 	// (doc/benchmarks.md, "Keyframe decision after a gated match").
-	if (match && !match->success) return true;
-	// Without a match (the odometry estimator), the estimate's own motion
-	// since the keyframe decides: otherwise every scan would be a keyframe,
-	// and map.simplemap would hold the whole log.
-	const mrpt::poses::CPose2D m =
-		match ? match->estimate.mean : m_estimator->pose().mean - m_keyframePose;
+	if (match && !match->success && !m_options.failed_match_keeps_keyframe) return true;
+	// Without a match (the odometry estimator) or after a failed one, the
+	// estimate's own motion since the keyframe decides: otherwise every
+	// scan would be a keyframe, and map.simplemap would hold the whole log.
+	const mrpt::poses::CPose2D m = match && match->success
+		? match->estimate.mean
+		: m_estimator->pose().mean - m_estimator->currentKeyframePose().value_or(m_keyframePose);
 	return (m_options.keyframe_distance > 0 && m.norm() >= m_options.keyframe_distance) ||
 		(m_options.keyframe_angle > 0 && std::abs(m.phi()) >= m_options.keyframe_angle);
 }

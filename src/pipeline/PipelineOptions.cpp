@@ -42,6 +42,7 @@ void PipelineOptions::loadFromConfigFile(
 	readDegrees(c, s, "keyframe_angle_DEG", keyframe_angle);
 	require(keyframe_distance >= 0, c, s, "keyframe_distance", ">= 0");
 	require(keyframe_angle >= 0, c, s, "keyframe_angle_DEG", ">= 0");
+	read(c, s, "failed_match_keeps_keyframe", failed_match_keeps_keyframe);
 }
 
 mrpt::poses::CPosePDFGaussian PipelineOptions::initialPose() const
@@ -81,5 +82,8 @@ void PipelineOptions::saveToConfigFile(
 		"[m] new reference scan after this motion (0 and angle 0: every scan)");
 	writeDegrees(c, s, "keyframe_angle_DEG", keyframe_angle,
 		"[deg] new reference scan after this rotation");
+	write(c, s, "failed_match_keeps_keyframe", failed_match_keeps_keyframe,
+		"true: a failed match keeps the reference scan (the next good match corrects the "
+		"failed steps); false: its scan becomes the reference");
 }
 }  // namespace featloc

@@ -34,7 +34,8 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	mrpt::poses::CPosePDFGaussian initialPose() const;
 	/** The scan matcher matches each scan against a reference (keyframe)
 	 * scan, replaced when the estimated motion since it reaches
-	 * keyframe_distance [m] or keyframe_angle [rad], or when a match fails.
+	 * keyframe_distance [m] or keyframe_angle [rad] (or when a match fails,
+	 * with failed_match_keeps_keyframe false).
 	 * Both 0: every scan is the next one's reference (scan-to-previous-scan).
 	 * Larger values stop small per-scan errors from accumulating on
 	 * high-rate, noisy logs (as icp-slam's localizationLinDistance): 1 m /
@@ -44,6 +45,14 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	double keyframe_distance = 1.0;
 	static constexpr double kUnknownSigmaXY = 1000.0;  //!< [m]
 	double keyframe_angle = 20.0 * M_PI / 180.0;
+	/** A failed match keeps the reference scan, which is replaced only when
+	 * the estimate's motion since it reaches keyframe_distance or
+	 * keyframe_angle: the next good match against it then measures the
+	 * failed steps too, and corrects their odometry. false: a failed
+	 * match makes its scan the reference, and the odometry error of that
+	 * step stays in the estimate (doc/benchmarks.md, "Issue 15, eleventh
+	 * session"). Ignored with every scan a keyframe. */
+	bool failed_match_keeps_keyframe = true;
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& c,
