@@ -12,7 +12,7 @@
 #    orebro is a calibration log, and it has no odometry: constant-velocity
 #    prior, steps up to 3 m), the held-out corridor with people, seeds 1-6.
 #  - Each cell: ATE rmse [mm] / failed matches, kept | replaced.
-# Usage: scripts/bench-keyframe-after-failure.sh [OUTDIR]   (about 30 min on 2 cores)
+# Usage: scripts/bench-keyframe-after-failure.sh [OUTDIR]   (about 10 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-keyframe-after-failure "$@"
