@@ -112,6 +112,18 @@ sim_1cm() { # scene [seed]
     "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$1-1cm" -q --set Laser:range_noise=0.01 > /dev/null
   fi
 }
+# One featloc-run as config.ini has it but for the --set arguments, into
+# $OUT/NAME (its console output in $OUT/NAME.txt), without the rawlog and
+# 3-D scene outputs; fails if featloc-run does.
+bench_featloc_run() { # name, input (empty: config.ini's), ground truth (empty: config.ini's or the log's), --set args...
+  local name="$1" input="$2" gt="$3"
+  shift 3
+  local args=("$ROOT/config.ini")
+  [ -n "$input" ] && args+=("$input")
+  [ -n "$gt" ] && args+=(--set "Evaluation:ground_truth=$gt")
+  "$BIN/featloc-run" "${args[@]}" -q --out "$OUT/$name" --set Output:write_scene=false \
+    --set Output:write_rawlog=false "$@" > "$OUT/$name.txt" 2>&1
+}
 # featloc-sim's held-out corridor with people walking, seeds 1-6, as
 # $OUT/corridor-people-seedSEED.rawlog (+ .gt.txt): the whole-run logs of
 # issue 15's benches (made once per OUT).

@@ -21,15 +21,9 @@ MATCHERS=(IcpMatcher PcmFeatureMatcher IdcMatcher CfIdcMatcher)
 
 # "ATE [mm]/failed matches" of one featloc-run.
 run() { # name, input (empty: config.ini's), ground truth (empty: the log's), --set args...
-  local name="$1" input="$2" gt="$3"
-  shift 3
-  local args=("$ROOT/config.ini")
-  [ -n "$input" ] && args+=("$input")
-  [ -n "$gt" ] && args+=(--set "Evaluation:ground_truth=$gt")
-  "$BIN/featloc-run" "${args[@]}" -q --out "$OUT/$name" --set Output:write_scene=false \
-    --set Output:write_rawlog=false "$@" > "$OUT/$name.txt" 2>&1 || { echo "error (see $OUT/$name.txt)"; return; }
+  bench_featloc_run "$@" || { echo "error (see $OUT/$1.txt)"; return; }
   jq -r '"\((.evaluation.ate_m.rmse // -0.001) * 1000 | round)/\(.counts.match_failures)"' \
-    "$OUT/$name/summary.json"
+    "$OUT/$1/summary.json"
 }
 
 machine_line

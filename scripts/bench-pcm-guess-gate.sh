@@ -30,16 +30,10 @@ bench() { # name, data, extra args...
 # ATE [mm] (-1: no reference), failed matches, fallbacks to odometry,
 # guess-gate rejections the scans overruled, of one featloc-run.
 run() { # name, input (empty: config.ini's), ground truth (empty: config.ini's or the log's), --set args...
-  local name="$1" input="$2" gt="$3"
-  shift 3
-  local args=("$ROOT/config.ini")
-  [ -n "$input" ] && args+=("$input")
-  [ -n "$gt" ] && args+=(--set "Evaluation:ground_truth=$gt")
-  "$BIN/featloc-run" "${args[@]}" -q --out "$OUT/$name" --set Output:write_scene=false \
-    --set Output:write_rawlog=false "$@" > "$OUT/$name.txt" 2>&1 || { echo "error (see $OUT/$name.txt)"; return; }
+  bench_featloc_run "$@" || { echo "error (see $OUT/$1.txt)"; return; }
   jq -r '[((.evaluation.ate_m.rmse // -0.001) * 1000 | round), .counts.match_failures,
     .counts.fallbacks_to_odometry, .counts.guess_gate_overruled] | map(tostring) | join(" / ")' \
-    "$OUT/$name/summary.json"
+    "$OUT/$1/summary.json"
 }
 NOGATE=(--set "ScanMatcher.PcmFeatureMatcher:guess_gate_chi2=0")
 

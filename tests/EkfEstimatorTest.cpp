@@ -7,17 +7,15 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "featloc/config/TrackedConfig.h"
 #include "featloc/estimators/EkfEstimator.h"
-#include "featloc/eval/TrajectoryFile.h"
+#include "featloc/eval/Trajectory.h"
 #include "featloc/matchers/IdcMatcher.h"
 #include "featloc/output/RunOutput.h"
 #include "featloc/io/RawlogFileSource.h"
 #include "featloc/pipeline/Pipeline.h"
 #include "featloc/registerClasses.h"
-#include "featloc/sim/SimConfiguration.h"
-#include "featloc/sim/Simulator.h"
 #include "support/EveryOtherFailingIdcMatcher.h"
+#include "support/LabLoopLog.h"
 #include "support/TempDir.h"
 
 using namespace featloc;
@@ -171,16 +169,9 @@ TEST(EkfEstimator, FollowsTheTruthWithinItsCovarianceWhenHalfTheMatchesFail)
 	double neesSum = 0, count = 0, within = 0;
 	for (int seed = 1; seed <= seeds; seed++)
 	{
-		TrackedConfig c;
-		c.loadFile(std::string(FEATLOC_SOURCE_DIR) + "/worlds/lab.ini");
-		c.applyOverride("Robot:path=waypoints");
-		c.applyOverride("Robot:waypoints=[2 2; 12 2; 12 5; 9.5 5; 9.5 8.5; 2 8.5; 2 2]");
-		c.applyOverride("Simulation:seed=" + std::to_string(seed));
-		auto sc = SimConfiguration::load(c);
-		Simulator sim(sc.world, sc.robot, sc.laser, sc.odometry, sc.simulation);
-		const std::string rawlog = dir.file("l.rawlog"), gtFile = dir.file("l.gt.txt");
-		sim.run(rawlog, gtFile);
-		const Trajectory gt = TrajectoryFile::read(gtFile);
+		const auto log = featloc::test::LabLoopLog::simulate(dir.path().string(), seed);
+		const std::string& rawlog = log.rawlog;
+		const Trajectory& gt = log.groundTruth;
 
 		PipelineOptions po;
 		po.estimator = "ekf";

@@ -7,15 +7,13 @@
 #include <cmath>
 #include <memory>
 
-#include "featloc/config/TrackedConfig.h"
 #include "featloc/estimators/MatcherChainEstimator.h"
-#include "featloc/eval/TrajectoryFile.h"
 #include "featloc/io/RawlogFileSource.h"
 #include "featloc/output/RunOutput.h"
 #include "featloc/pipeline/Pipeline.h"
-#include "featloc/sim/SimConfiguration.h"
-#include "featloc/sim/Simulator.h"
+#include "featloc/eval/Trajectory.h"
 #include "support/EveryOtherFailingIdcMatcher.h"
+#include "support/LabLoopLog.h"
 #include "support/TempDir.h"
 
 using namespace featloc;
@@ -74,19 +72,11 @@ TEST(PipelineKeyframe, AFailedMatchKeepsTheKeyframeSoTheNextMatchCorrectsTheFail
 	for (int seed = 1; seed <= 4; seed++)
 	{
 		TempDir dir;
-		TrackedConfig c;
-		c.loadFile(std::string(FEATLOC_SOURCE_DIR) + "/worlds/lab.ini");
-		c.applyOverride("Robot:path=waypoints");
-		c.applyOverride("Robot:waypoints=[2 2; 12 2; 12 5; 9.5 5; 9.5 8.5; 2 8.5; 2 2]");
 		// Odometry noisy enough that a step left uncorrected shows.
-		c.applyOverride("Odometry:sigma_xy_per_m=0.05");
-		c.applyOverride("Odometry:sigma_yaw_per_m_DEG=2");
-		c.applyOverride("Simulation:seed=" + std::to_string(seed));
-		auto sc = SimConfiguration::load(c);
-		Simulator sim(sc.world, sc.robot, sc.laser, sc.odometry, sc.simulation);
-		const std::string rawlog = dir.file("l.rawlog"), gtFile = dir.file("l.gt.txt");
-		sim.run(rawlog, gtFile);
-		const Trajectory gt = TrajectoryFile::read(gtFile);
+		const auto log = featloc::test::LabLoopLog::simulate(dir.path().string(), seed,
+			{"Odometry:sigma_xy_per_m=0.05", "Odometry:sigma_yaw_per_m_DEG=2"});
+		const std::string& rawlog = log.rawlog;
+		const Trajectory& gt = log.groundTruth;
 
 		// Every other match failing, keyframe kept or replaced; then no
 		// failures at all.
