@@ -86,13 +86,22 @@ bench_held_out_radish_logs() { # [suffix]
 bench_file() { echo "$OUT/$(echo "$1" | tr " /+()" "_____")"; }
 # One featloc-bench run of the caller's $M on DATA, with its $COMMON options
 # and $HEADER, its JSON as "$(bench_file NAME).json". The caller clears
-# HEADER after the first table (not here: piped, this runs in a subshell).
+# HEADER after the first table (bench_main_table does; not here: piped, this
+# runs in a subshell).
 bench_run() { # name, data, extra args...
   local name="$1" data="$2"
   shift 2
   # shellcheck disable=SC2086
   "$BIN/featloc-bench" "$ROOT/config.ini" "$data" $COMMON -m "$M" $HEADER \
     --name "$name" "$@" -j "$(bench_file "$name").json"
+}
+# bench_run's main table (main_table NOTES), then HEADER cleared: the
+# `bench` of the benches that print nothing else per data set.
+bench_main_table() { # notes, name, data, extra args...
+  local notes="$1"
+  shift
+  bench_run "$@" | main_table "$notes"
+  HEADER=
 }
 # Keeps featloc-bench's main table (its header and rows; not --world's
 # Cramer-Rao and moved-points tables) and the note lines that match the

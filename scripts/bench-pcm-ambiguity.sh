@@ -24,10 +24,7 @@ M="$M,IdcMatcher=featloc::IdcMatcher"
 M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
 COMMON="--set ScanMatcher.PcmFeatureMatcher:initial_bounds_source=config --seed 1 -q"
 HEADER=--header
-bench() { # name, data, extra args...
-  bench_run "$@" | main_table ""
-  HEADER=
-}
+bench() { bench_main_table "" "$@"; }  # name, data, extra args...
 
 machine_line
 bench_calibration_and_held_out ""

@@ -22,10 +22,7 @@ PCM=featloc::PcmFeatureMatcher
 M="PCM (config.ini)=$PCM,PCM without a guess gate=$PCM{guess_gate_chi2=0},IcpMatcher (MRPT)=featloc::IcpMatcher"
 COMMON="--set ScanMatcher.PcmFeatureMatcher:initial_bounds_source=config --seed 1 -q"
 HEADER=--header
-bench() { # name, data, extra args...
-  bench_run "$@" | main_table ""
-  HEADER=
-}
+bench() { bench_main_table "" "$@"; }  # name, data, extra args...
 
 # ATE [mm] (-1: no reference), failed matches, fallbacks to odometry,
 # guess-gate rejections the scans overruled, of one featloc-run.

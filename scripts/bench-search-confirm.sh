@@ -26,10 +26,7 @@ M="$M,CF-IDC (config.ini)=$CF,CF-IDC search always=$CF{coarse_confirm_share=0}"
 M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
 COMMON="--set ScanMatcher.PcmFeatureMatcher:initial_bounds_source=config --seed 1 -q"
 HEADER=--header
-bench() { # name, data, extra args...: the main table and the skip counts
-  bench_run "$@" | main_table "coarse search was skipped"
-  HEADER=
-}
+bench() { bench_main_table "coarse search was skipped" "$@"; }  # name, data, extra args...: the main table and the skip counts
 
 machine_line
 bench_calibration_and_held_out ""
