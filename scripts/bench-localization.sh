@@ -8,6 +8,8 @@
 #     map.simplemap, (c) no map (EKF relative to the start, for scale), and
 #     MRPT's pf-localization (CMonteCarloLocalization2D, its demo settings,
 #     the same simplemap, started from the same pose) on the same log;
+#     Then the map matcher's own guess gate ([Localization] map_guess_gate)
+#     on and off for the PCM scan-to-scan rows;
 #  2. the office path driven 1 and 10 laps, localized in the world file:
 #     the error must not grow with the run's length;
 #  3. global localization ([Pipeline] initial_pose = global) from N random
@@ -166,6 +168,19 @@ echo "|---|---|---|---|"
 for m in IcpMatcher IdcMatcher CfIdcMatcher PcmFeatureMatcher; do
   loc "$OUT/office-b" "$OUT/office-b-world-$m" "$ROOT/worlds/office.ini" --set Localization:matcher_class=featloc::$m
   echo "| $m | $(ate "$OUT/office-b-world-$m") | $(jq -r '"\(.localization.map_matches_used) / \(.localization.map_match_failures) / \(.localization.map_matches_rejected_by_gate)"' "$OUT/office-b-world-$m/summary.json") | $(maptime "$OUT/office-b-world-$m") |"
+done
+echo
+echo "| run B in run A's map.simplemap, PCM scan-to-scan | [Localization] map_guess_gate | ATE RMSE / max [mm] | map matches used / failed / rejected | lost | global searches | map match [ms] (median) | processing per scan [ms] |"
+echo "|---|---|---|---|---|---|---|---|"
+for world in office lab; do
+  # false: config.ini's (the table above's rows); true: the matcher's own
+  # guess gate on the map matches as well as gate_chi2's.
+  loc "$OUT/$world-b" "$OUT/$world-b-pcm-mapgate" "$OUT/$world-a-mapping/map.simplemap" \
+    --set ScanMatcher:class=featloc::PcmFeatureMatcher --set Localization:map_guess_gate=true
+  for run in "$world-b-pcm false" "$world-b-pcm-mapgate true"; do
+    read -r d gate <<<"$run"
+    echo "| $world | $gate | $(ate "$OUT/$d") | $(jq -r '"\(.localization.map_matches_used) / \(.localization.map_match_failures) / \(.localization.map_matches_rejected_by_gate) | \([.localization.events[]? | select(startswith("lost"))] | length) | \(.localization.global_searches)"' "$OUT/$d/summary.json") | $(maptime "$OUT/$d") | $(processing "$OUT/$d") |"
+  done
 done
 echo
 echo "| office path | scans | ATE RMSE / max [mm], in the world file |"

@@ -1,10 +1,13 @@
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cmath>
 
 #include "featloc/math/DiagonalPoseGaussian.h"
+#include "featloc/matchers/ScanMatcherFactory.h"
+#include "featloc/registerClasses.h"
 #include "support/MatcherTestHelpers.h"
 #include "support/SyntheticRoom.h"
 
@@ -100,4 +103,46 @@ TEST(GuessGateArbiter, OnlyRightMatchesAreOverruled)
 	EXPECT_GT(overruled, 0u) << "no draw reached the arbiter with a right match";
 	EXPECT_GT(wrongStood, 0u) << "no draw reached the arbiter with a wrong match";
 	std::printf("overruled %zu, wrong rejections that stood %zu\n", overruled, wrongStood);
+}
+
+// A caller that gates the estimate itself (MapLocalizer's map matches:
+// the EKF's gate_chi2) turns the matcher's guess gate off, and its
+// fallback's with it: the converged match from a wrong guess is then a
+// success. PCM is made to fail (it never matches a million features), so
+// the match is its IDC fallback's, whose section has the arbiter off.
+TEST(GuessGateArbiter, TheGuessGateCanBeTurnedOffForTheMatcherAndItsFallback)
+{
+	const SyntheticRoom room = SyntheticRoom::office();
+	const CPose2D p0(0.3, -0.4, 0.2), motion(0.2, 0.05, mrpt::DEG2RAD(3.0));
+	mrpt::random::CRandomGenerator rng(5);
+	const auto ref = test::withRangeNoise(room.scan(p0), rng, 0.01);
+	const auto cur = test::withRangeNoise(room.scan(p0 + motion), rng, 0.01);
+	const CPose2D off(motion.x() + 0.10, motion.y() - 0.04, motion.phi() + mrpt::DEG2RAD(2.0));
+	const auto guess = diagonalPoseGaussian(off, 0.02, mrpt::DEG2RAD(0.5));
+	for (const std::string cls : kGatedMatchers)
+	{
+		auto m = test::configuredMatcher(cls, "coarse_overrule_guess_z=0\nfallback_class=");
+		EXPECT_TRUE(m->guessGateEnabled());
+		EXPECT_TRUE(m->match(*ref, *cur, guess).rejectedByGuessGate) << cls;
+		m->setGuessGateEnabled(false);
+		const MatchResult r = m->match(*ref, *cur, guess);
+		ASSERT_TRUE(r.success) << cls << ": " << r.failureReason;
+		EXPECT_FALSE(r.rejectedByGuessGate) << cls;
+		EXPECT_TRUE(right(r, motion)) << cls << ": " << r.estimate.mean;
+	}
+	registerClasses();
+	auto pcm = ScanMatcherFactory::create("featloc::PcmFeatureMatcher");
+	mrpt::config::CConfigFileMemory cfg;
+	cfg.setContent(
+		"[S]\nmin_matched_features = 1000000\nfallback_class = featloc::IdcMatcher\n"
+		"[ScanMatcher.IdcMatcher]\ncoarse_overrule_guess_z = 0\n");
+	pcm->loadParams(cfg, "S");
+	const MatchResult gated = pcm->match(*ref, *cur, guess);
+	EXPECT_FALSE(gated.success);
+	EXPECT_EQ(gated.failureKind, "guess_gate") << gated.failureReason;
+	pcm->setGuessGateEnabled(false);
+	const MatchResult byFallback = pcm->match(*ref, *cur, guess);
+	ASSERT_TRUE(byFallback.success) << byFallback.failureReason;
+	EXPECT_FALSE(byFallback.primaryFailure.empty()) << "not the fallback's match";
+	EXPECT_TRUE(right(byFallback, motion)) << byFallback.estimate.mean;
 }

@@ -207,3 +207,23 @@ TEST(RunConfiguration, TheMapMatchersCoarseSearchIsTheLocalizationSections)
 		load("map_coarse_search = true\n[ScanMatcher.PcmFeatureMatcher]\ncoarse_search = false\n");
 	EXPECT_TRUE(sectionOff.mapLocalizer->mapMatcher().coarseSearchOptions().enabled);
 }
+
+// So is its guess gate ([Localization] map_guess_gate, off by default: the
+// EKF's gate_chi2 gates the map match against the same prediction).
+TEST(RunConfiguration, TheMapMatchersGuessGateIsTheLocalizationSections)
+{
+	registerClasses();
+	const std::string world = std::string(FEATLOC_SOURCE_DIR) + "/worlds/office.ini";
+	auto load = [&](const std::string& extra) {
+		TrackedConfig c;
+		c.loadText("[Pipeline]\nestimator = ekf\n[ScanMatcher]\nclass = featloc::PcmFeatureMatcher\n[Localization]\nmap = " +
+				world + "\n" + extra,
+			"map.ini");
+		return RunConfiguration::load(c);
+	};
+	const RunConfiguration off = load("");
+	ASSERT_TRUE(off.mapLocalizer);
+	EXPECT_FALSE(off.mapLocalizer->mapMatcher().guessGateEnabled());
+	EXPECT_TRUE(off.matcher->guessGateEnabled()) << "the scan-to-scan matcher keeps its gate";
+	EXPECT_TRUE(load("map_guess_gate = true\n").mapLocalizer->mapMatcher().guessGateEnabled());
+}

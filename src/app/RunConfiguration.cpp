@@ -52,6 +52,7 @@ RunConfiguration RunConfiguration::load(const mrpt::config::CConfigFileBase& cfg
 		}
 		mapMatcher->loadParams(cfg, ScanMatcherFactory::paramsSection(mapMatcher->className()));
 		mapMatcher->coarseSearchOptions().enabled = rc.localization.map_coarse_search;
+		mapMatcher->setGuessGateEnabled(rc.localization.map_guess_gate);
 		auto map = std::make_shared<LocalizationMap>(LocalizationMapFile::load(rc.localization));
 		rc.mapLocalizer = std::make_shared<MapLocalizer>(
 			map, mapMatcher, rc.localization, rc.pipeline.global_start);

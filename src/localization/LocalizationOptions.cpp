@@ -12,6 +12,7 @@ void LocalizationOptions::loadFromConfigFile(
 	read(c, s, "map", map);
 	read(c, s, "matcher_class", matcher_class);
 	read(c, s, "map_coarse_search", map_coarse_search);
+	read(c, s, "map_guess_gate", map_guess_gate);
 	read(c, s, "grid_resolution", grid_resolution);
 	read(c, s, "image_resolution", image_resolution);
 	read(c, s, "image_origin", image_origin);
@@ -59,6 +60,9 @@ void LocalizationOptions::saveToConfigFile(
 	write(c, s, "map_coarse_search", map_coarse_search,
 		"the map matcher's correlative coarse search (its section's coarse_search is for "
 		"scan-to-scan matches)");
+	write(c, s, "map_guess_gate", map_guess_gate,
+		"the map matcher's guess gate (its section's guess_gate_chi2, and its fallback's); off: "
+		"gate_chi2 gates the map match against the prediction");
 	write(c, s, "grid_resolution", grid_resolution,
 		"[m] cell of the grid a simplemap or world file is drawn into");
 	write(c, s, "image_resolution", image_resolution, "[m/pixel] occupancy image");

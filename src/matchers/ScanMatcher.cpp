@@ -96,6 +96,7 @@ MatchResult ScanMatcher::tryFallback(MatchResult r, Run&& run)
 		m_fallback->m_followFallback = false;
 	}
 	if (!m_fallback) return r;
+	m_fallback->m_guessGateEnabled = m_guessGateEnabled;
 	MatchResult f = run(*m_fallback);
 	if (ambiguous)
 	{
@@ -244,7 +245,7 @@ MatchResult ScanMatcher::match(
 void ScanMatcher::checkAgainstGuess(
 	const mrpt::poses::CPosePDFGaussian& guess, MatchResult& r) const
 {
-	const double gate = guessGateChi2();
+	const double gate = m_guessGateEnabled ? guessGateChi2() : 0.0;
 	if (!r.success || gate <= 0) return;
 	const Eigen::Vector3d d = poseDifference(r.estimate.mean, guess.mean);
 	const Eigen::Matrix3d P =

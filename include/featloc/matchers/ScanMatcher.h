@@ -57,6 +57,13 @@ class ScanMatcher : public mrpt::rtti::CObject
 	CorrelativeScanSearch::Options& coarseSearchOptions() { return m_coarse.options; }
 	const CorrelativeScanSearch::Options& coarseSearchOptions() const { return m_coarse.options; }
 
+	/** Whether match() applies guessGateChi2() (default true), the
+	 * fallback's included. Off for a matcher whose caller gates the
+	 * estimate itself against the same prediction (MapLocalizer's map
+	 * matches: [Localization] gate_chi2, map_guess_gate). */
+	void setGuessGateEnabled(bool on) { m_guessGateEnabled = on; }
+	bool guessGateEnabled() const { return m_guessGateEnabled; }
+
 	/** Motion of the robot from the reference scan to the current scan.
 	 * \param initialGuess robot-frame motion guess (e.g. the odometry
 	 *        increment) with its covariance.
@@ -176,6 +183,7 @@ class ScanMatcher : public mrpt::rtti::CObject
 		const mrpt::poses::CPose2D& guess, const mrpt::poses::CPose2D& estimate, MatchResult& r);
 	CorrelativeScanSearch m_coarse;
 	std::string m_fallbackClass;  //!< `fallback_class` as written ("" none)
+	bool m_guessGateEnabled = true;	 //!< setGuessGateEnabled()
 	std::shared_ptr<ScanMatcher> m_fallback;
 	bool m_followFallback = true;  //!< false for a fallback itself
 	bool m_fallbackOnAmbiguity = true;	//!< `fallback_on_ambiguity`
