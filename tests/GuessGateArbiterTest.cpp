@@ -29,6 +29,28 @@ bool right(const MatchResult& r, const CPose2D& truth)
 {
 	return translationError(r.estimate.mean, truth) < 0.02 && yawErrorDeg(r.estimate.mean, truth) < 0.5;
 }
+
+/** Two noisy office scans and an odometry guess wrong by far more than its
+ * covariance says (10 cm, 2 deg off; 2 cm, 0.5 deg sigma). */
+struct WrongGuessPair
+{
+	mrpt::obs::CObservation2DRangeScan::Ptr reference, current;
+	CPose2D motion;
+	mrpt::poses::CPosePDFGaussian guess;
+};
+WrongGuessPair wrongGuessPairInARoom()
+{
+	const SyntheticRoom room = SyntheticRoom::office();
+	const CPose2D p0(0.3, -0.4, 0.2), motion(0.2, 0.05, mrpt::DEG2RAD(3.0));
+	mrpt::random::CRandomGenerator rng(5);
+	WrongGuessPair p;
+	p.reference = test::withRangeNoise(room.scan(p0), rng, 0.01);
+	p.current = test::withRangeNoise(room.scan(p0 + motion), rng, 0.01);
+	p.motion = motion;
+	const CPose2D off(motion.x() + 0.10, motion.y() - 0.04, motion.phi() + mrpt::DEG2RAD(2.0));
+	p.guess = diagonalPoseGaussian(off, 0.02, mrpt::DEG2RAD(0.5));
+	return p;
+}
 }  // namespace
 
 // Odometry wrong by far more than its covariance (a reading taken long
@@ -39,13 +61,8 @@ bool right(const MatchResult& r, const CPose2D& truth)
 // guess_gate_chi2 = 0 there is no gate.
 TEST(GuessGateArbiter, AGoodMatchFromAWrongGuessIsOverruledInARoom)
 {
-	const SyntheticRoom room = SyntheticRoom::office();
-	const CPose2D p0(0.3, -0.4, 0.2), motion(0.2, 0.05, mrpt::DEG2RAD(3.0));
-	mrpt::random::CRandomGenerator rng(5);
-	const auto ref = test::withRangeNoise(room.scan(p0), rng, 0.01);
-	const auto cur = test::withRangeNoise(room.scan(p0 + motion), rng, 0.01);
-	const CPose2D off(motion.x() + 0.10, motion.y() - 0.04, motion.phi() + mrpt::DEG2RAD(2.0));
-	const auto guess = diagonalPoseGaussian(off, 0.02, mrpt::DEG2RAD(0.5));
+	const WrongGuessPair pair = wrongGuessPairInARoom();
+	const auto& [ref, cur, motion, guess] = pair;
 	for (const std::string cls : kGatedMatchers)
 	{
 		const MatchResult r = test::configuredMatcher(cls, "")->match(*ref, *cur, guess);
@@ -112,13 +129,8 @@ TEST(GuessGateArbiter, OnlyRightMatchesAreOverruled)
 // the match is its IDC fallback's, whose section has the arbiter off.
 TEST(GuessGateArbiter, TheGuessGateCanBeTurnedOffForTheMatcherAndItsFallback)
 {
-	const SyntheticRoom room = SyntheticRoom::office();
-	const CPose2D p0(0.3, -0.4, 0.2), motion(0.2, 0.05, mrpt::DEG2RAD(3.0));
-	mrpt::random::CRandomGenerator rng(5);
-	const auto ref = test::withRangeNoise(room.scan(p0), rng, 0.01);
-	const auto cur = test::withRangeNoise(room.scan(p0 + motion), rng, 0.01);
-	const CPose2D off(motion.x() + 0.10, motion.y() - 0.04, motion.phi() + mrpt::DEG2RAD(2.0));
-	const auto guess = diagonalPoseGaussian(off, 0.02, mrpt::DEG2RAD(0.5));
+	const WrongGuessPair pair = wrongGuessPairInARoom();
+	const auto& [ref, cur, motion, guess] = pair;
 	for (const std::string cls : kGatedMatchers)
 	{
 		auto m = test::configuredMatcher(cls, "coarse_overrule_guess_z=0\nfallback_class=");
