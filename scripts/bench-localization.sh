@@ -8,7 +8,7 @@
 #     map.simplemap, (c) no map (EKF relative to the start, for scale), and
 #     MRPT's pf-localization (CMonteCarloLocalization2D, its demo settings,
 #     the same simplemap, started from the same pose) on the same log;
-#     Then the map matcher's own guess gate ([Localization] map_guess_gate)
+#     then the map matcher's own guess gate ([Localization] map_guess_gate)
 #     on and off for the PCM scan-to-scan rows;
 #  2. the office path driven 1 and 10 laps, localized in the world file:
 #     the error must not grow with the run's length;
@@ -173,7 +173,7 @@ echo
 echo "| run B in run A's map.simplemap, PCM scan-to-scan | [Localization] map_guess_gate | ATE RMSE / max [mm] | map matches used / failed / rejected | lost | global searches | map match [ms] (median) | processing per scan [ms] |"
 echo "|---|---|---|---|---|---|---|---|"
 for world in office lab; do
-  # false: config.ini's (the table above's rows); true: the matcher's own
+  # false: config.ini's (the first table's PCM scan-to-scan rows); true: the matcher's own
   # guess gate on the map matches as well as gate_chi2's.
   loc "$OUT/$world-b" "$OUT/$world-b-pcm-mapgate" "$OUT/$world-a-mapping/map.simplemap" \
     --set ScanMatcher:class=featloc::PcmFeatureMatcher --set Localization:map_guess_gate=true

@@ -37,9 +37,10 @@ struct LocalizationOptions : public mrpt::config::CLoadableOptions
 	/** The map matcher's guess gate (`guess_gate_chi2` of its section, and
 	 * its fallback's). Off by default: the EKF gates every map match
 	 * against the same prediction (gate_chi2), with the map's own error
-	 * added; the matcher's gate, without it, rejected good office map
-	 * matches, and each rejection cost a correlative search
-	 * (doc/benchmarks.md, "Issue 15, twelfth session"). */
+	 * added; the matcher's gate, without it, rejected office map matches
+	 * that one took, declared lost a robot whose estimate was right, and
+	 * each rejection cost a correlative search (doc/benchmarks.md, "Issue
+	 * 15, twelfth session"). */
 	bool map_guess_gate = false;
 	/** [m] cell size of the grid a simplemap or a world file is drawn into
 	 * (gridmaps and images keep their own). */
