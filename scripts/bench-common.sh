@@ -108,7 +108,7 @@ bench_main_table() { # notes, name, data, extra args...
 # awk regex NOTES.
 main_table() { # [notes]
   awk -F'|' -v notes="${1:-}" \
-    '/^\| data \| matcher \| pairs \| flagged/ || (NF == 13 && !/pairs with a bound/) || (notes != "" && $0 ~ notes)'
+    '/^\| data \| matcher \| pairs \| flagged/ || (NF == 14 && !/pairs with a bound/) || (notes != "" && $0 ~ notes)'
 }
 # featloc-sim's log of worlds/SCENE.ini with 1 cm range noise, as
 # $OUT/SCENE-1cm.rawlog (+ .gt.txt): the static calibration scenes; with a

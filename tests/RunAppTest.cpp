@@ -786,7 +786,7 @@ TEST(FeatlocBench, EveryPairsOutcomeIsWrittenAndGivesTheTablesFigures)
 		const auto& res = j["results"][m];
 		const auto& table = byMatcher[res["matcher"].get<std::string>()];
 		double sumT = 0, sumNees = 0;
-		size_t successes = 0;
+		size_t successes = 0, gross = 0;
 		for (size_t k = 0; k < table.size(); k++)
 		{
 			const auto& c = table[k];
@@ -796,6 +796,8 @@ TEST(FeatlocBench, EveryPairsOutcomeIsWrittenAndGivesTheTablesFigures)
 			P << std::stod(c[7]), std::stod(c[8]), std::stod(c[9]), std::stod(c[8]), std::stod(c[10]),
 				std::stod(c[11]), std::stod(c[9]), std::stod(c[11]), std::stod(c[12]);
 			sumT += std::hypot(e[0], e[1]);
+			// Gross (> 10 cm or > 2 deg) in what is used, whatever the status.
+			if (std::hypot(e[0], e[1]) > 0.1 || std::abs(e[2]) > mrpt::DEG2RAD(2.0)) gross++;
 			if (c[3] == "failed")
 			{
 				// The guess's: uniform +-0.3 m / +-10 deg, sigma a / sqrt(3).
@@ -811,8 +813,14 @@ TEST(FeatlocBench, EveryPairsOutcomeIsWrittenAndGivesTheTablesFigures)
 			successes++;
 		}
 		EXPECT_NEAR(sumT / 40, res["mean_trans_err_m"].get<double>(), 1e-6) << res["matcher"];
+		EXPECT_EQ(res["gross_used"].get<size_t>(), gross) << res["matcher"];
+		EXPECT_GE(gross, res["silent_gross_errors"].get<size_t>()) << res["matcher"];
 		if (res["matcher"] == "never")
+		{
 			EXPECT_EQ(successes, 0u);
+			// Every failure hands on its guess, nearly always that far off.
+			EXPECT_GT(gross, 34u);
+		}
 		else
 		{
 			ASSERT_GT(successes, 30u);
@@ -820,6 +828,57 @@ TEST(FeatlocBench, EveryPairsOutcomeIsWrittenAndGivesTheTablesFigures)
 				1e-3 * res["nees_mean"].get<double>());
 		}
 	}
+	// The paired comparison (by default with the IcpMatcher, "never"):
+	// the pairs only one of the two gets grossly wrong, and the mean
+	// difference, as the rows give them.
+	const auto isGross = [](const std::vector<std::string>& c)
+	{
+		return std::hypot(std::stod(c[4]), std::stod(c[5])) > 0.1 ||
+			std::abs(std::stod(c[6])) > mrpt::DEG2RAD(2.0);
+	};
+	size_t onlyIdc = 0, onlyNever = 0;
+	double diff = 0;
+	for (size_t k = 0; k < 40; k++)
+	{
+		const auto &i = byMatcher["idc"][k], &n = byMatcher["never"][k];
+		onlyIdc += isGross(i) && !isGross(n);
+		onlyNever += isGross(n) && !isGross(i);
+		diff += std::hypot(std::stod(i[4]), std::stod(i[5])) - std::hypot(std::stod(n[4]), std::stod(n[5]));
+	}
+	EXPECT_FALSE(j["results"][0].contains("paired"));
+	const auto& paired = j["results"][1]["paired"];
+	EXPECT_EQ(paired["with"], "never");
+	EXPECT_EQ(paired["gross_only_this"].get<size_t>(), onlyIdc);
+	EXPECT_EQ(paired["gross_only_other"].get<size_t>(), onlyNever);
+	EXPECT_GT(onlyNever, 30u);
+	EXPECT_LT(paired["mcnemar_p"].get<double>(), 1e-6);
+	EXPECT_NEAR(paired["mean_trans_err_diff_m"].get<double>(), diff / 40, 1e-9);
+	EXPECT_LT(paired["ci95_m"][0].get<double>(), diff / 40);
+	EXPECT_GT(paired["ci95_m"][1].get<double>(), diff / 40);
+	EXPECT_LT(paired["ci95_m"][1].get<double>(), 0.0);  // IDC is clearly better
+	EXPECT_NE(r.output.find("| office | idc | never | "), std::string::npos) << r.output;
+}
+
+// --paired-with names a matcher of -m, or "none"; a label that is not
+// there is a usage error that lists the labels.
+TEST(FeatlocBench, PairedWithNamesAMatcherOrNone)
+{
+	const std::string sim = std::string(FEATLOC_SOURCE_DIR) + "/rawlogs/sim/";
+	const std::string common = shellQuote(FEATLOC_BENCH_EXE) + " " + shellQuote(kConfig) + " " +
+		shellQuote(sim + "office.rawlog") + " -g " + shellQuote(sim + "office.gt.txt") +
+		" --max-pairs 5 -q --name office -m 'a=featloc::IdcMatcher,b=featloc::PcmFeatureMatcher'";
+	const CommandResult bad = runCommand(common + " --paired-with c");
+	EXPECT_EQ(bad.exitCode, 2) << bad.output;
+	EXPECT_NE(bad.output.find("--paired-with 'c' is not a matcher of -m (a, b)"), std::string::npos)
+		<< bad.output;
+	// No IcpMatcher among them: no comparison unless asked for.
+	const CommandResult none = runCommand(common);
+	ASSERT_EQ(none.exitCode, 0) << none.output;
+	EXPECT_EQ(none.output.find("paired with"), std::string::npos) << none.output;
+	const CommandResult withA = runCommand(common + " --paired-with a");
+	ASSERT_EQ(withA.exitCode, 0) << withA.output;
+	EXPECT_NE(withA.output.find("| office | b | a | "), std::string::npos) << withA.output;
+	EXPECT_EQ(withA.output.find("| office | a | a | "), std::string::npos) << withA.output;
 }
 
 // scripts/reference-error-share.py on outcomes whose errors are known: four

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -20,6 +21,7 @@
 #include "featloc/app/UsageError.h"
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/InputError.h"
+#include "featloc/eval/PairedComparison.h"
 #include "featloc/eval/ScanPairBenchmark.h"
 #include "featloc/eval/TrajectoryEvaluator.h"
 #include "featloc/eval/TrajectoryFile.h"
@@ -235,10 +237,11 @@ int writeLoopRelations(const Sequence& seq, const std::string& data, const std::
 void printHeader()
 {
 	std::printf(
-		"| data | matcher | pairs | flagged | silent gross | \\|t\\| err mean / median / p95 [mm] "
+		"| data | matcher | pairs | flagged | silent gross | gross used, flagged or not "
+		"| \\|t\\| err mean / median / p95 [mm] "
 		"| \\|w\\| err mean / median / p95 [deg] | MAE t_x / t_y [mm] | time/match mean / "
 		"median [ms] | iterations | NEES mean / in 95%% bound |\n");
-	std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+	std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 }
 
 std::string percent(size_t n, size_t of)
@@ -251,10 +254,10 @@ std::string percent(size_t n, size_t of)
 void printRow(const std::string& name, const ScanPairBenchmark::Result& r)
 {
 	std::printf(
-		"| %s | %s | %zu | %s | %s | %.2f / %.2f / %.1f | %.3f / %.3f / %.2f | %.2f / %.2f | "
+		"| %s | %s | %zu | %s | %s | %s | %.2f / %.2f / %.1f | %.3f / %.3f / %.2f | %.2f / %.2f | "
 		"%.3f / %.3f | %.1f | %.2f / %.0f%% |\n",
 		name.c_str(), r.matcher.c_str(), r.pairs, percent(r.flagged(), r.pairs).c_str(),
-		percent(r.silentGross, r.pairs).c_str(), r.meanTrans * 1e3, r.medianTrans * 1e3,
+		percent(r.silentGross, r.pairs).c_str(), percent(r.grossUsed, r.pairs).c_str(), r.meanTrans * 1e3, r.medianTrans * 1e3,
 		r.p95Trans * 1e3, mrpt::RAD2DEG(r.maeYaw), mrpt::RAD2DEG(r.medianYaw),
 		mrpt::RAD2DEG(r.p95Yaw), r.maeX * 1e3, r.maeY * 1e3, r.meanTime * 1e3,
 		r.medianTime * 1e3, r.meanIterations, r.meanNees, 100 * r.neesWithin95);
@@ -292,11 +295,69 @@ void printWorldTables(const std::string& name, const std::vector<ScanPairBenchma
 	}
 }
 
+/** --paired-with: the index of the matcher labelled `label`, or by default
+ * the first featloc::IcpMatcher (none without one, or with "none"). */
+std::optional<size_t> pairedPeer(
+	const std::vector<MatcherVariant>& variants, const std::string& label, bool given)
+{
+	if (given && label == "none") return std::nullopt;
+	for (size_t m = 0; m < variants.size(); m++)
+		if (given ? variants[m].label == label : variants[m].className == "featloc::IcpMatcher")
+			return m;
+	if (!given) return std::nullopt;
+	std::string known;
+	for (const auto& v : variants) known += (known.empty() ? "" : ", ") + v.label;
+	throw UsageError("--paired-with '" + label + "' is not a matcher of -m (" + known + ")");
+}
+
+/** Every matcher against the peer, pair by pair (PairedComparison): the
+ * table, and "paired" in each of their JSON results. */
+void printPairedTable(const std::string& name, const std::vector<ScanPairBenchmark::Result>& results,
+	size_t peer, const ScanPairBenchmark::Options& o, nlohmann::json& j)
+{
+	const auto column = [&](const ScanPairBenchmark::Result& r, std::vector<double>& trans,
+							std::vector<bool>& gross)
+	{
+		for (const auto& p : r.outcomes)
+		{
+			const double t = std::hypot(p.error[0], p.error[1]);
+			trans.push_back(t);
+			gross.push_back(t > o.grossTrans || std::abs(p.error[2]) > o.grossYaw);
+		}
+	};
+	std::vector<double> peerTrans;
+	std::vector<bool> peerGross;
+	column(results[peer], peerTrans, peerGross);
+	bool header = false;
+	for (size_t m = 0; m < results.size(); m++)
+	{
+		if (m == peer) continue;
+		std::vector<double> trans;
+		std::vector<bool> gross;
+		column(results[m], trans, gross);
+		const auto c = PairedComparison::of(trans, gross, peerTrans, peerGross);
+		if (!header)
+		{
+			std::printf("\n| data | matcher | paired with | \\|t\\| err mean difference, 95%% interval "
+						"[mm] | grossly wrong: only this / only the other, McNemar p |\n"
+						"|---|---|---|---|---|\n");
+			header = true;
+		}
+		std::printf("| %s | %s | %s | %+.2f (%+.2f, %+.2f) | %zu / %zu, p = %.2g |\n", name.c_str(),
+			results[m].matcher.c_str(), results[peer].matcher.c_str(), c.meanDiff * 1e3,
+			c.ciLow * 1e3, c.ciHigh * 1e3, c.onlyA, c.onlyB, c.mcnemarP);
+		j["results"][m]["paired"] = {{"with", results[peer].matcher},
+			{"mean_trans_err_diff_m", c.meanDiff}, {"ci95_m", {c.ciLow, c.ciHigh}},
+			{"gross_only_this", c.onlyA}, {"gross_only_other", c.onlyB}, {"mcnemar_p", c.mcnemarP}};
+	}
+}
+
 nlohmann::json toJson(const ScanPairBenchmark::Result& r)
 {
 	nlohmann::json j = {{"matcher", r.matcher}, {"pairs", r.pairs}, {"failures", r.failures},
 		{"failures_by_kind", r.failuresByKind}, {"ambiguous_used", r.ambiguousUsed},
 		{"flagged", r.flagged()}, {"silent_gross_errors", r.silentGross},
+		{"gross_used", r.grossUsed},
 		{"matcher_fallbacks", r.matcherFallbacks},
 		{"fallback_matcher_matches", r.fallbackMatches},
 		{"fallback_matcher_successes", r.fallbackSuccesses},
@@ -379,6 +440,13 @@ int BenchApp::main(int argc, char** argv)
 		"against the reference, the covariance used), for analyses across "
 		"matchers such as scripts/reference-error-share.py",
 		false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> argPairedWith("", "paired-with",
+		"Compare every other matcher with this one (a label of -m) pair by pair: "
+		"the mean |t| error difference with its 95% block-bootstrap interval, and "
+		"the pairs only one of the two gets grossly wrong with McNemar's p (the "
+		"reference's own error cancels); default: the first featloc::IcpMatcher "
+		"(MRPT's ICP), if any; 'none': no comparison",
+		false, "", "LABEL", cmd);
 	TCLAP::SwitchArg argHeader("", "header", "Print the Markdown table header", cmd);
 	TCLAP::ValueArg<std::string> argBasin("", "basin",
 		"Also run every matcher at each --basin-levels initial error (the "
@@ -420,6 +488,8 @@ int BenchApp::main(int argc, char** argv)
 	const auto variants = MatcherVariant::parseList(argMatchers.getValue());
 	std::vector<ScanMatcher::Ptr> matchers;
 	for (const auto& v : variants) matchers.push_back(v.create(cfg));
+	const std::optional<size_t> peer = pairedPeer(variants, argPairedWith.getValue(),
+		argPairedWith.isSet());
 	cfg.requireAllKeysRead();
 
 	const std::string data = argData.getValue();
@@ -537,6 +607,7 @@ int BenchApp::main(int argc, char** argv)
 						"left free (free_direction_from_guess; counted above as flagged, at the "
 						"error of what they used)\n",
 				r.matcher.c_str(), r.guessKeptAlongFreeDirection, r.pairs);
+	if (peer) printPairedTable(name, results, *peer, o, j);
 	if (argWorld.isSet()) printWorldTables(name, results);
 	if (argBasin.isSet())
 	{

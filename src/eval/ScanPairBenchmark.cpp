@@ -123,6 +123,8 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			outcome.reason = !r.success ? r.failureReason : r.ambiguous ? r.ambiguityReason : "";
 			outcome.cov = (r.success ? r.estimate.cov : guess.cov).asEigen();
 			const double et = std::hypot(err[0], err[1]), ew = std::abs(err[2]);
+			const bool gross = et > o.grossTrans || ew > o.grossYaw;
+			if (gross) res[m].grossUsed++;
 			a.ex.push_back(std::abs(err[0]));
 			a.ey.push_back(std::abs(err[1]));
 			a.ew.push_back(ew);
@@ -153,7 +155,7 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 					res[m].failureExamples.push_back(
 						"pair " + std::to_string(k) + " (used, covariance inflated): " + r.ambiguityReason);
 			}
-			else if (et > o.grossTrans || ew > o.grossYaw)
+			else if (gross)
 			{
 				res[m].silentGross++;
 				if (res[m].silentGrossExamples.size() < 5)

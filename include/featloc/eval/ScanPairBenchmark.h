@@ -111,6 +111,12 @@ class ScanPairBenchmark
 		 * in ambiguousUsed). */
 		size_t guessKeptAlongFreeDirection = 0;
 		size_t silentGross = 0;	 //!< other successes off by > grossTrans or > grossYaw
+		/** Pairs whose used pose (the estimate, or the guess after a failure)
+		 * is off by > grossTrans or > grossYaw, flagged or not: how often the
+		 * pipeline is handed a wrong motion. It compares matchers that flag
+		 * their doubts (an ambiguous match is flagged, and often right) with
+		 * one that never does, which flagged() alone cannot. */
+		size_t grossUsed = 0;
 		/** Over every pair (failures at the guess's error). */
 		double maeX = 0, maeY = 0, maeYaw = 0;	//!< [m], [m], [rad]
 		double meanTrans = 0, medianTrans = 0, p95Trans = 0;  //!< [m] |t error|
