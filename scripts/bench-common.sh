@@ -154,3 +154,10 @@ matcher_args() { # default-matcher, script arguments...
   MATCHER_SETS=()
   for kv in "${@:3}"; do MATCHER_SETS+=(--set "ScanMatcher.${MATCHER#featloc::}:$kv"); done
 }
+# The rows of featloc-bench's paired table (--paired-with) in FILE, as
+# "| data | LABEL | matcher | difference | split |" (LABEL: a seed, a protocol).
+paired_rows() { # label, featloc-bench output file
+  awk -v label="$1" '/paired with/ {on = 1; next}
+    on && /^\| / && !/^\|---/ { sub(/^\| /, ""); sub(/ \|$/, ""); n = split($0, c, / \| /);
+      if (n == 5) printf "| %s | %s | %s | %s | %s |\n", c[1], label, c[2], c[4], c[5] }' "$2"
+}

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Reproduces "Issue 15, thirteenth session" in doc/benchmarks.md, CF-IDC
+# against IDC where things move (issue 15 item 4 and its target "CF-IDC at
+# most 0.6 x IDC's mean error with walking people"): CF-IDC as config.ini
+# has it, the same without its curvature pairing (the paper's stage), and
+# MRPT's ICP, each paired with IDC (featloc-bench --paired-with) on the same
+# pairs and guesses: the mean |t| error difference with its 95%
+# block-bootstrap interval, and the pairs only one of the two gets grossly
+# wrong with McNemar's exact p. Three simulated scenes with things that
+# move, each simulated with seeds 1-3 (other people, other paths; featloc-bench
+# draws its guesses with the same seed): the corridor with people walking
+# (Borges & Aldon's +-0.3 m / 10 deg and +-0.5 m / 15 deg), the room with
+# doors, a cart and people who stop and start, and the hall with people
+# round a standing robot (+-0.3 m / 10 deg). Every pair counts.
+# Usage: scripts/bench-cfidc-paired.sh [OUTDIR]   (about 6 min on 2 cores)
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
+bench_init bench-cfidc-paired "$@"
+
+M="IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcMatcher"
+M="$M,CF-IDC - curvature pairing=featloc::CfIdcMatcher{curvature_pairing=false}"
+M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
+
+run() { # world, seed, xy, yaw -> $OUT/WORLD-seedSEED-XY.txt
+  local log="$OUT/$1-seed$2"
+  [ -f "$log.rawlog" ] || "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$log" --seed "$2" -q > /dev/null
+  "$BIN/featloc-bench" "$ROOT/config.ini" "$log.rawlog" -g "$log.gt.txt" -m "$M" --paired-with IDC \
+    --perturb-xy "$3" --perturb-yaw-deg "$4" --seed "$2" -q --header --name "$1 +-$3/$4" \
+    -j "$log-$3.json" --pairs "$log-$3.tsv" > "$log-$3.txt"
+}
+CASES="corridor-people:0.3:10 corridor-people:0.5:15 room-moving-objects:0.3:10 hall-people:0.3:10"
+
+machine_line
+for c in $CASES; do
+  IFS=: read -r world xy yaw <<< "$c"
+  for seed in 1 2 3; do run "$world" "$seed" "$xy" "$yaw"; done
+done
+
+echo
+echo "### Main tables (seed 1)"
+echo
+first=1
+for c in $CASES; do
+  IFS=: read -r world xy yaw <<< "$c"
+  if [ $first = 1 ]; then main_table < "$OUT/$world-seed1-$xy.txt"; first=0
+  else main_table < "$OUT/$world-seed1-$xy.txt" | tail -n +3; fi
+done
+
+echo
+echo "### Paired with IDC, seeds 1-3"
+echo
+echo "| data | seed | matcher | \\|t\\| err mean difference, 95% interval [mm] | grossly wrong: only this / only IDC, McNemar p |"
+echo "|---|---|---|---|---|"
+for c in $CASES; do
+  IFS=: read -r world xy yaw <<< "$c"
+  for seed in 1 2 3; do paired_rows "$seed" "$OUT/$world-seed$seed-$xy.txt"; done
+done
+echo
+echo "(raw outputs in $OUT)"
