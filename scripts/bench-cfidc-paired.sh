@@ -47,13 +47,14 @@ for c in $CASES; do
 done
 
 echo
-echo "### Paired with IDC, seeds 1-3"
+echo "### Paired with IDC (each cell: |t| error mean difference [mm] and its 95% interval; grossly wrong only this / only IDC, McNemar p)"
 echo
-echo "| data | seed | matcher | \\|t\\| err mean difference, 95% interval [mm] | grossly wrong: only this / only IDC, McNemar p |"
+echo "| data | matcher | seed 1 | seed 2 | seed 3 |"
 echo "|---|---|---|---|---|"
 for c in $CASES; do
   IFS=: read -r world xy yaw <<< "$c"
-  for seed in 1 2 3; do paired_rows "$seed" "$OUT/$world-seed$seed-$xy.txt"; done
+  for seed in 1 2 3; do paired_rows "$seed" "$OUT/$world-seed$seed-$xy.txt"; done |
+    paired_by_seed "$world +-$xy/$yaw"
 done
 echo
 echo "(raw outputs in $OUT)"

@@ -161,3 +161,11 @@ paired_rows() { # label, featloc-bench output file
     on && /^\| / && !/^\|---/ { sub(/^\| /, ""); sub(/ \|$/, ""); n = split($0, c, / \| /);
       if (n == 5) printf "| %s | %s | %s | %s | %s |\n", c[1], label, c[2], c[4], c[5] }' "$2"
 }
+# paired_rows lines of one data set on stdin (LABEL: the seed) -> one row
+# per matcher, "| NAME | matcher | cell | cell ... |", a cell per label in
+# order: "difference (interval); only this / only the other, p = P".
+paired_by_seed() { # name
+  awk -F' [|] ' -v name="$1" '{ m = $3; if (!(m in cells)) order[++n] = m
+      cells[m] = cells[m] " | " $4 "; " substr($5, 1, length($5) - 2) }
+    END { for (i = 1; i <= n; i++) printf "| %s | %s%s |\n", name, order[i], cells[order[i]] }'
+}

@@ -47,13 +47,13 @@ for f in $(logs); do
 done
 
 echo
-echo "### Table 2: paired with MRPT's ICP, seeds 1-3"
+echo "### Table 2: paired with MRPT's ICP (each cell: |t| error mean difference [mm] and its 95% interval; grossly wrong only this / only ICP, McNemar p)"
 echo
-echo "| log | seed | matcher | \\|t\\| err mean difference, 95% interval [mm] | grossly wrong: only this / only ICP, McNemar p |"
-echo "|---|---|---|---|---|"
+echo "| log | matcher | seed ${SEEDS// / | seed } |"
+echo "|---|---|${SEEDS//[0-9]/---|}" | tr -d ' '
 for f in $(logs); do
   name="$(basename "$f" -corrected.log.gz)"
-  for seed in $SEEDS; do paired_rows "$seed" "$OUT/$name-seed$seed.txt"; done
+  for seed in $SEEDS; do paired_rows "$seed" "$OUT/$name-seed$seed.txt"; done | paired_by_seed "$name"
 done
 echo
 echo "(raw outputs in $OUT)"
