@@ -306,7 +306,8 @@ TEST(CorrelativeScanSearch, IterationsThatLeaveTheWindowFailInsteadOfRuiningTheR
 	const auto run = runCommand(shellQuote(FEATLOC_RUN_EXE) + " " +
 		shellQuote(std::string(FEATLOC_SOURCE_DIR) + "/config.ini") + " " +
 		shellQuote(prefix + ".rawlog") + " --out " + shellQuote(out) +
-		" -q --set ScanMatcher:class=featloc::CfIdcMatcher --set Evaluation:ground_truth=" +
+		" -q --set ScanMatcher:class=featloc::CfIdcMatcher --set ScanMatcher.CfIdcMatcher:fallback_class="
+		" --set Evaluation:ground_truth=" +
 		shellQuote(prefix + ".gt.txt") + " --set Output:write_scene=false --set Output:write_rawlog=false");
 	ASSERT_EQ(run.exitCode, 0) << run.output;
 	const auto summary = test::readJson(out + "/summary.json");

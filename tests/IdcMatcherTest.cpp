@@ -54,9 +54,11 @@ Eigen::Vector3d errorOf(const MatchResult& r, const CPose2D& truth)
 		mrpt::math::wrapToPi(r.estimate.mean.phi() - truth.phi())};
 }
 
+// The matcher's own result: without CfIdcMatcher's default IDC fallback,
+// which would remake its failures (IdcMatcher has none).
 ScanMatcher::Ptr matcher(const std::string& cls, const std::string& overrides = "")
 {
-	return test::configuredMatcher(cls, overrides);
+	return test::configuredMatcher(cls, "fallback_class=\n" + overrides);
 }
 
 const char* kIdcAsPublished = "final_phase=idc";

@@ -67,6 +67,13 @@ class CfIdcMatcher : public ScanMatcher
 	DEFINE_MRPT_OBJECT(CfIdcMatcher, featloc)
 
    public:
+	/** A failed (or, with fallback_on_ambiguity, ambiguous) CF-IDC match
+	 * is made by IDC on the whole scans by default (fallback_class): on
+	 * the real logs CF-IDC's segments leave the motion unconstrained where
+	 * IDC's points do not (doc/benchmarks.md, "Issue 15, thirteenth
+	 * session"). The paper has none: fallback_class empty. */
+	CfIdcMatcher() : ScanMatcher("featloc::IdcMatcher") {}
+
 	struct Parameters : public mrpt::config::CLoadableOptions
 	{
 		AdaptiveBreakpointSegmenter::Parameters segmentation;
