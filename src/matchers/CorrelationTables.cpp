@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <limits>
 #include <queue>
 
 namespace featloc
@@ -29,6 +30,66 @@ double CorrelationTables::rotationStep(
 void CorrelationTables::build(int width, int height, double x0, double y0, double res,
 	double hitSigma, int top, const std::function<void(cv::Mat& surface)>& drawSurface)
 {
+	cv::Mat surface = prepare(width, height, x0, y0, res, top, drawSurface);
+	cv::Mat distance;
+	cv::distanceTransform(surface, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+	cv::Mat metres(m_height, m_width, CV_32F, m_distance.data());
+	distance.convertTo(metres, CV_32F, res);
+	cv::Mat table(m_height, m_width, CV_32F, m_levels[0].data());
+	// exp(-d^2 / 2 sigma^2), d in metres.
+	const double k = -0.5 * (res / hitSigma) * (res / hitSigma);
+	cv::multiply(distance, distance, distance, k);
+	cv::exp(distance, table);
+	buildLevels();
+}
+
+void CorrelationTables::buildNear(int width, int height, double x0, double y0, double res,
+	double hitSigma, int top, double maxDistance,
+	const std::function<void(cv::Mat& surface)>& drawSurface)
+{
+	cv::Mat surface = prepare(width, height, x0, y0, res, top, drawSurface);
+	// The cells within maxDistance of a surface pixel, with their distance
+	// in pixels as the exact transform measures it (centre to centre), and
+	// what that distance puts in the tables (the same expressions as build).
+	const int R = static_cast<int>(std::floor(maxDistance / res));
+	const double k = -0.5 * (res / hitSigma) * (res / hitSigma);
+	struct Offset
+	{
+		int du, dv;
+		float metres, value;
+	};
+	std::vector<Offset> near;
+	for (int dv = -R; dv <= R; dv++)
+		for (int du = -R; du <= R; du++)
+			if (du * du + dv * dv <= R * R)
+			{
+				const float d = std::sqrt(static_cast<float>(du * du + dv * dv));
+				near.push_back({du, dv, static_cast<float>(d * res), std::exp(static_cast<float>(d * d * k))});
+			}
+	std::fill(m_distance.begin(), m_distance.end(), std::numeric_limits<float>::infinity());
+	auto& table = m_levels[0];
+	std::fill(table.begin(), table.end(), 0.0f);
+	for (int v = 0; v < m_height; v++)
+	{
+		const uint8_t* row = surface.ptr<uint8_t>(v);
+		for (int u = 0; u < m_width; u++)
+		{
+			if (row[u] != 0) continue;
+			for (const auto& o : near)
+			{
+				const long c = cellIndex(u + o.du, v + o.dv);
+				if (c < 0 || o.metres >= m_distance[static_cast<size_t>(c)]) continue;
+				m_distance[static_cast<size_t>(c)] = o.metres;
+				table[static_cast<size_t>(c)] = o.value;
+			}
+		}
+	}
+	buildLevels();
+}
+
+cv::Mat CorrelationTables::prepare(int width, int height, double x0, double y0, double res,
+	int top, const std::function<void(cv::Mat& surface)>& drawSurface)
+{
 	m_width = width;
 	m_height = height;
 	m_x0 = x0;
@@ -37,32 +98,40 @@ void CorrelationTables::build(int width, int height, double x0, double y0, doubl
 	m_top = top;
 	cv::Mat surface(m_height, m_width, CV_8U, cv::Scalar(255));
 	drawSurface(surface);
-	cv::Mat distance;
-	cv::distanceTransform(surface, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
 	const size_t cells = static_cast<size_t>(m_width) * static_cast<size_t>(m_height);
 	m_distance.resize(cells);
-	cv::Mat metres(m_height, m_width, CV_32F, m_distance.data());
-	distance.convertTo(metres, CV_32F, res);
 	m_levels.resize(static_cast<size_t>(m_top) + 1);
-	for (auto& t : m_levels) t.resize(cells);  // every cell is written below
-	cv::Mat table(m_height, m_width, CV_32F, m_levels[0].data());
-	// exp(-d^2 / 2 sigma^2), d in metres.
-	const double k = -0.5 * (res / hitSigma) * (res / hitSigma);
-	cv::multiply(distance, distance, distance, k);
-	cv::exp(distance, table);
+	for (auto& t : m_levels) t.resize(cells);  // every cell is written by the build
+	return surface;
+}
 
-	// Level L + 1 is the maximum of four shifted level-L views.
+void CorrelationTables::buildLevels()
+{
+	// Level L + 1 is the maximum of four shifted level-L views: one pass per
+	// level (the tables of a real log's scan are millions of cells, and a
+	// copy and three in-place maxima read and wrote each of them 11 times).
+	// Cells within 2^L of the high edges keep level L's value.
+	const size_t W = static_cast<size_t>(m_width);
 	for (int L = 0; L < m_top; L++)
 	{
-		const int sft = 1 << L;
-		cv::Mat src(m_height, m_width, CV_32F, m_levels[static_cast<size_t>(L)].data());
-		cv::Mat dst(m_height, m_width, CV_32F, m_levels[static_cast<size_t>(L) + 1].data());
-		src.copyTo(dst);
-		const int w = m_width - sft, h = m_height - sft;
-		cv::Mat d = dst(cv::Rect(0, 0, w, h));
-		cv::max(d, src(cv::Rect(sft, 0, w, h)), d);
-		cv::max(d, src(cv::Rect(0, sft, w, h)), d);
-		cv::max(d, src(cv::Rect(sft, sft, w, h)), d);
+		const size_t sft = size_t{1} << L;
+		const float* src = m_levels[static_cast<size_t>(L)].data();
+		float* dst = m_levels[static_cast<size_t>(L) + 1].data();
+		for (size_t v = 0; v < static_cast<size_t>(m_height); v++)
+		{
+			const float* a = src + v * W;
+			float* out = dst + v * W;
+			if (v + sft >= static_cast<size_t>(m_height) || sft >= W)
+			{
+				std::copy(a, a + W, out);
+				continue;
+			}
+			const float* b = a + sft * W;
+			const size_t inner = W - sft;
+			for (size_t u = 0; u < inner; u++)
+				out[u] = std::max(std::max(a[u], a[u + sft]), std::max(b[u], b[u + sft]));
+			std::copy(a + inner, a + W, out + inner);
+		}
 	}
 }
 

@@ -20,6 +20,10 @@ namespace
 /** The tables never exceed this many cells: a reference spread wider than
  * resolution x 1500 cells per side is searched at a coarser resolution. */
 constexpr double kMaxTableCells = 1500.0 * 1500.0;
+/** The tables hold distances up to this many widths of the wider score
+ * (CorrelationTables::buildNear): the featloc-bench --pairs files of the
+ * office and edmonton are byte-identical to the exact transform's. */
+constexpr double kNearSigmas = 5.0;
 
 /** The breakpoint rule that joins reference points into surfaces: lambda
  * (the most grazing incidence still one surface) and the range noise. */
@@ -223,7 +227,7 @@ void CorrelativeScanSearch::buildTables(const ScanPoints& reference, double half
 	// sqrt(2) s apart on average, and a score narrower than that would
 	// judge solutions by their noise.
 	m_sharpSigma = std::max(options.sharpSigma, kSharpNoiseFactor * m_noise.estimate(reference.points, m_segments));
-	m_tables.build(width, height, x0, y0, res, options.hitSigma, top, [&](cv::Mat& surface) {
+	auto draw = [&](cv::Mat& surface) {
 		auto pixel = [&](const ScanPoint& p) {
 			return cv::Point(static_cast<int>((p.x - x0) / res), static_cast<int>((p.y - y0) / res));
 		};
@@ -231,7 +235,12 @@ void CorrelativeScanSearch::buildTables(const ScanPoints& reference, double half
 			for (uint32_t i = seg.first + 1; i <= seg.last; i++)
 				cv::line(surface, pixel(reference.points[i - 1]), pixel(reference.points[i]),
 					cv::Scalar(0), 1, cv::LINE_8);
-	});
+	};
+	// Distances beyond kNearSigmas of both scores' widths change neither
+	// score (exp(-12.5) = 4e-6 of a hit) but cost an exact transform of
+	// the whole table: a real log's scan spans millions of cells.
+	m_tables.buildNear(width, height, x0, y0, res, options.hitSigma, top,
+		kNearSigmas * std::max(options.hitSigma, m_sharpSigma), draw);
 	m_builtReference = reference;
 	m_builtTop = top;
 	m_builtOptions = tableOptions;

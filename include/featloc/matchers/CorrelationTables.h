@@ -48,6 +48,17 @@ class CorrelationTables
 	 * (x0 + u res, y0 + v res)). */
 	void build(int width, int height, double x0, double y0, double resolution, double hitSigma,
 		int top, const std::function<void(cv::Mat& surface)>& drawSurface);
+	/** The same with distances known only up to `maxDistance` [m] (> 0):
+	 * each surface pixel writes the cells within it, so the cost follows
+	 * the surface's length instead of the table's area (a real log's scan
+	 * spans tens of metres: millions of cells for a few thousand surface
+	 * pixels). Within maxDistance the distances are the exact transform's
+	 * and the table's values the same to float rounding; beyond,
+	 * distanceAt() is infinite and the table 0, where the exact table holds
+	 * at most exp(-maxDistance^2 / 2 hitSigma^2). */
+	void buildNear(int width, int height, double x0, double y0, double resolution,
+		double hitSigma, int top, double maxDistance,
+		const std::function<void(cv::Mat& surface)>& drawSurface);
 
 	/** Poses searched: centre (+) (dx res, dy res, dw yawStep) for
 	 * |dx| <= nx, |dy| <= ny, |dw| <= nYaw (the translation is in the
@@ -91,6 +102,11 @@ class CorrelationTables
 	int height() const { return m_height; }
 
    private:
+	/** Sets the geometry, sizes the tables and returns the drawn surface. */
+	cv::Mat prepare(int width, int height, double x0, double y0, double resolution, int top,
+		const std::function<void(cv::Mat& surface)>& drawSurface);
+	/** Levels 1..top from level 0. */
+	void buildLevels();
 	/** Index of table cell (u, v) in the row-major tables, -1 outside. */
 	long cellIndex(int u, int v) const;
 
