@@ -18,7 +18,8 @@ namespace featloc
  * cells (localization/GlobalMapSearch, global localization).
  *
  * Level 0 holds exp(-d^2 / 2 sigma_hit^2) per cell, d the distance to the
- * reference surface (OpenCV's distance transform); level L holds the
+ * reference surface (OpenCV's distance transform, or buildNear's near the
+ * surface only); level L holds the
  * maximum over the 2^L x 2^L cells at and above-right of each cell, so that
  * one lookup bounds every translation of a block of that side. A pose's
  * score is the mean table value under the points it places: the share of

@@ -20,7 +20,8 @@ namespace featloc
  *
  * The reference scan becomes a lookup table: each cell holds
  * exp(-d^2 / 2 sigma_hit^2), d the distance to the reference surface (its
- * points joined where consecutive, OpenCV's distance transform). A pose's
+ * points joined where consecutive; distances within 5 widths of the
+ * scores, CorrelationTables::buildNear). A pose's
  * score is the mean table value under the current scan's points placed by
  * that pose: the share of the scan that lies on the reference. Every pose of
  * the guess's 3-sigma window is scored, on a grid of `resolution` in
