@@ -454,6 +454,45 @@ TEST(FeatlocEval, PlotAndTextReport)
 	EXPECT_NE(bad.output.find("nope.tum' does not exist"), std::string::npos) << bad.output;
 }
 
+// --paired-with: two estimates of one run compared step by step. B is A
+// with a jump of 30 cm in five steps (and back the step after): ten steps
+// off for B alone, and A's RPE lower on average.
+TEST(FeatlocEval, PairedWithComparesTwoEstimatesStepByStep)
+{
+	TempDir dir;
+	std::ofstream gt(dir.file("gt.txt")), a(dir.file("a.txt")), b(dir.file("b.txt"));
+	for (int i = 0; i < 200; i++)
+	{
+		const double t = i * 0.1, x = 0.05 * i, noise = 0.002 * std::sin(1.7 * i);
+		gt << t << " " << x << " 0 0\n";
+		a << t << " " << x + noise << " 0 0\n";
+		b << t << " " << x + noise + (i % 40 == 20 ? 0.3 : 0.0) << " 0 0\n";
+	}
+	gt.close();
+	a.close();
+	b.close();
+	const std::string common = shellQuote(kEval) + " " + shellQuote(dir.file("gt.txt")) + " " +
+		shellQuote(dir.file("a.txt")) + " --paired-with " + shellQuote(dir.file("b.txt"));
+	const CommandResult r = runCommand(common + " -j");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto j = nlohmann::json::parse(r.output);
+	const auto& p = j["paired"];
+	EXPECT_EQ(p["steps"], 199);
+	EXPECT_EQ(p["off_only_this"], 0);
+	EXPECT_EQ(p["off_only_other"], 10);
+	EXPECT_LT(p["mcnemar_p"].get<double>(), 0.01);
+	// Mean difference: -0.3 m x 10 steps / 199.
+	EXPECT_NEAR(p["rpe_trans_mean_diff_m"].get<double>(), -3.0 / 199, 1e-4);
+	EXPECT_LT(p["ci95_m"][1].get<double>(), 0.0);
+	const CommandResult text = runCommand(common);
+	ASSERT_EQ(text.exitCode, 0) << text.output;
+	EXPECT_NE(text.output.find("only this 0, only the other 10"), std::string::npos) << text.output;
+	const CommandResult missing = runCommand(shellQuote(kEval) + " " + shellQuote(dir.file("gt.txt")) +
+		" " + shellQuote(dir.file("a.txt")) + " --paired-with " + shellQuote(dir.file("nope.txt")));
+	EXPECT_EQ(missing.exitCode, 1);
+	EXPECT_NE(missing.output.find("nope.txt' does not exist"), std::string::npos) << missing.output;
+}
+
 TEST(FeatlocRun, ShippedSimulatedScenesAgainstTheirGroundTruth)
 {
 	registerClasses();

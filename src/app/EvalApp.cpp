@@ -2,16 +2,63 @@
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
+#include <mrpt/core/bits_math.h>
+
+#include <cmath>
 #include <cstdio>
+#include <map>
+#include <nlohmann/json.hpp>
 
 #include "featloc/app/AppMain.h"
 #include "featloc/app/UsageError.h"
+#include "featloc/eval/PairedComparison.h"
 #include "featloc/eval/TrajectoryEvaluator.h"
 #include "featloc/eval/TrajectoryFile.h"
 #include "featloc/eval/TrajectoryPlot.h"
 
 namespace featloc
 {
+namespace
+{
+/** --paired-with: `a`'s RPE steps against `b`'s on the reference steps both
+ * have (the same two reference poses), as JSON, and as text in `text`. A
+ * step is off when its RPE exceeds featloc-bench's gross error (10 cm or
+ * 2 deg). Throws UsageError when they share no step. */
+nlohmann::json pairedSteps(const EvaluationReport& a, const EvaluationReport& b,
+	const std::string& otherName, std::string& text)
+{
+	constexpr double kOffTrans = 0.10, kOffYaw = mrpt::DEG2RAD(2.0);
+	std::map<std::pair<size_t, size_t>, const EvaluationReport::StepError*> ofB;
+	for (const auto& s : b.rpeSteps) ofB[{s.from, s.to}] = &s;
+	std::vector<double> ta, tb;
+	std::vector<bool> ga, gb;
+	for (const auto& s : a.rpeSteps)
+	{
+		const auto it = ofB.find({s.from, s.to});
+		if (it == ofB.end()) continue;
+		ta.push_back(s.translation);
+		tb.push_back(it->second->translation);
+		ga.push_back(s.translation > kOffTrans || s.rotation > kOffYaw);
+		gb.push_back(it->second->translation > kOffTrans || it->second->rotation > kOffYaw);
+	}
+	if (ta.empty())
+		throw UsageError("--paired-with '" + otherName +
+			"': no step of the reference is covered by both estimates (other times?)");
+	const auto c = PairedComparison::of(ta, ga, tb, gb);
+	char buf[512];
+	std::snprintf(buf, sizeof(buf),
+		"\npaired with %s over %zu common steps:\n"
+		"  RPE translation mean difference (this - other): %+.2f mm, 95%% interval (%+.2f, %+.2f)\n"
+		"  steps off by > 10 cm or 2 deg: only this %zu, only the other %zu (McNemar p = %.2g)\n",
+		otherName.c_str(), c.pairs, c.meanDiff * 1e3, c.ciLow * 1e3, c.ciHigh * 1e3, c.onlyA,
+		c.onlyB, c.mcnemarP);
+	text = buf;
+	return {{"with", otherName}, {"steps", c.pairs}, {"rpe_trans_mean_diff_m", c.meanDiff},
+		{"ci95_m", {c.ciLow, c.ciHigh}}, {"off_only_this", c.onlyA},
+		{"off_only_other", c.onlyB}, {"mcnemar_p", c.mcnemarP}};
+}
+}  // namespace
+
 int EvalApp::main(int argc, char** argv)
 {
 	TCLAP::CmdLine cmd(
@@ -38,6 +85,14 @@ int EvalApp::main(int argc, char** argv)
 		"Write the NEES of every pose ('t nees' rows; the estimate needs "
 		"covariances, as poses_cov.txt)",
 		false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> argPairedWith("", "paired-with",
+		"Another estimate of the same run (another matcher, another setting): "
+		"ESTIMATE against it step by step, on the reference's steps both cover: "
+		"the mean RPE translation difference with its 95% block-bootstrap "
+		"interval, and the steps only one of the two gets off by more than 10 cm "
+		"or 2 deg, with McNemar's p (whatever the reference's own error, which "
+		"both share, cancels)",
+		false, "", "OTHER", cmd);
 	TCLAP::SwitchArg argJson("j", "json", "Print JSON instead of a table", cmd);
 	TCLAP::ValueArg<double> argMaxDt(
 		"", "max-dt", "Max time difference when associating poses [s]", false,
@@ -105,10 +160,23 @@ int EvalApp::main(int argc, char** argv)
 			TrajectoryPlot::write(argPlot.getValue(), ref, est, rep.alignment, title);
 		}
 	}
+	std::string json = rep.toJson();
+	std::string paired;
+	if (argPairedWith.isSet())
+	{
+		if (refFormat == TrajectoryFile::Format::Relations)
+			throw UsageError("--paired-with needs a reference trajectory, not relations");
+		const Trajectory other = TrajectoryFile::read(argPairedWith.getValue());
+		const EvaluationReport otherRep =
+			evaluator.evaluate(TrajectoryFile::read(argRef.getValue(), refFormat), other);
+		auto j = nlohmann::json::parse(json);
+		j["paired"] = pairedSteps(rep, otherRep, argPairedWith.getValue(), paired);
+		json = j.dump(2);
+	}
 	if (!argJson.getValue())
 		std::printf("reference: %s (%s)\n", argRef.getValue().c_str(),
 			TrajectoryFile::formatDescription(refFormat).c_str());
-	std::printf("%s\n", argJson.getValue() ? rep.toJson().c_str() : rep.toText().c_str());
+	std::printf("%s\n", argJson.getValue() ? json.c_str() : (rep.toText() + paired).c_str());
 	return 0;
 }
 }  // namespace featloc

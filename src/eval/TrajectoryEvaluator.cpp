@@ -173,6 +173,7 @@ EvaluationReport TrajectoryEvaluator::evaluate(
 			asPose(estimate.poses[e]) - asPose(estimate.poses[e0]));
 		rpeT.push_back(et);
 		rpeR.push_back(er);
+		rep.rpeSteps.push_back({r0, r, et, er});
 	}
 	rep.ate = ErrorStats::of(pos);
 	rep.ateRotation = ErrorStats::of(rot);

@@ -32,6 +32,16 @@ struct EvaluationReport
 	ErrorStats ateRotation;	 //!< absolute yaw error after alignment [rad]
 	ErrorStats rpeTranslation;	//!< consecutive associated poses [m]
 	ErrorStats rpeRotation;	 //!< [rad]
+	/** The RPE step by step: between reference poses `from` and `to`
+	 * (indices of the reference, consecutive associated poses), for
+	 * comparing two estimates of the same reference pair by pair
+	 * (featloc-eval --paired-with). */
+	struct StepError
+	{
+		size_t from = 0, to = 0;
+		double translation = 0, rotation = 0;  //!< [m], [rad]
+	};
+	std::vector<StepError> rpeSteps;
 
 	// Consistency, when the estimate has covariances.
 	bool hasNees = false;
