@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -855,6 +856,21 @@ TEST(FeatlocBench, EveryPairsOutcomeIsWrittenAndGivesTheTablesFigures)
 		}
 		EXPECT_NEAR(sumT / 40, res["mean_trans_err_m"].get<double>(), 1e-6) << res["matcher"];
 		EXPECT_EQ(res["gross_used"].get<size_t>(), gross) << res["matcher"];
+		// The table's flagged cell: failed matches (the guess used) plus
+		// flagged matches used, as the rows' statuses count them.
+		size_t failed = 0, flaggedUsed = 0;
+		for (const auto& c : table)
+		{
+			if (c[3] == "failed") failed++;
+			else if (c[3] != "used") flaggedUsed++;
+		}
+		EXPECT_EQ(res["failures"].get<size_t>(), failed) << res["matcher"];
+		EXPECT_EQ(res["ambiguous_used"].get<size_t>(), flaggedUsed) << res["matcher"];
+		char cell[96];
+		std::snprintf(cell, sizeof(cell), "| office | %s | 40 | %.1f%% = %.1f + %.1f |",
+			res["matcher"].get<std::string>().c_str(), 2.5 * static_cast<double>(failed + flaggedUsed),
+			2.5 * static_cast<double>(failed), 2.5 * static_cast<double>(flaggedUsed));
+		EXPECT_NE(r.output.find(cell), std::string::npos) << cell << "\n" << r.output;
 		EXPECT_GE(gross, res["silent_gross_errors"].get<size_t>()) << res["matcher"];
 		if (res["matcher"] == "never")
 		{
