@@ -308,3 +308,42 @@ TEST(FeatlocSim, WritesAllOutputsAndRejectsBadWorlds)
 		EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
 	}
 }
+
+// --frozen: the same world with nothing moving (no agents, every door held
+// at its angle at t = 0) along the same path: what the moving things cost a
+// matcher is its error on the world's log against this one's.
+TEST(FeatlocSim, FrozenWorldHoldsDoorsDropsAgentsKeepsThePath)
+{
+	const SimWorld world = loadWorld("room-moving-objects.ini", {}).world;
+	ASSERT_FALSE(world.agents().empty());
+	ASSERT_EQ(world.doors().size(), 2u);
+	const SimWorld still = world.frozen();
+	EXPECT_TRUE(still.agents().empty());
+	EXPECT_EQ(still.segments().size(), world.segments().size());
+	EXPECT_EQ(still.circles().size(), world.circles().size());
+	ASSERT_EQ(still.doors().size(), world.doors().size());
+	for (size_t k = 0; k < world.doors().size(); k++)
+		for (double t : {0.0, 10.0, 60.0})
+		{
+			const WallSegment held = still.doors()[k].segmentAt(t),
+							  first = world.doors()[k].segmentAt(0);
+			EXPECT_NEAR(held.b.x, first.b.x, 1e-12) << k << " " << t;
+			EXPECT_NEAR(held.b.y, first.b.y, 1e-12) << k << " " << t;
+		}
+	// The doors do swing in the world itself (10 s: both are open).
+	EXPECT_GT(std::abs(world.doors()[0].angleAt(10) - world.doors()[0].angleAt(0)), 1.0);
+	EXPECT_GT(std::abs(world.doors()[1].angleAt(10) - world.doors()[1].angleAt(0)), 1.0);
+
+	TempDir dir;
+	const std::string common = shellQuote(kSim) + " " + shellQuote(kWorlds + "room-moving-objects.ini") +
+		" --set Simulation:max_scans=60 -q --seed 2 --out ";
+	const auto moving = runCommand(common + shellQuote(dir.file("moving")));
+	const auto frozen = runCommand(common + shellQuote(dir.file("frozen")) + " --frozen");
+	ASSERT_EQ(moving.exitCode, 0) << moving.output;
+	ASSERT_EQ(frozen.exitCode, 0) << frozen.output;
+	EXPECT_EQ(fileBytes(dir.file("moving.gt.txt")), fileBytes(dir.file("frozen.gt.txt")));
+	EXPECT_NE(fileBytes(dir.file("moving.rawlog")), fileBytes(dir.file("frozen.rawlog")));
+	const auto verbose = runCommand(shellQuote(kSim) + " " + shellQuote(kWorlds + "room-moving-objects.ini") +
+		" --set Simulation:max_scans=5 --frozen --out " + shellQuote(dir.file("v")));
+	EXPECT_NE(verbose.output.find("0 people, 0 carts, 2 doors"), std::string::npos) << verbose.output;
+}

@@ -179,6 +179,12 @@ int SimApp::main(int argc, char** argv)
 		"drops and connections are refused for D s), stall@T:D (link up, the device "
 		"sends and answers nothing for D s) or garbage@T (a malformed scan); repeatable",
 		false, "FAULT", cmd);
+	TCLAP::SwitchArg argFrozen("", "frozen",
+		"Simulate the world with nothing moving: no [Agent.*], every [Door.*] held where "
+		"it is at t = 0; the robot's path, the odometry and the laser are the same. A "
+		"matcher's error on this log against the world's own (featloc-bench) is what the "
+		"moving things cost it",
+		cmd);
 	ConfigCommandLine config(cmd, "Laser:preset=hokuyo_utm30lx",
 		"the settings sections with every key, default and unit");
 	int exitCode = 0;
@@ -218,6 +224,7 @@ int SimApp::main(int argc, char** argv)
 	SimConfiguration sc = SimConfiguration::load(cfg);
 	cfg.requireAllKeysRead();
 	if (argSeed.isSet()) sc.simulation.seed = argSeed.getValue();
+	if (argFrozen.getValue()) sc.world = sc.world.frozen();
 	if (argServe.getValue()) sc.simulation.format = 2;	// odometry readings to serve
 
 	const std::string prefix = argOut.getValue();

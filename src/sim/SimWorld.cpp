@@ -278,6 +278,21 @@ SimWorld SimWorld::fromConfig(const mrpt::config::CConfigFileBase& cfg)
 	return w;
 }
 
+SimWorld SimWorld::frozen() const
+{
+	SimWorld w;
+	w.m_segments = m_segments;
+	w.m_circles = m_circles;
+	for (const auto& d : m_doors)
+	{
+		SwingingDoor::Params p = d.params();
+		p.swing = {{0.0, d.angleAt(0)}};
+		p.period = 0;
+		w.m_doors.emplace_back(p);
+	}
+	return w;
+}
+
 const std::vector<WallSegment>& SimWorld::segmentsAt(
 	double t, std::vector<WallSegment>& scratch) const
 {

@@ -49,6 +49,13 @@ class SimWorld
 	const std::vector<WalkingAgent>& agents() const { return m_agents; }
 	const std::vector<SwingingDoor>& doors() const { return m_doors; }
 
+	/** The same world with nothing moving: no agents, and every door held
+	 * at its angle at t = 0 (featloc-sim --frozen). A matcher's error on a
+	 * log of this world, against its error on the world's own log along
+	 * the same path, is what the moving things cost it: the floor that
+	 * rejecting them can reach. */
+	SimWorld frozen() const;
+
 	/** The segments the laser sees at time t: the static ones (first, in
 	 * the order of segments()), then every door's and every cart's. Without
 	 * doors and carts that is segments() itself (no copy); otherwise they
