@@ -378,7 +378,8 @@ TEST(IdcMatcher, ACorridorMatchKeepsTheGuessAlongItsUnconstrainedDirection)
 			<< cls << ": " << off.failureReason;
 		EXPECT_EQ(off.freeDirection.asEigen().norm(), 0.0) << cls;
 
-		const MatchResult r = matcher(cls)->match(*ref, *cur, guess);
+		// (CF-IDC's default is off: its IDC fallback keeps the guess; below.)
+		const MatchResult r = matcher(cls, "free_direction_from_guess=true")->match(*ref, *cur, guess);
 		ASSERT_TRUE(r.success) << cls << ": " << r.failureReason;
 		EXPECT_TRUE(r.ambiguous) << cls;
 		EXPECT_TRUE(r.guessKeptAlongFreeDirection) << cls;
@@ -392,6 +393,19 @@ TEST(IdcMatcher, ACorridorMatchKeepsTheGuessAlongItsUnconstrainedDirection)
 		EXPECT_LT(std::sqrt(r.estimate.cov(1, 1)), 0.01) << cls;
 		EXPECT_LT(std::sqrt(r.estimate.cov(2, 2)), mrpt::DEG2RAD(0.5)) << cls;
 	}
+	// CF-IDC as config.ini has it: its segments' failure goes to its IDC
+	// fallback, which keeps the guess along the corridor from the whole
+	// scans.
+	const MatchResult r =
+		test::configuredMatcher("featloc::CfIdcMatcher")->match(*ref, *cur, guess);
+	ASSERT_TRUE(r.success) << r.failureReason;
+	EXPECT_TRUE(r.guessKeptAlongFreeDirection);
+	EXPECT_NE(r.primaryFailure.find("featloc::CfIdcMatcher: the paired points leave the translation"),
+		std::string::npos)
+		<< r.primaryFailure;
+	EXPECT_NEAR(r.estimate.mean.x(), guess.mean.x(), 1e-4);
+	EXPECT_NEAR(r.estimate.mean.y(), truth.y(), 2e-3);
+	EXPECT_NEAR(r.estimate.mean.phi(), truth.phi(), 1e-3);
 }
 
 // The same on a real pair: featloc-bench's pair 359 of the simulated
@@ -414,7 +428,7 @@ TEST(IdcMatcher, OnARealCorridorPairTheGuessIsKeptAlongTheCorridorOnly)
 	{
 		EXPECT_FALSE(matcher(cls, "free_direction_from_guess=false")->match(ref, cur, guess).success)
 			<< cls;
-		const MatchResult r = matcher(cls)->match(ref, cur, guess);
+		const MatchResult r = matcher(cls, "free_direction_from_guess=true")->match(ref, cur, guess);
 		ASSERT_TRUE(r.success) << cls << ": " << r.failureReason;
 		EXPECT_TRUE(r.guessKeptAlongFreeDirection) << cls;
 		const Eigen::Vector3d w = r.freeDirection.asEigen();

@@ -5,7 +5,9 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/random/RandomGenerators.h>
 
+#include <Eigen/Dense>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "featloc/core/ConfigError.h"
@@ -355,4 +357,48 @@ TEST(ScanMatcherFallback, CfIdcsFailureOnARealLogIsMadeByIdc)
 	EXPECT_EQ(r.primaryFailure.rfind("featloc::CfIdcMatcher: too few pairs", 0), 0u) << r.primaryFailure;
 	EXPECT_LT(std::hypot(r.estimate.mean.x() - truth.x(), r.estimate.mean.y() - truth.y()), 0.05);
 	EXPECT_LT(std::abs(r.estimate.mean.phi() - truth.phi()), mrpt::DEG2RAD(1.0));
+}
+
+// A CF-IDC match whose segments leave one direction free goes to its IDC
+// fallback (free_direction_from_guess is off in CF-IDC's section by
+// default). The held-out corridor with people, seed 2, at the far end's
+// turn: the matcher chain's match of the scan at t = 74.0 s to its
+// keyframe at 71.4 s, with the odometry's guess and covariance. People
+// hide the corridor's features; CF-IDC's segments fix the heading to
+// 0.6 deg there (their covariance says 0.27 deg), and that match became
+// the chain's next keyframe. IDC from the whole scans keeps the guess along
+// the corridor as well and fixes the heading and the cross-track position
+// from every point.
+TEST(ScanMatcherFallback, CfIdcsFreeDirectionIsLeftToIdcOnTheWholeScans)
+{
+	mrpt::obs::CObservation2DRangeScan ref, cur;
+	test::readScanPair("corridor-people-seed2-scans-71.4-74.0.rawlog", ref, cur);
+	const CPose2D truth(1.028823, 0.096678, 0.106859);	// worlds/corridor-people.ini, seed 2
+	Eigen::Matrix3d P;
+	P << 1.920595e-04, -1.848432e-06, -2.442760e-06, -1.848432e-06, 2.111086e-04, 2.478590e-05,
+		-2.442760e-06, 2.478590e-05, 3.995288e-05;	// the odometry's, from the run's matches.txt
+	const mrpt::poses::CPosePDFGaussian guess(
+		CPose2D(1.020149, 0.100896, 0.100919), mrpt::math::CMatrixDouble33(P));
+
+	const MatchResult own =
+		fromIni("featloc::CfIdcMatcher", "[ScanMatcher.CfIdcMatcher]\nfree_direction_from_guess = true\n")
+			->match(ref, cur, guess);
+	ASSERT_TRUE(own.success) << own.failureReason;
+	EXPECT_TRUE(own.guessKeptAlongFreeDirection);
+	EXPECT_TRUE(own.primaryFailure.empty()) << own.primaryFailure;
+	const double ownYaw = std::abs(own.estimate.mean.phi() - truth.phi());
+	std::printf("CF-IDC's own: heading %.3f deg off (sigma %.3f)\n", mrpt::RAD2DEG(ownYaw),
+		mrpt::RAD2DEG(std::sqrt(own.estimate.cov(2, 2))));
+
+	const MatchResult r = fromIni("featloc::CfIdcMatcher", "")->match(ref, cur, guess);
+	ASSERT_TRUE(r.success) << r.failureReason;
+	EXPECT_TRUE(r.guessKeptAlongFreeDirection);
+	EXPECT_EQ(r.primaryFailure.rfind("featloc::CfIdcMatcher: ", 0), 0u) << r.primaryFailure;
+	EXPECT_NE(r.primaryFailure.find("unconstrained"), std::string::npos) << r.primaryFailure;
+	const double yaw = std::abs(r.estimate.mean.phi() - truth.phi());
+	std::printf("by IDC: heading %.3f deg off (sigma %.3f), cross-track %.1f mm\n", mrpt::RAD2DEG(yaw),
+		mrpt::RAD2DEG(std::sqrt(r.estimate.cov(2, 2))), 1e3 * (r.estimate.mean.y() - truth.y()));
+	EXPECT_GT(ownYaw, mrpt::DEG2RAD(0.4));
+	EXPECT_LT(yaw, mrpt::DEG2RAD(0.15));
+	EXPECT_LT(yaw, 3 * std::sqrt(r.estimate.cov(2, 2)));
 }

@@ -71,8 +71,15 @@ class CfIdcMatcher : public ScanMatcher
 	 * is made by IDC on the whole scans by default (fallback_class): on
 	 * the real logs CF-IDC's segments leave the motion unconstrained where
 	 * IDC's points do not (doc/benchmarks.md, "Issue 15, thirteenth
-	 * session"). The paper has none: fallback_class empty. */
-	CfIdcMatcher() : ScanMatcher("featloc::IdcMatcher") {}
+	 * session"). The paper has none: fallback_class empty.
+	 * A match that fails only because its segments leave one direction
+	 * free goes to that fallback too (free_direction_from_guess false
+	 * here): IDC keeps the guess along the direction its own points leave
+	 * free, and fixes the other two from the whole scans, where CF-IDC's
+	 * segments gave heading errors of 0.4-0.6 deg at the corridor's turn
+	 * and a matcher chain 3.5 times IDC's (doc/benchmarks.md, "Issue 15,
+	 * fourteenth session"). */
+	CfIdcMatcher() : ScanMatcher("featloc::IdcMatcher", false) {}
 
 	struct Parameters : public mrpt::config::CLoadableOptions
 	{

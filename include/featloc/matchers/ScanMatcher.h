@@ -96,9 +96,12 @@ class ScanMatcher : public mrpt::rtti::CObject
 
    protected:
 	/** `defaultFallbackClass`: the fallback_class of a matcher whose
-	 * configuration does not name one (PCM: ICP). */
-	explicit ScanMatcher(std::string defaultFallbackClass = {})
-		: m_fallbackClass(std::move(defaultFallbackClass))
+	 * configuration does not name one (PCM and CF-IDC: IDC);
+	 * `defaultFreeDirectionFromGuess`: its free_direction_from_guess. */
+	explicit ScanMatcher(
+		std::string defaultFallbackClass = {}, bool defaultFreeDirectionFromGuess = true)
+		: m_fallbackClass(std::move(defaultFallbackClass)),
+		  m_freeDirectionFromGuess(defaultFreeDirectionFromGuess)
 	{
 	}
 
@@ -187,7 +190,7 @@ class ScanMatcher : public mrpt::rtti::CObject
 	std::shared_ptr<ScanMatcher> m_fallback;
 	bool m_followFallback = true;  //!< false for a fallback itself
 	bool m_fallbackOnAmbiguity = true;	//!< `fallback_on_ambiguity`
-	bool m_freeDirectionFromGuess = true;	 //!< `free_direction_from_guess`
+	bool m_freeDirectionFromGuess;	//!< `free_direction_from_guess`
 	bool m_lastMatchByFallback = false;	 //!< for inspectLastMatch()
 	void checkAgainstGuess(const mrpt::poses::CPosePDFGaussian& guess, MatchResult& r) const;
 };
