@@ -21,12 +21,6 @@ source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-cfidc-free-direction "$@"
 
 sim_corridor_seeds
-summary() { jq -r '"\((.evaluation.ate_m.rmse // -0.001) * 1000 | round) / \(.counts.match_failures) / \(.counts.fallback_matcher_matches)"' "$OUT/$1/summary.json"; }
-paired() { # reference, name (NAME-new against NAME-old)
-  "$BIN/featloc-eval" "$1" "$OUT/$2-new/poses_cov.txt" --paired-with "$OUT/$2-old/poses_cov.txt" -j |
-    jq -r '.paired | "\(.rpe_trans_mean_diff_m * 1e5 | round / 100) (\(.ci95_m[0] * 1e5 | round / 100), \(.ci95_m[1] * 1e5 | round / 100)); \(.off_only_this) / \(.off_only_other), p = \(.mcnemar_p * 1000 | round / 1000)"'
-}
-
 machine_line
 echo
 echo "### Whole runs: old = free_direction_from_guess true in CF-IDC's section, new = config.ini (false)"
@@ -34,23 +28,8 @@ echo
 echo "| log | estimator | old: ATE [mm] / failed / fallback matches | new: the same | step by step, new - old: RPE difference [mm] (95%); steps off only new / only old, McNemar p |"
 echo "|---|---|---|---|---|"
 for est in matcher ekf; do
-  cases=("bundled::$ROOT/rawlogs/mrpt-simul/simul.gt.txt")
-  for s in 1 2 3 4 5 6; do cases+=("corridor-seed$s:$OUT/corridor-people-seed$s.rawlog:$OUT/corridor-people-seed$s.gt.txt"); done
-  for f in $(held_out_radish_logs); do cases+=("$(basename "$f" -corrected.log.gz):$f:"); done
-  for c in "${cases[@]}"; do
-    IFS=: read -r name input gt <<< "$c"
-    for v in old new; do
-      [ $v = old ] && free=true || free=false
-      bench_featloc_run "$name-$est-$v" "$input" "$gt" --set ScanMatcher:class=featloc::CfIdcMatcher \
-        --set "Pipeline:estimator=$est" --set "ScanMatcher.CfIdcMatcher:free_direction_from_guess=$free"
-    done
-    ref="$gt"
-    if [ -z "$ref" ]; then
-      ref="$OUT/$name.reference.txt"
-      python3 "$ROOT/scripts/carmen-reference.py" "$input" "$OUT/$name-$est-new/poses_cov.txt" > "$ref"
-    fi
-    echo "| $name | $est | $(summary "$name-$est-old") | $(summary "$name-$est-new") | $(paired "$ref" "$name-$est") |"
-  done
+  whole_runs_two_ways "$est" "1 2 3 4 5 6" old "ScanMatcher.CfIdcMatcher:free_direction_from_guess=true" \
+    new "ScanMatcher.CfIdcMatcher:free_direction_from_guess=false" --set ScanMatcher:class=featloc::CfIdcMatcher
 done
 
 M="CF-IDC old=featloc::CfIdcMatcher{free_direction_from_guess=true},CF-IDC=featloc::CfIdcMatcher"

@@ -144,6 +144,40 @@ sim_corridor_seeds() {
         --seed "$seed" -q > /dev/null
   done
 }
+# Whole runs of one configuration two ways, A and B (featloc-run with the
+# --set options of each, estimator EST), on the bundled log, the corridor
+# with people (seeds SEEDS; sim_corridor_seeds first) and the held-out
+# Radish logs (references: scripts/carmen-reference.py): one table row per
+# log, "| log | EST | A | B | B against A |": ATE rmse [mm] / failed matches
+# / the fallback's matches of each, then B compared with A step by step
+# (featloc-eval B --paired-with A: mean RPE difference [mm] with its 95%
+# interval; the steps only one gets off by > 10 cm or 2 deg, McNemar's p).
+# Runs in $OUT/LOG-EST-A and $OUT/LOG-EST-B; further arguments go to both.
+whole_runs_two_ways() { # est, seeds, label A, --set of A, label B, --set of B, featloc-run args...
+  local est="$1" seeds="$2" a="$3" set_a="$4" b="$5" set_b="$6" cases=() c name input gt ref s f
+  shift 6
+  cases=("bundled::$ROOT/rawlogs/mrpt-simul/simul.gt.txt")
+  for s in $seeds; do cases+=("corridor-seed$s:$OUT/corridor-people-seed$s.rawlog:$OUT/corridor-people-seed$s.gt.txt"); done
+  for f in $(held_out_radish_logs); do cases+=("$(basename "$f" -corrected.log.gz):$f:"); done
+  for c in "${cases[@]}"; do
+    IFS=: read -r name input gt <<< "$c"
+    bench_featloc_run "$name-$est-$a" "$input" "$gt" --set "Pipeline:estimator=$est" "$@" --set "$set_a"
+    bench_featloc_run "$name-$est-$b" "$input" "$gt" --set "Pipeline:estimator=$est" "$@" --set "$set_b"
+    ref="$gt"
+    if [ -z "$ref" ]; then
+      ref="$OUT/$name.reference.txt"
+      python3 "$ROOT/scripts/carmen-reference.py" "$input" "$OUT/$name-$est-$b/poses_cov.txt" > "$ref"
+    fi
+    echo "| $name | $est | $(run_counts "$name-$est-$a") | $(run_counts "$name-$est-$b") | $(runs_paired "$ref" "$OUT/$name-$est-$b" "$OUT/$name-$est-$a") |"
+  done
+}
+# "ATE [mm] / failed matches / fallback matches" of the run $OUT/NAME.
+run_counts() { jq -r '"\((.evaluation.ate_m.rmse // -0.001) * 1000 | round) / \(.counts.match_failures) / \(.counts.fallback_matcher_matches)"' "$OUT/$1/summary.json"; }
+# Run B against run A step by step (featloc-eval REFERENCE B --paired-with A).
+runs_paired() { # reference, run B, run A
+  "$BIN/featloc-eval" "$1" "$2/poses_cov.txt" --paired-with "$3/poses_cov.txt" -j |
+    jq -r '.paired | "\(.rpe_trans_mean_diff_m * 1e5 | round / 100) (\(.ci95_m[0] * 1e5 | round / 100), \(.ci95_m[1] * 1e5 | round / 100)); \(.off_only_this) / \(.off_only_other), p = \(.mcnemar_p * 1000 | round / 1000)"'
+}
 # A benchmark's laser matcher: MATCHER from its second argument (else the
 # default given), and MATCHER_SETS, --set options for its arguments 3..
 # (KEY=VALUE in that matcher's section).
