@@ -28,30 +28,29 @@ M="IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcMatcher"
 M="$M,CF-IDC - curvature pairing=featloc::CfIdcMatcher{curvature_pairing=false}"
 M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
 
-run() { # world, seed, xy, yaw -> $OUT/WORLD-seedSEED-XY.txt
-  local log="$OUT/$1-seed$2"
-  [ -f "$log.rawlog" ] || "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$log" --seed "$2" -q > /dev/null
-  "$BIN/featloc-bench" "$ROOT/config.ini" "$log.rawlog" -g "$log.gt.txt" -m "$M" --paired-with IDC \
-    --perturb-xy "$3" --perturb-yaw-deg "$4" --seed "$2" -q --header --name "$1 +-$3/$4" \
+# One scene, seed and initial error through featloc-bench -> $OUT/LOG-XY.txt
+# (+ .json, .tsv), LOG = WORLD-seedSEED; with "frozen", LOG =
+# WORLD-frozen-seedSEED, the world simulated with nothing moving
+# (featloc-sim --frozen) and only IDC and CF-IDC, unpaired.
+run() { # world, seed, xy, yaw[, frozen]
+  local log="$OUT/$1-seed$2" m="$M" peer=IDC name="$1 +-$3/$4" sim=()
+  if [ "${5:-}" = frozen ]; then
+    log="$OUT/$1-frozen-seed$2" m="IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcMatcher" peer=none
+    name="$1 frozen +-$3/$4" sim=(--frozen)
+  fi
+  [ -f "$log.rawlog" ] || "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" "${sim[@]}" --out "$log" --seed "$2" -q > /dev/null
+  "$BIN/featloc-bench" "$ROOT/config.ini" "$log.rawlog" -g "$log.gt.txt" -m "$m" --paired-with "$peer" \
+    --perturb-xy "$3" --perturb-yaw-deg "$4" --seed "$2" -q --header --name "$name" \
     -j "$log-$3.json" --pairs "$log-$3.tsv" > "$log-$3.txt"
 }
 CASES="corridor-people:0.3:10 corridor-people:0.5:15 room-moving-objects:0.3:10 hall-people:0.3:10"
-# The same with nothing moving -> $OUT/WORLD-frozen-seedSEED-XY.txt (IDC, CF-IDC).
-frozen() { # world, seed, xy, yaw
-  local log="$OUT/$1-frozen-seed$2"
-  [ -f "$log.rawlog" ] || "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --frozen --out "$log" --seed "$2" -q > /dev/null
-  "$BIN/featloc-bench" "$ROOT/config.ini" "$log.rawlog" -g "$log.gt.txt" \
-    -m "IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcMatcher" --paired-with none \
-    --perturb-xy "$3" --perturb-yaw-deg "$4" --seed "$2" -q --header --name "$1 frozen +-$3/$4" \
-    -j "$log-$3.json" > "$log-$3.txt"
-}
 # "IDC CF-IDC" mean |t| errors [mm] of a featloc-bench JSON.
 means() { python3 -c 'import json,sys; r={x["matcher"]: x["mean_trans_err_m"] for x in json.load(open(sys.argv[1]))["results"]}; print("%.2f %.2f" % (1e3 * r["IDC"], 1e3 * r["CF-IDC"]))' "$1"; }
 
 machine_line
 for c in $CASES; do
   IFS=: read -r world xy yaw <<< "$c"
-  for seed in 1 2 3; do run "$world" "$seed" "$xy" "$yaw"; frozen "$world" "$seed" "$xy" "$yaw"; done
+  for seed in 1 2 3; do run "$world" "$seed" "$xy" "$yaw"; run "$world" "$seed" "$xy" "$yaw" frozen; done
 done
 
 echo

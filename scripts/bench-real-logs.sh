@@ -13,7 +13,7 @@
 #    difference with its 95% block-bootstrap interval, and the pairs only one
 #    of the two gets grossly wrong with McNemar's exact p. The reference's
 #    own error, which every matcher shares, cancels in both.
-# Usage: scripts/bench-real-logs.sh [OUTDIR]   (about 8 min on 2 cores)
+# Usage: scripts/bench-real-logs.sh [OUTDIR]   (about 3 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-real-logs "$@"

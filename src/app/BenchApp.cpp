@@ -244,10 +244,16 @@ void printHeader()
 	std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 }
 
+/** n of `of` in percent (0 when of is 0). */
+double share(size_t n, size_t of)
+{
+	return of ? 100.0 * static_cast<double>(n) / static_cast<double>(of) : 0.0;
+}
+
 std::string percent(size_t n, size_t of)
 {
 	char buf[32];
-	std::snprintf(buf, sizeof(buf), "%.1f%%", of ? 100.0 * static_cast<double>(n) / static_cast<double>(of) : 0.0);
+	std::snprintf(buf, sizeof(buf), "%.1f%%", share(n, of));
 	return buf;
 }
 
@@ -258,11 +264,9 @@ std::string percent(size_t n, size_t of)
  * rate compares with the first figure, not with the flagged total. */
 std::string flaggedCell(const ScanPairBenchmark::Result& r)
 {
-	const auto share = [&](size_t n)
-	{ return r.pairs ? 100.0 * static_cast<double>(n) / static_cast<double>(r.pairs) : 0.0; };
 	char buf[64];
-	std::snprintf(buf, sizeof(buf), "%.1f%% = %.1f + %.1f", share(r.flagged()), share(r.failures),
-		share(r.ambiguousUsed));
+	std::snprintf(buf, sizeof(buf), "%.1f%% = %.1f + %.1f", share(r.flagged(), r.pairs),
+		share(r.failures, r.pairs), share(r.ambiguousUsed, r.pairs));
 	return buf;
 }
 
