@@ -1,0 +1,52 @@
+#pragma once
+#include <vector>
+
+#include "featloc/scan/ScanPoints.h"
+
+namespace featloc
+{
+/** The step of a range lattice: a scanner, or a simulator, that reports
+ * its ranges on multiples of a step q, plus noise. MRPT's simulated log
+ * (rawlogs/mrpt-simul) is one: its ranges sit on multiples of 0.16 m with
+ * about 1 cm of noise on top. A surface then shows as arcs of constant
+ * range centred on the sensor, which move with it: a matcher that
+ * trusts them as surfaces is pulled towards "no motion", and a static
+ * segment can lie up to one step off the reference at the true motion.
+ *
+ * Detected from one scan's own ranges: the circular resultant
+ * R(f) = |mean exp(2 pi i f r_k)| is near exp(-2 pi^2 s^2 f^2) (s the
+ * noise) at f = 1/q and its harmonics, and of order 1/sqrt(n) elsewhere
+ * once the ranges span many steps. R is computed for every frequency at
+ * once as the DFT of the ranges' histogram (OpenCV), and refined at the
+ * lowest peak. */
+class RangeLattice
+{
+   public:
+	/** Steps looked for [m]: below minStep a lattice is finer than any
+	 * sensor's noise that matters here (SICK's 1 cm); above maxStep it is
+	 * no range finder. */
+	static constexpr double kMinStep = 0.02, kMaxStep = 0.3;
+	/** R at the step's frequency needed to call it a lattice (R is about
+	 * 0.1-0.2 at the best frequency of an unquantized 361-beam scan; a step
+	 * of 5 noise sigmas gives 0.45). */
+	static constexpr double kMinResultant = 0.5;
+	/** Fewest points, and fewest distinct lattice levels they occupy:
+	 * ranges in a few narrow clusters (two walls seen head on) agree in
+	 * phase at many frequencies without any lattice. */
+	static constexpr size_t kMinPoints = 50, kMinLevels = 5;
+	/** Only steps up to the ranges' interquartile range over this: where
+	 * most ranges fall within a few steps, their own spread (a robot in a
+	 * narrow corridor) puts them in phase at low frequencies. */
+	static constexpr double kMinSpreadSteps = 2;
+
+	/** q [m] of the lattice the scan's ranges sit on, or 0 when they sit
+	 * on none of a step in [kMinStep, kMaxStep]. */
+	double step(const ScanPoints& scan);
+	/** The circular resultant R(f) of the scan's ranges at f = 1/q. */
+	static double resultant(const ScanPoints& scan, double q);
+
+   private:
+	std::vector<float> m_histogram, m_spectrum;	 // reused buffers
+	std::vector<double> m_ranges;
+};
+}  // namespace featloc
