@@ -58,6 +58,7 @@ void LaserOptions::loadFromConfigFile(
 	read(c, s, "min_range", min_range);
 	read(c, s, "range_noise", range_noise);
 	read(c, s, "range_bias", range_bias);
+	read(c, s, "range_step", range_step);
 	read(c, s, "dropout_probability", dropout_probability);
 	std::vector<double> pose = {
 		sensor_pose[0], sensor_pose[1], mrpt::RAD2DEG(sensor_pose[2])};
@@ -75,6 +76,7 @@ void LaserOptions::loadFromConfigFile(
 	require(min_range >= 0 && min_range < max_range, c, s, "min_range",
 		"in [0, max_range)");
 	require(range_noise >= 0, c, s, "range_noise", ">= 0");
+	require(range_step >= 0, c, s, "range_step", ">= 0 (0: none)");
 	require(dropout_probability >= 0 && dropout_probability < 1, c, s,
 		"dropout_probability", "in [0, 1)");
 }
@@ -94,6 +96,8 @@ void LaserOptions::saveToConfigFile(
 	write(c, s, "min_range", min_range, "[m] nearer: invalid");
 	write(c, s, "range_noise", range_noise, "[m] Gaussian range noise sigma");
 	write(c, s, "range_bias", range_bias, "[m] added to every range");
+	write(c, s, "range_step", range_step,
+		"[m] the exact range is rounded to a multiple of this before the noise (0: none; MRPT's simulated log: 0.16)");
 	write(c, s, "dropout_probability", dropout_probability,
 		"a beam is invalid with this probability");
 	write(c, s, "sensor_pose",

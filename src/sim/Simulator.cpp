@@ -108,6 +108,10 @@ SimulatedScan Simulator::makeScan(size_t index, double t)
 		const double u = rng().drawUniform(0.0, 1.0);
 		if (valid)
 		{
+			// A lattice first, then the noise: MRPT's simulated log
+			// (rawlogs/mrpt-simul) has its ranges on multiples of 0.16 m
+			// with about 1 cm of noise on top.
+			if (m_laser.range_step > 0) r = m_laser.range_step * std::round(r / m_laser.range_step);
 			r += m_laser.range_bias + m_laser.range_noise * noise;
 			valid = u >= m_laser.dropout_probability && r >= m_laser.min_range &&
 				r < m_laser.max_range;

@@ -23,7 +23,8 @@ namespace featloc
  * "+-5 cm" in Borges & Aldon, taken as 2 sigma; Hokuyo UTM-30LX: datasheet
  * accuracy +-30 mm below 10 m, taken as 2 sigma.)
  *
- * Each range gets bias + Gaussian noise; a beam drops out (invalid) with
+ * Each range is rounded to a multiple of range_step (0: not), then gets
+ * bias + Gaussian noise; a beam drops out (invalid) with
  * dropout_probability; readings at or beyond max_range (no return) and
  * below min_range are marked invalid. */
 struct LaserOptions : public mrpt::config::CLoadableOptions
@@ -39,6 +40,10 @@ struct LaserOptions : public mrpt::config::CLoadableOptions
 	double min_range = 0.1;	 //!< [m]
 	double range_noise = 0.01;	//!< [m] Gaussian sigma
 	double range_bias = 0;	//!< [m]
+	/** [m] the exact range is rounded to a multiple of this before the
+	 * noise is added (0: none): a range lattice, as MRPT's simulated log
+	 * has (0.16 m) and some real logs (5 cm). */
+	double range_step = 0;
 	double dropout_probability = 0;
 	/** Sensor on the robot: x [m], y [m], yaw [rad] (degrees in the file). */
 	std::vector<double> sensor_pose = {0.2, 0, 0};
