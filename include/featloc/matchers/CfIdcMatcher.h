@@ -10,6 +10,7 @@
 #include "featloc/matchers/ReferencePolyline.h"
 #include "featloc/matchers/ScanMatcher.h"
 #include "featloc/scan/AdaptiveBreakpointSegmenter.h"
+#include "featloc/scan/RangeLattice.h"
 
 namespace featloc
 {
@@ -96,6 +97,11 @@ class CfIdcMatcher : public ScanMatcher
 		 * ones). Counted (MatchResult::matcherFallback). */
 		bool pairing_fallback = true;
 		double segment_gate = 0.05;	 //!< [m] 0 disables
+		/** The segment gate is at least the step of the current scan's
+		 * range lattice (RangeLattice), which can put a static segment
+		 * that far off the reference at the true motion (false: the fixed
+		 * segment_gate alone, an ablation). */
+		bool segment_gate_from_lattice = true;
 		IterativeDualCorrespondence::Parameters idc;
 
 		void loadFromConfigFile(
@@ -162,6 +168,7 @@ class CfIdcMatcher : public ScanMatcher
 	void collectKeptCurrent(const ScanPoints& current);
 
 	AdaptiveBreakpointSegmenter m_segmenter;
+	RangeLattice m_lattice;
 	CurvatureFunction m_curvature;
 	CurvatureFunctionMatcher m_correlator;
 	IterativeDualCorrespondence m_idc;
