@@ -24,7 +24,7 @@ std::vector<ScanPoints> officeScans(const std::function<double(double)>& f)
 {
 	const SyntheticRoom office = SyntheticRoom::office();
 	std::vector<ScanPoints> out;
-	for (const CPose2D& at : {CPose2D(0, 0, 0), CPose2D(1.2, -0.4, 0.3), CPose2D(-1.5, 1, -2)})
+	for (const CPose2D& at : {CPose2D(0, 0, 0), CPose2D(1.2, -0.4, 0.3), CPose2D(-2.5, 1.5, -2)})
 	{
 		auto scan = office.scan(at);
 		for (size_t i = 0; i < scan->getScanSize(); i++)
@@ -58,6 +58,15 @@ TEST(RangeLattice, ARealSensorsRoundedRangesAreFound)
 	RangeLattice lattice;
 	for (const auto& scan : officeScans([](double r) { return 0.05 * std::round(noisy(r, 0.01) / 0.05); }))
 		EXPECT_NEAR(lattice.step(scan), 0.05, 0.001);
+	// acapulco's sit on x.x3 and x.x8 m: the lattice's offset is found too
+	// (as a phase: modulo the step).
+	for (const auto& scan :
+		officeScans([](double r) { return 0.03 + 0.05 * std::round((noisy(r, 0.01) - 0.03) / 0.05); }))
+	{
+		EXPECT_NEAR(lattice.step(scan), 0.05, 0.001);
+		const double phase = std::remainder(lattice.offset() - 0.03, 0.05);
+		EXPECT_NEAR(phase, 0.0, 0.002) << lattice.offset();
+	}
 }
 
 TEST(RangeLattice, NoLatticeInContinuousRangesOrInAFinerOne)
@@ -119,4 +128,47 @@ TEST(RangeLattice, TheBundledLogsRangesSitOnSixteenCentimetres)
 	}
 	ASSERT_EQ(scans, 100u);
 	EXPECT_GE(onLattice, 95u);
+}
+
+TEST(RangeLattice, DequantizedReadingsLieNearerTheirSurfaces)
+{
+	// The office scanned exactly, and on MRPT's simulator's lattice with
+	// 1 cm noise on top: the readings put back on their surfaces are
+	// nearer the exact ranges than the lattice left them.
+	mrpt::random::getRandomGenerator().randomize(7);
+	const auto exact = officeScans([](double r) { return r; });
+	auto onLattice = officeScans([](double r) { return noisy(0.16 * std::round(r / 0.16), 0.01); });
+	RangeLattice lattice;
+	double before = 0, after = 0;
+	size_t n = 0, moved = 0;
+	for (size_t k = 0; k < exact.size(); k++)
+	{
+		ScanPoints restored = onLattice[k];
+		const double q = lattice.step(restored);
+		ASSERT_GT(q, 0);
+		moved += lattice.dequantize(restored, q);
+		ASSERT_EQ(restored.size(), exact[k].size());
+		for (size_t i = 0; i < restored.size(); i++)
+		{
+			ASSERT_EQ(restored[i].beam, exact[k][i].beam);
+			before += mrpt::square(onLattice[k][i].range - exact[k][i].range);
+			after += mrpt::square(restored[i].range - exact[k][i].range);
+			EXPECT_NEAR(std::hypot(restored[i].x, restored[i].y), restored[i].range, 1e-9);
+			n++;
+		}
+	}
+	const double rmsBefore = std::sqrt(before / n), rmsAfter = std::sqrt(after / n);
+	std::printf("range error rms: %.1f mm on the lattice, %.1f mm restored; %zu of %zu points moved\n",
+		1e3 * rmsBefore, 1e3 * rmsAfter, moved, n);
+	EXPECT_GT(rmsBefore, 0.04);	 // 0.16 / sqrt(12) = 0.046
+	// Not to the noise: a chord across a corner (a box's, seen head on,
+	// both its anchors on one level) puts the run's points up to a step
+	// off, and readings without an anchor keep theirs (46.8 -> 27.8 mm).
+	EXPECT_LT(rmsAfter, 0.65 * rmsBefore);
+	EXPECT_GT(moved, 7 * n / 10);
+
+	// No lattice, nothing moved.
+	ScanPoints scan = exact[0];
+	EXPECT_EQ(lattice.dequantize(scan, 0.0), 0u);
+	EXPECT_TRUE(scan.samePointsAs(exact[0]));
 }

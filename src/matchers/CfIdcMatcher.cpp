@@ -366,7 +366,7 @@ void CfIdcMatcher::matchPoints(
 		// fix the motion and keeps the arcs that hold it at zero (MRPT's
 		// simulated log, q = 0.16 m: a matcher chain of 903 mm).
 		const double gate = params.segment_gate_from_lattice
-			? std::max(params.segment_gate, m_lattice.step(current))
+			? std::max(params.segment_gate, rangeLatticeStep())
 			: params.segment_gate;
 		// Centimetres off still at the switch: a looser gate there, so that
 		// the few points that fix a weak direction are not judged by an

@@ -45,6 +45,7 @@ void ScanMatcher::loadParams(
 	m_fallbackClass = mrpt::system::trim(m_fallbackClass);
 	config::read(cfg, section, "fallback_on_ambiguity", m_fallbackOnAmbiguity);
 	config::read(cfg, section, "free_direction_from_guess", m_freeDirectionFromGuess);
+	config::read(cfg, section, "dequantize_ranges", m_dequantizeRanges);
 	m_fallback.reset();
 	m_followFallback = followFallback;
 	if (followFallback && !m_fallbackClass.empty())
@@ -79,6 +80,10 @@ void ScanMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::stri
 	config::write(cfg, section, "free_direction_from_guess", m_freeDirectionFromGuess,
 		"a match that fails only because its points leave one direction free (a corridor) "
 		"keeps the guess along it and the match across it, flagged ambiguous");
+	config::write(cfg, section, "dequantize_ranges", m_dequantizeRanges,
+		"readings on a range lattice (RangeLattice: MRPT's simulated log, 0.16 m; some real "
+		"logs, 2.5-5 cm) are put back on their surfaces from the lattice's level crossings "
+		"before matching");
 	saveOwnParams(cfg, section);
 }
 
@@ -154,8 +159,14 @@ MatchResult ScanMatcher::match(
 	mrpt::poses::CPosePDFGaussian window = initialGuess;
 	window.cov += gateAllowance;
 
-	const ScanPoints refPoints = ScanPoints::fromScan(reference);
-	const ScanPoints curPoints = ScanPoints::fromScan(current);
+	ScanPoints refPoints = ScanPoints::fromScan(reference);
+	ScanPoints curPoints = ScanPoints::fromScan(current);
+	m_rangeLatticeStep = 0;
+	if (m_dequantizeRanges || usesRangeLatticeStep())
+	{
+		undoRangeLattice(refPoints);
+		m_rangeLatticeStep = undoRangeLattice(curPoints);
+	}
 	const mrpt::poses::CPosePDFGaussian sensorWindow = toSensorFrames(window);
 	MatchResult r =
 		matchInSensorFrames(refPoints, curPoints, toSensorFrames(initialGuess), sensorWindow);
@@ -188,6 +199,21 @@ MatchResult ScanMatcher::match(
 	return tryFallback(std::move(r), [&](ScanMatcher& f) {
 		return f.match(reference, current, initialGuess, gateAllowance);
 	});
+}
+
+double ScanMatcher::undoRangeLattice(ScanPoints& scan)
+{
+	// The lattice is found on the readings as they came (the remembered
+	// scan is kept as it came too).
+	if (!scan.samePointsAs(m_latticeScan))
+	{
+		m_latticeScanStep = m_lattice.step(scan);
+		m_latticeScanOffset = m_lattice.offset();
+		m_latticeScan = scan;
+	}
+	if (m_latticeScanStep > 0 && m_dequantizeRanges)
+		m_lattice.dequantize(scan, m_latticeScanStep, m_latticeScanOffset);
+	return m_latticeScanStep;
 }
 
 void ScanMatcher::arbitrateGuessGate(const ScanPoints& reference, const ScanPoints& current,

@@ -15,11 +15,12 @@ namespace
  * times the finest step looked for. */
 constexpr double kBin = 0.008;
 /** Ranges up to kBins x kBin (16 m) are counted: beyond, a step's phase
- * drifts faster than the DFT's frequency grid can follow. */
+ * drifts faster than the DFT's frequency grid can follow. (8 m found the
+ * bundled log's lattice in 72% of its scans instead of all.) */
 constexpr int kBins = 2048;
 /** DFT length (the histogram zero-padded once): frequency grid
  * 1 / (kDft kBin) = 0.03 cycles per metre, refined on the exact ranges at
- * the peak. */
+ * the peak. 4096 real values: 27 us with OpenCV on this machine. */
 constexpr int kDft = 2 * kBins;
 /** Refinement: the exact resultant at this many frequencies across one
  * grid step either side of the DFT's peak. */
@@ -39,6 +40,7 @@ double RangeLattice::resultant(const ScanPoints& scan, double q)
 
 double RangeLattice::step(const ScanPoints& scan)
 {
+	m_offset = 0;
 	m_ranges.clear();
 	for (const auto& p : scan.points)
 		if (p.range < kBins * kBin) m_ranges.push_back(p.range);
@@ -57,9 +59,10 @@ double RangeLattice::step(const ScanPoints& scan)
 	m_histogram.assign(kDft, 0.0f);
 	for (double r : m_ranges) m_histogram[static_cast<size_t>(r / kBin)] += 1.0f;
 	const cv::Mat histogram(1, kDft, CV_32F, m_histogram.data());
-	m_spectrum.resize(2 * kDft);
-	cv::Mat spectrum(1, kDft, CV_32FC2, m_spectrum.data());
-	cv::dft(histogram, spectrum, cv::DFT_COMPLEX_OUTPUT);
+	// A real input's spectrum, packed (CCS): Re 0, Re 1, Im 1, Re 2, ...
+	m_spectrum.resize(kDft);
+	cv::Mat spectrum(1, kDft, CV_32F, m_spectrum.data());
+	cv::dft(histogram, spectrum);
 
 	// R on the DFT's grid, f = k / (kDft kBin). The fundamental is the
 	// lowest peak about as high as the highest: its harmonics are no
@@ -70,8 +73,8 @@ double RangeLattice::step(const ScanPoints& scan)
 	const int kLow = static_cast<int>(std::ceil(1.0 / (maxStep * df)));
 	const int kHigh = std::min(kDft / 2 - 1, static_cast<int>(1.0 / (kMinStep * df)));
 	auto R = [&](int k) {
-		return std::hypot(m_spectrum[2 * static_cast<size_t>(k)],
-				   m_spectrum[2 * static_cast<size_t>(k) + 1]) /
+		return std::hypot(m_spectrum[2 * static_cast<size_t>(k) - 1],
+				   m_spectrum[2 * static_cast<size_t>(k)]) /
 			static_cast<double>(n);
 	};
 	double highest = 0;
@@ -86,18 +89,92 @@ double RangeLattice::step(const ScanPoints& scan)
 
 	// The exact resultant around the grid's peak (the grid's phase error
 	// grows with the range).
-	double bestF = 0, bestR = 0;
+	double bestF = 0, bestR = 0, bestPhase = 0;
 	for (int i = -kRefineSteps; i <= kRefineSteps; i++)
 	{
 		const double f = (peak + static_cast<double>(i) / kRefineSteps) * df;
 		std::complex<double> sum = 0;
 		for (double r : m_ranges) sum += std::polar(1.0, 2 * M_PI * f * r);
 		const double Rf = std::abs(sum) / static_cast<double>(n);
-		if (Rf > bestR) bestR = Rf, bestF = f;
+		if (Rf > bestR) bestR = Rf, bestF = f, bestPhase = std::arg(sum);
 	}
 	if (bestR < kMinResultant) return 0;
+	// The readings' mean phase is where the levels are: offset + k q.
+	const double offset = bestPhase / (2 * M_PI * bestF);
 	std::set<long> levels;
-	for (double r : m_ranges) levels.insert(std::lround(r * bestF));
-	return levels.size() >= kMinLevels ? 1.0 / bestF : 0.0;
+	for (double r : m_ranges) levels.insert(std::lround((r - offset) * bestF));
+	if (levels.size() < kMinLevels) return 0;
+	m_offset = offset;
+	return 1.0 / bestF;
+}
+
+size_t RangeLattice::dequantize(ScanPoints& scan, double q, double offset)
+{
+	auto& p = scan.points;
+	const size_t n = p.size();
+	if (q <= 0 || n < 3) return 0;
+	m_levels.resize(n);
+	for (size_t i = 0; i < n; i++) m_levels[i] = std::lround((p[i].range - offset) / q);
+	auto neighbours = [&](size_t i) { return p[i + 1].beam == p[i].beam + 1; };
+	// The anchor between points i and i + 1 (one level apart), as x, y.
+	auto anchor = [&](size_t i, double& x, double& y) {
+		const double bearing = 0.5 * (p[i].bearing + p[i + 1].bearing);
+		const double range = offset + 0.5 * q * static_cast<double>(m_levels[i] + m_levels[i + 1]);
+		x = range * std::cos(bearing);
+		y = range * std::sin(bearing);
+	};
+	auto isAnchor = [&](size_t i) {
+		return neighbours(i) && std::abs(m_levels[i + 1] - m_levels[i]) == 1;
+	};
+	// Runs of neighbouring beams on one level.
+	m_runs.clear();
+	for (size_t s = 0; s < n;)
+	{
+		size_t e = s;
+		while (e + 1 < n && neighbours(e) && m_levels[e + 1] == m_levels[s]) e++;
+		m_runs.emplace_back(s, e);
+		s = e + 1;
+	}
+	size_t moved = 0;
+	const size_t runs = m_runs.size();
+	for (size_t j = 0; j < runs; j++)
+	{
+		const auto [s, e] = m_runs[j];
+		const bool left = j > 0 && isAnchor(s - 1), right = j + 1 < runs && isAnchor(e);
+		// The line through the run's anchors; at a surface's end (an
+		// anchor on one side only) the line through it and the next
+		// anchor beyond it, extended.
+		size_t a, b;
+		if (left && right)
+			a = s - 1, b = e;
+		else if (left && m_runs[j - 1].first > 0 && isAnchor(m_runs[j - 1].first - 1))
+			a = m_runs[j - 1].first - 1, b = s - 1;
+		else if (right && j + 2 < runs && isAnchor(m_runs[j + 1].second))
+			a = e, b = m_runs[j + 1].second;
+		else
+			continue;
+		double ax, ay, bx, by;
+		anchor(a, ax, ay);
+		anchor(b, bx, by);
+		const double dx = bx - ax, dy = by - ay;
+		const double level = offset + q * static_cast<double>(m_levels[s]);
+		for (size_t i = s; i <= e; i++)
+		{
+			// The beam u = (cos, sin) meets A + t (B - A) where
+			// r (u x D) = A x D.
+			const double ux = std::cos(p[i].bearing), uy = std::sin(p[i].bearing);
+			const double den = ux * dy - uy * dx;
+			if (std::abs(den) < 1e-12) continue;
+			const double r = (ax * dy - ay * dx) / den;
+			// On its own level's reach: a chord of a strongly curved
+			// surface, or an anchor that was noise, may cross far off.
+			if (!(std::abs(r - level) <= 0.5 * q)) continue;
+			p[i].range = r;
+			p[i].x = r * ux;
+			p[i].y = r * uy;
+			moved++;
+		}
+	}
+	return moved;
 }
 }  // namespace featloc

@@ -10,7 +10,6 @@
 #include "featloc/matchers/ReferencePolyline.h"
 #include "featloc/matchers/ScanMatcher.h"
 #include "featloc/scan/AdaptiveBreakpointSegmenter.h"
-#include "featloc/scan/RangeLattice.h"
 
 namespace featloc
 {
@@ -137,6 +136,10 @@ class CfIdcMatcher : public ScanMatcher
 		mrpt::config::CConfigFileBase& cfg,
 		const std::string& section) const override;
 	double guessGateChi2() const override { return params.idc.guess_gate_chi2; }
+	bool usesRangeLatticeStep() const override
+	{
+		return params.segment_gate > 0 && params.segment_gate_from_lattice;
+	}
 	void matchPoints(
 		const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPosePDFGaussian& initialGuess,
@@ -168,7 +171,6 @@ class CfIdcMatcher : public ScanMatcher
 	void collectKeptCurrent(const ScanPoints& current);
 
 	AdaptiveBreakpointSegmenter m_segmenter;
-	RangeLattice m_lattice;
 	CurvatureFunction m_curvature;
 	CurvatureFunctionMatcher m_correlator;
 	IterativeDualCorrespondence m_idc;

@@ -63,6 +63,7 @@ class IcpMatcher : public ScanMatcher
 	{
 		coarseSearchOptions().enabled = false;
 		coarseSearchOptions().confirmShare = 0;
+		m_dequantizeRanges = false;
 	}
 
    protected:

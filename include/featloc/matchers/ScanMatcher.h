@@ -10,6 +10,7 @@
 #include "featloc/matchers/CorrelativeScanSearch.h"
 #include "featloc/matchers/MatchInspection.h"
 #include "featloc/matchers/MatchResult.h"
+#include "featloc/scan/RangeLattice.h"
 #include "featloc/scan/ScanPoints.h"
 
 namespace featloc
@@ -133,7 +134,24 @@ class ScanMatcher : public mrpt::rtti::CObject
 		const mrpt::poses::CPosePDFGaussian& initialGuess,
 		MatchResult& result) = 0;
 
+	/** The step of the range lattice the current scan's readings sat on
+	 * (RangeLattice) in the match being made, 0 when none or not looked
+	 * for (looked for with dequantize_ranges, or usesRangeLatticeStep());
+	 * with dequantize_ranges its points were dequantized before
+	 * matchPoints(). Set by the match() of observations. */
+	double rangeLatticeStep() const { return m_rangeLatticeStep; }
+	/** Whether matchPoints() reads rangeLatticeStep(). */
+	virtual bool usesRangeLatticeStep() const { return false; }
+	/** `dequantize_ranges` (true; IcpMatcher: false). */
+	bool m_dequantizeRanges = true;
+
    private:
+	/** The lattice of `scan`'s readings (the scan before it too, the
+	 * previous call's, is remembered: in a sequence each scan is matched
+	 * as current and then as reference), undone if dequantize_ranges.
+	 * Returns the step (0: none). */
+	double undoRangeLattice(ScanPoints& scan);
+
 	/** loadParams(); `followFallback` false for a fallback itself, whose
 	 * own fallback_class is read but not followed (one level: no cycle). */
 	void loadParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
@@ -192,6 +210,10 @@ class ScanMatcher : public mrpt::rtti::CObject
 	bool m_fallbackOnAmbiguity = true;	//!< `fallback_on_ambiguity`
 	bool m_freeDirectionFromGuess;	//!< `free_direction_from_guess`
 	bool m_lastMatchByFallback = false;	 //!< for inspectLastMatch()
+	RangeLattice m_lattice;
+	ScanPoints m_latticeScan;  //!< the last scan undoRangeLattice() looked at
+	double m_latticeScanStep = 0, m_latticeScanOffset = 0;	//!< its lattice
+	double m_rangeLatticeStep = 0;	//!< rangeLatticeStep()
 	void checkAgainstGuess(const mrpt::poses::CPosePDFGaussian& guess, MatchResult& r) const;
 };
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <utility>
 #include <vector>
 
 #include "featloc/scan/ScanPoints.h"
@@ -29,7 +30,7 @@ class RangeLattice
 	/** R at the step's frequency needed to call it a lattice (R is about
 	 * 0.1-0.2 at the best frequency of an unquantized 361-beam scan; a step
 	 * of 5 noise sigmas gives 0.45). */
-	static constexpr double kMinResultant = 0.5;
+	static constexpr double kMinResultant = 0.7;
 	/** Fewest points, and fewest distinct lattice levels they occupy:
 	 * ranges in a few narrow clusters (two walls seen head on) agree in
 	 * phase at many frequencies without any lattice. */
@@ -42,11 +43,32 @@ class RangeLattice
 	/** q [m] of the lattice the scan's ranges sit on, or 0 when they sit
 	 * on none of a step in [kMinStep, kMaxStep]. */
 	double step(const ScanPoints& scan);
+	/** The lattice's offset [m] found by the last step() (0 when it found
+	 * none): the readings sit at offset + k q (a 5 cm lattice of acapulco
+	 * sits on x.x3 and x.x8 m). */
+	double offset() const { return m_offset; }
 	/** The circular resultant R(f) of the scan's ranges at f = 1/q. */
 	static double resultant(const ScanPoints& scan, double q);
+
+	/** Undoes a lattice of step q where the scan says where the true range
+	 * is: between two neighbouring beams whose readings are one level
+	 * apart the surface crosses the level boundary, so it lies at range
+	 * offset + (k + 1/2) q on the bisecting bearing (an anchor). The points of a run
+	 * of beams on one level, between two anchors, are put where their
+	 * beams cross the chord joining the anchors: on a wall, on the wall
+	 * (to about half a beam's change of range), where the reading was up
+	 * to q/2 off it. A run with an anchor on one side only (a surface's
+	 * end) goes on the line through that anchor and the next one beyond
+	 * it; a run without one keeps its readings, and so does a point the
+	 * line would put more than q/2 off its level. Returns the number of
+	 * points moved. */
+	size_t dequantize(ScanPoints& scan, double q, double offset = 0);
 
    private:
 	std::vector<float> m_histogram, m_spectrum;	 // reused buffers
 	std::vector<double> m_ranges;
+	std::vector<long> m_levels;
+	double m_offset = 0;
+	std::vector<std::pair<size_t, size_t>> m_runs;  // first, last point
 };
 }  // namespace featloc
