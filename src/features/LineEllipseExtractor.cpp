@@ -255,7 +255,8 @@ bool LineEllipseExtractor::Parameters::operator==(const Parameters& o) const
 
 void LineEllipseExtractor::extract(const ScanPoints& s, std::vector<ScanFeature>& out)
 {
-	if (m_memo.valid && m_memo.params == params && m_memo.scan.samePointsAs(s))
+	if (m_memo.valid && m_memo.params == params && m_memo.rangeNoiseFloor == rangeNoiseFloor &&
+		m_memo.scan.samePointsAs(s))
 	{
 		out = m_memo.features;
 		return;
@@ -263,6 +264,7 @@ void LineEllipseExtractor::extract(const ScanPoints& s, std::vector<ScanFeature>
 	extractAnew(s, out);
 	m_memo.valid = true;
 	m_memo.params = params;
+	m_memo.rangeNoiseFloor = rangeNoiseFloor;
 	m_memo.scan = s;
 	m_memo.features = out;
 }
@@ -356,9 +358,9 @@ void LineEllipseExtractor::setCovariances(
 		points += f.lastPoint - f.firstPoint + 1;
 	}
 	const size_t dof = points > 2 * features.size() ? points - 2 * features.size() : 0;
-	const double pooled2 = dof > 0 && sumC2 > 0
-		? sumR2 / sumC2 * static_cast<double>(points) / static_cast<double>(dof)
-		: 0;
+	const double pooled2 = std::max(rangeNoiseFloor * rangeNoiseFloor,
+		dof > 0 && sumC2 > 0 ? sumR2 / sumC2 * static_cast<double>(points) / static_cast<double>(dof)
+							 : 0.0);
 	const double floor2 = params.min_point_sigma * params.min_point_sigma;
 
 	for (auto& f : features)

@@ -1,5 +1,8 @@
 #include "featloc/matchers/IdcMatcher.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace featloc
 {
 IMPLEMENTS_MRPT_OBJECT(IdcMatcher, ScanMatcher, featloc)
@@ -51,6 +54,12 @@ void IdcMatcher::matchPoints(
 {
 	buildReference(reference);
 	m_idc.params = params.idc;
+	// Readings on a range lattice are known to their level's cell,
+	// q / sqrt(12). Put back on their surfaces (dequantize_ranges) they lie
+	// nearer, but their errors are shared along each run, which a
+	// per-point sigma cannot say: the covariance keeps the cell's.
+	m_idc.params.min_range_sigma =
+		std::max(m_idc.params.min_range_sigma, rangeLatticeStep() / std::sqrt(12.0));
 	IterativeDualCorrespondence::Result r;
 	m_idc.run(m_polyline, current.points, initialGuess, r);
 	result.success = r.success;

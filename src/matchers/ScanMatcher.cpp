@@ -83,7 +83,7 @@ void ScanMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::stri
 	config::write(cfg, section, "dequantize_ranges", m_dequantizeRanges,
 		"readings on a range lattice (RangeLattice: MRPT's simulated log, 0.16 m; some real "
 		"logs, 2.5-5 cm) are put back on their surfaces from the lattice's level crossings "
-		"before matching");
+		"before matching, and the covariance takes the lattice's cell as its least range noise");
 	saveOwnParams(cfg, section);
 }
 

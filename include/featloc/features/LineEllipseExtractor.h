@@ -119,6 +119,12 @@ class LineEllipseExtractor
 	 * points, bit for bit, and same parameters). */
 	void extract(const ScanPoints& scan, std::vector<ScanFeature>& out);
 
+	/** The least range noise [m] the features' covariances take for the
+	 * scans that follow (0: none): a range lattice's cell, q / sqrt(12),
+	 * whose errors a scan's scatter does not show once its readings are
+	 * put back on their surfaces (RangeLattice). Set by the matcher. */
+	double rangeNoiseFloor = 0;
+
    private:
 	using Run = std::pair<size_t, size_t>;	//!< [first, last] point indices
 	/** Step 1's test: consecutive points a, b belong to different clusters. */
@@ -140,6 +146,7 @@ class LineEllipseExtractor
 	{
 		bool valid = false;
 		Parameters params;
+		double rangeNoiseFloor = 0;
 		ScanPoints scan;
 		std::vector<ScanFeature> features;
 	} m_memo;
