@@ -1106,3 +1106,30 @@ TEST(FeatlocRun, SummaryCountsTheMatchesMadeWithoutTheCoarseSearch)
 	EXPECT_EQ(a["counts"]["coarse_search_skipped"], 0);
 	EXPECT_EQ(always.output.find("without the coarse search"), std::string::npos);
 }
+
+// The bundled log's readings sit on multiples of 0.16 m (MRPT's simulator):
+// the run says so, and that the featloc matcher put them back on their
+// surfaces; MRPT's ICP, as MRPT runs it, leaves them as they are.
+TEST(FeatlocRun, SummaryTellsTheRangeLatticeAndWhatTheMatcherDidWithIt)
+{
+	TempDir dir;
+	const std::string common = shellQuote(kConfig) + " --set Input:max_scans=60";
+	const CommandResult r = featlocRun(common + " --out " + shellQuote(dir.file("idc")) +
+		" --set ScanMatcher:class=featloc::IdcMatcher");
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	const auto s = readJson(dir.file("idc/summary.json"))["counts"];
+	const int matches = s["matches"].get<int>();
+	EXPECT_GE(matches, 50);
+	EXPECT_EQ(s["range_lattice_matches"].get<int>(), matches);
+	EXPECT_EQ(s["dequantized_matches"].get<int>(), matches);
+	EXPECT_NEAR(s["range_lattice_step_m"].get<double>(), 0.16, 0.002);
+	EXPECT_NE(r.output.find("with the current scan's ranges on a lattice of 0.160 m"), std::string::npos)
+		<< r.output;
+
+	const CommandResult icp = featlocRun(common + " --out " + shellQuote(dir.file("icp")));
+	ASSERT_EQ(icp.exitCode, 0) << icp.output;
+	const auto i = readJson(dir.file("icp/summary.json"))["counts"];
+	EXPECT_EQ(i["range_lattice_matches"].get<int>(), 0);
+	EXPECT_EQ(i["dequantized_matches"].get<int>(), 0);
+	EXPECT_EQ(icp.output.find("on a lattice"), std::string::npos);
+}

@@ -124,6 +124,11 @@ void RunReport::printSummary(const RunStats& s)
 			std::printf("    %zu made by the fallback matcher after %s failed (%zu of them succeeded; "
 						"fallback_class)\n",
 				s.fallbackMatcherMatches, s.matcherClass.c_str(), s.fallbackMatcherSuccesses);
+		if (s.rangeLatticeMatches)
+			std::printf("    %zu with the current scan's ranges on a lattice of %.3f m (median; "
+						"RangeLattice): %zu of them put back on their surfaces (dequantize_ranges)\n",
+				s.rangeLatticeMatches, ErrorStats::of(s.rangeLatticeSteps).median,
+				s.dequantizedMatches);
 		if (s.coarseSearchSkipped)
 			std::printf("    %zu without the coarse search: the points confirmed the iterations from "
 						"the guess (coarse_confirm_share)\n",

@@ -170,6 +170,8 @@ MatchResult ScanMatcher::match(
 	const mrpt::poses::CPosePDFGaussian sensorWindow = toSensorFrames(window);
 	MatchResult r =
 		matchInSensorFrames(refPoints, curPoints, toSensorFrames(initialGuess), sensorWindow);
+	r.rangeLatticeStep = m_rangeLatticeStep;
+	r.rangesDequantized = m_dequantizeRanges && m_rangeLatticeStep > 0;
 	const mrpt::poses::CPose2D sensorEstimate = r.estimate.mean;
 
 	toRobotFrames(r.estimate);

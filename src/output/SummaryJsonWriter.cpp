@@ -44,6 +44,10 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"fallback_matcher_matches", s.fallbackMatcherMatches},
 		{"fallback_matcher_successes", s.fallbackMatcherSuccesses},
 		{"coarse_search_skipped", s.coarseSearchSkipped},
+		{"range_lattice_matches", s.rangeLatticeMatches},
+		{"range_lattice_step_m",
+			s.rangeLatticeSteps.empty() ? 0.0 : ErrorStats::of(s.rangeLatticeSteps).median},
+		{"dequantized_matches", s.dequantizedMatches},
 		{"guess_kept_along_free_direction", s.guessKeptAlongFreeDirection},
 		{"fallbacks_to_odometry", s.fallbacks},
 		{"ignored_observations", s.ignoredObservations}};

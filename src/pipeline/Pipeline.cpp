@@ -267,6 +267,12 @@ void Pipeline::processStep(
 			if (!match.guessGateOverruled.empty()) stats.guessGateOverruled++;
 			if (!match.matcherFallback.empty()) stats.matcherFallbacks++;
 			if (match.confirmedShare > 0) stats.coarseSearchSkipped++;
+			if (match.rangeLatticeStep > 0)
+			{
+				stats.rangeLatticeMatches++;
+				stats.rangeLatticeSteps.push_back(match.rangeLatticeStep);
+				if (match.rangesDequantized) stats.dequantizedMatches++;
+			}
 			if (match.guessKeptAlongFreeDirection) stats.guessKeptAlongFreeDirection++;
 			if (!match.primaryFailure.empty())
 			{

@@ -71,6 +71,11 @@ struct MatchResult
 	/** The share of points on the reference at the coarse search's best
 	 * pose (CorrelativeScanSearch; 0 when it did not run). */
 	double coarseScore = 0;
+	/** The step [m] of the range lattice the current scan's readings sat
+	 * on (RangeLattice; 0: none, or not looked for), and whether the
+	 * matcher put them back on their surfaces (dequantize_ranges). */
+	double rangeLatticeStep = 0;
+	bool rangesDequantized = false;
 	/** The coarse search was on but skipped: the iterations from the guess
 	 * succeeded at a pose that puts this share of the current points near
 	 * the reference (coarse_confirm_share; 0 otherwise). */

@@ -66,6 +66,12 @@ struct RunStats
 	/** Matches whose coarse search was skipped: the points confirmed the
 	 * iterations from the guess (MatchResult::confirmedShare). */
 	size_t coarseSearchSkipped = 0;
+	/** Matches whose current scan's readings sat on a range lattice
+	 * (MatchResult::rangeLatticeStep), its steps [m], and how many of
+	 * those the matcher put back on their surfaces (dequantize_ranges). */
+	size_t rangeLatticeMatches = 0;
+	std::vector<double> rangeLatticeSteps;
+	size_t dequantizedMatches = 0;
 	/** Matches that kept the guess along the one direction their points
 	 * left free (MatchResult::guessKeptAlongFreeDirection; also counted in
 	 * ambiguousMatches). */
