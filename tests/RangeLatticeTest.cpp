@@ -163,7 +163,7 @@ TEST(RangeLattice, DequantizedReadingsLieNearerTheirSurfaces)
 	EXPECT_GT(rmsBefore, 0.04);	 // 0.16 / sqrt(12) = 0.046
 	// Not to the noise: a chord across a corner (a box's, seen head on,
 	// both its anchors on one level) puts the run's points up to a step
-	// off, and readings without an anchor keep theirs (46.8 -> 27.8 mm).
+	// off, and readings without an anchor keep theirs (46.7 -> 27.6 mm).
 	EXPECT_LT(rmsAfter, 0.65 * rmsBefore);
 	EXPECT_GT(moved, 7 * n / 10);
 
