@@ -48,11 +48,12 @@ double RangeLattice::step(const ScanPoints& scan)
 	if (n < kMinPoints) return 0;
 	// The interquartile range bounds the steps that can be told from the
 	// ranges' own spread.
-	std::vector<double> sorted = m_ranges;
-	std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 4), sorted.end());
-	const double q1 = sorted[n / 4];
-	std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(3 * n / 4), sorted.end());
-	const double q3 = sorted[3 * n / 4];
+	m_sorted = m_ranges;
+	std::nth_element(m_sorted.begin(), m_sorted.begin() + static_cast<long>(n / 4), m_sorted.end());
+	const double q1 = m_sorted[n / 4];
+	std::nth_element(
+		m_sorted.begin(), m_sorted.begin() + static_cast<long>(3 * n / 4), m_sorted.end());
+	const double q3 = m_sorted[3 * n / 4];
 	const double maxStep = std::min(kMaxStep, (q3 - q1) / kMinSpreadSteps);
 	if (maxStep < kMinStep) return 0;
 
@@ -70,21 +71,21 @@ double RangeLattice::step(const ScanPoints& scan)
 	// alternate levels in opposite phase, and a lower peak that ranges
 	// bunched within a few steps make (a small room) is lower.
 	const double df = 1.0 / (kDft * kBin);
-	const int kLow = static_cast<int>(std::ceil(1.0 / (maxStep * df)));
-	const int kHigh = std::min(kDft / 2 - 1, static_cast<int>(1.0 / (kMinStep * df)));
+	const int lowBin = static_cast<int>(std::ceil(1.0 / (maxStep * df)));
+	const int highBin = std::min(kDft / 2 - 1, static_cast<int>(1.0 / (kMinStep * df)));
 	auto R = [&](int k) {
 		return std::hypot(m_spectrum[2 * static_cast<size_t>(k) - 1],
 				   m_spectrum[2 * static_cast<size_t>(k)]) /
 			static_cast<double>(n);
 	};
 	double highest = 0;
-	for (int k = kLow; k <= kHigh; k++) highest = std::max(highest, R(k));
+	for (int k = lowBin; k <= highBin; k++) highest = std::max(highest, R(k));
 	if (highest < kMinResultant) return 0;
-	int peak = kLow;
+	int peak = lowBin;
 	while (R(peak) < highest - kPeakTolerance) peak++;
 	// That frequency may be on the peak's flank: its top is the highest
 	// within 20 % above it (the second harmonic is twice as far).
-	for (int k = peak + 1, last = std::min(kHigh, peak + peak / 5); k <= last; k++)
+	for (int k = peak + 1, last = std::min(highBin, peak + peak / 5); k <= last; k++)
 		if (R(k) > R(peak)) peak = k;
 
 	// The exact resultant around the grid's peak (the grid's phase error

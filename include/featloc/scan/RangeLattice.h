@@ -66,7 +66,7 @@ class RangeLattice
 
    private:
 	std::vector<float> m_histogram, m_spectrum;	 // reused buffers
-	std::vector<double> m_ranges;
+	std::vector<double> m_ranges, m_sorted;
 	std::vector<long> m_levels;
 	double m_offset = 0;
 	std::vector<std::pair<size_t, size_t>> m_runs;  // first, last point
