@@ -285,12 +285,7 @@ void CfIdcMatcher::matchPoints(
 	m_curvature.params = params.curvature;
 	m_correlator.params = params.correlation;
 	m_idc.params = params.idc;
-	// Readings on a range lattice are known to their level's cell,
-	// q / sqrt(12). Put back on their surfaces (dequantize_ranges) they lie
-	// nearer, but their errors are shared along each run, which a
-	// per-point sigma cannot say: the covariance keeps the cell's.
-	m_idc.params.min_range_sigma =
-		std::max(m_idc.params.min_range_sigma, rangeLatticeStep() / std::sqrt(12.0));
+	m_idc.params.min_range_sigma = std::max(m_idc.params.min_range_sigma, rangeLatticeCellSigma());
 	result.success = false;
 	result.iterations = 0;
 	result.estimate = initialGuess;

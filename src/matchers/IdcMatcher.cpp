@@ -1,7 +1,6 @@
 #include "featloc/matchers/IdcMatcher.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace featloc
 {
@@ -54,12 +53,7 @@ void IdcMatcher::matchPoints(
 {
 	buildReference(reference);
 	m_idc.params = params.idc;
-	// Readings on a range lattice are known to their level's cell,
-	// q / sqrt(12). Put back on their surfaces (dequantize_ranges) they lie
-	// nearer, but their errors are shared along each run, which a
-	// per-point sigma cannot say: the covariance keeps the cell's.
-	m_idc.params.min_range_sigma =
-		std::max(m_idc.params.min_range_sigma, rangeLatticeStep() / std::sqrt(12.0));
+	m_idc.params.min_range_sigma = std::max(m_idc.params.min_range_sigma, rangeLatticeCellSigma());
 	IterativeDualCorrespondence::Result r;
 	m_idc.run(m_polyline, current.points, initialGuess, r);
 	result.success = r.success;

@@ -316,10 +316,7 @@ void PcmFeatureMatcher::matchPoints(
 	const mrpt::poses::CPosePDFGaussian& initialGuess, MatchResult& result)
 {
 	m_extractor.params = params.extraction;
-	// Readings on a range lattice are known to their level's cell,
-	// q / sqrt(12); put back on their surfaces their errors are shared
-	// along each run, which the scan's scatter does not show.
-	m_extractor.rangeNoiseFloor = rangeLatticeStep() / std::sqrt(12.0);
+	m_extractor.rangeNoiseFloor = rangeLatticeCellSigma();
 	m_extractor.extract(reference, m_reference);
 	m_extractor.extract(current, m_current);
 	result.success = false;

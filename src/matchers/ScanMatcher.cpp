@@ -203,6 +203,11 @@ MatchResult ScanMatcher::match(
 	});
 }
 
+double ScanMatcher::rangeLatticeCellSigma() const
+{
+	return m_rangeLatticeStep / std::sqrt(12.0);
+}
+
 double ScanMatcher::undoRangeLattice(ScanPoints& scan)
 {
 	// The lattice is found on the readings as they came (the remembered

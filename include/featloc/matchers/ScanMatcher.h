@@ -140,6 +140,12 @@ class ScanMatcher : public mrpt::rtti::CObject
 	 * with dequantize_ranges its points were dequantized before
 	 * matchPoints(). Set by the match() of observations. */
 	double rangeLatticeStep() const { return m_rangeLatticeStep; }
+	/** The least range noise [m] a covariance of this match may assume:
+	 * the lattice's cell, rangeLatticeStep() / sqrt(12) (0 without one).
+	 * Readings put back on their surfaces lie nearer than that, but their
+	 * errors are shared along each run, which a per-point sigma or a
+	 * scan's scatter cannot show. */
+	double rangeLatticeCellSigma() const;
 	/** Whether matchPoints() reads rangeLatticeStep(). */
 	virtual bool usesRangeLatticeStep() const { return false; }
 	/** `dequantize_ranges` (true; IcpMatcher: false). */
