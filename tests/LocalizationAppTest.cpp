@@ -493,7 +493,9 @@ TEST(LocalizationApp, ADeskTheBeamsPassThroughTellsLookAlikeRoomsApart)
 // (The virtual scan, cast by MRPT's laserScanSimulator in the 5 cm grid,
 // has its ranges on a 0.04 m lattice; with its readings put back on their
 // surfaces, dequantize_ranges, PCM's map match stays at the hypothesis and
-// the map has nothing to reject: the test keeps the readings as cast.)
+// the map has nothing to reject: the test keeps the readings as cast. So
+// it does with fallback_above_sigma_xy, which hands PCM's match with its
+// 6.4 cm sigma to IDC: the test keeps PCM's own.)
 TEST(LocalizationApp, AFoundHypothesisKeepsItsPoseWhenTheMapRejectsItsMapMatch)
 {
 	TempDir dir;
@@ -503,7 +505,9 @@ TEST(LocalizationApp, AFoundHypothesisKeepsItsPoseWhenTheMapRejectsItsMapMatch)
 		"--gridmap 0.05");
 	const std::string out = dir.file("run");
 	const CommandResult r = globalRun(
-		p, p + ".gridmap.gz", out, "--set ScanMatcher.PcmFeatureMatcher:dequantize_ranges=false");
+		p, p + ".gridmap.gz", out,
+		"--set ScanMatcher.PcmFeatureMatcher:dequantize_ranges=false "
+		"--set ScanMatcher.PcmFeatureMatcher:fallback_above_sigma_xy=0");
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	size_t scan = 0;
 	std::array<double, 3> t{};

@@ -1060,8 +1060,11 @@ TEST(FeatlocRun, TheFallbackMatcherMakesTheMatchesPcmCannot)
 	EXPECT_GE(pcmFailures, 3);
 	EXPECT_EQ(a["counts"]["fallback_matcher_matches"], 0);
 
+	// Failures only: with fallback_above_sigma_xy (PCM's default 0.01 m)
+	// its weak matches go to the fallback too (11 of 11 here).
 	const CommandResult r = featlocRun(common + " --out " + shellQuote(dir.file("out")) +
-		" --set ScanMatcher.PcmFeatureMatcher:fallback_class=IcpMatcher");
+		" --set ScanMatcher.PcmFeatureMatcher:fallback_class=IcpMatcher"
+		" --set ScanMatcher.PcmFeatureMatcher:fallback_above_sigma_xy=0");
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	const auto s = readJson(dir.file("out/summary.json"));
 	EXPECT_EQ(s["counts"]["matches"], 11);

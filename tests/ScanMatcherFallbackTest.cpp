@@ -329,6 +329,57 @@ TEST(ScanMatcherFallback, AnAmbiguousMatchStaysWhenTheFallbackIsNoBetter)
 					 .parts.empty());
 }
 
+// fallback_above_sigma_xy: a PCM match whose own covariance says its
+// features fix the position poorly goes to IDC too. featloc-bench's pair
+// 447 of the simulated corridor with walking people (held out; scans 447
+// and 448, t = 89.4 s, 0.08 m straight ahead): PCM's lines leave a
+// translation sigma of about 2 cm and it is some 6 cm off, unflagged; IDC,
+// from every point, is within millimetres.
+TEST(ScanMatcherFallback, AWeakMatchIsReplacedByTheFallbacksUnambiguousOne)
+{
+	mrpt::obs::CObservation2DRangeScan ref, cur;
+	test::readScanPair("corridor-people-pair-447.rawlog", ref, cur);
+	const CPose2D truth(0.08, 0, 0);
+	const double a = 1 / std::sqrt(3.0);
+	const auto guess = diagonalPoseGaussian(CPose2D(0.18, -0.05, mrpt::DEG2RAD(3.0)), 0.3 * a,
+		mrpt::DEG2RAD(10.0) * a);
+	auto error = [&](const MatchResult& r) {
+		return std::hypot(r.estimate.mean.x() - truth.x(), r.estimate.mean.y() - truth.y());
+	};
+	auto sigma = [](const MatchResult& r) {
+		return std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(
+			r.estimate.cov.asEigen().topLeftCorner<2, 2>())
+							 .eigenvalues()[1]);
+	};
+
+	auto kept = fromIni("featloc::PcmFeatureMatcher", kBenchPcm + "fallback_above_sigma_xy = 0\n");
+	const MatchResult own = kept->match(ref, cur, guess);
+	ASSERT_TRUE(own.success) << own.failureReason;
+	ASSERT_FALSE(own.ambiguous) << own.ambiguityReason;
+	EXPECT_GT(sigma(own), 0.01);
+	EXPECT_GT(error(own), 0.03);
+	EXPECT_TRUE(own.primaryFailure.empty());
+
+	auto pcm = fromIni("featloc::PcmFeatureMatcher", kBenchPcm + "fallback_above_sigma_xy = 0.01\n");
+	const MatchResult r = pcm->match(ref, cur, guess);
+	ASSERT_TRUE(r.success) << r.failureReason;
+	EXPECT_FALSE(r.ambiguous);
+	EXPECT_LT(error(r), 0.01);
+	EXPECT_EQ(r.primaryFailure.rfind("featloc::PcmFeatureMatcher: weak, its translation sigma ", 0), 0u)
+		<< r.primaryFailure;
+
+	// Above the sigma PCM leaves, PCM's match stays.
+	auto loose = fromIni("featloc::PcmFeatureMatcher", kBenchPcm + "fallback_above_sigma_xy = 0.2\n");
+	const MatchResult same = loose->match(ref, cur, guess);
+	EXPECT_EQ(same.estimate.mean.x(), own.estimate.mean.x());
+	EXPECT_TRUE(same.primaryFailure.empty());
+	// A negative sigma is a configuration error naming the key.
+	EXPECT_NE(configErrorOf("featloc::PcmFeatureMatcher",
+				  "[ScanMatcher.PcmFeatureMatcher]\nfallback_above_sigma_xy = -0.01\n")
+				  .find("fallback_above_sigma_xy"),
+		std::string::npos);
+}
+
 // CfIdcMatcher's default fallback is IDC on the whole scans. On a held-out
 // real log (edmonton, pair 197, the guess 0.1 m / 0.1 m / 2.9 deg off with
 // the protocol's covariance) CF-IDC's segments of 5 points or more leave it

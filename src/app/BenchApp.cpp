@@ -610,8 +610,8 @@ int BenchApp::main(int argc, char** argv)
 	}
 	for (size_t m = 0; m < results.size(); m++)
 		if (results[m].fallbackMatches > 0)
-			std::printf("\n%s: the fallback %s made %zu of %zu pairs after the matcher failed or was "
-						"ambiguous (%zu of them succeeded; counted above as its results)\n",
+			std::printf("\n%s: the fallback %s made %zu of %zu pairs after the matcher failed, was "
+						"ambiguous or weak (%zu of them succeeded; counted above as its results)\n",
 				results[m].matcher.c_str(), matchers[m]->fallback()->className().c_str(),
 				results[m].fallbackMatches, results[m].pairs, results[m].fallbackSuccesses);
 	for (const auto& r : results)

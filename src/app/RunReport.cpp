@@ -121,7 +121,7 @@ void RunReport::printSummary(const RunStats& s)
 			s.matchesAttempted, s.matchFailures, s.fallbacks, t.mean * 1e3, t.median * 1e3,
 			t.p95 * 1e3);
 		if (s.fallbackMatcherMatches)
-			std::printf("    %zu made by the fallback matcher after %s failed (%zu of them succeeded; "
+			std::printf("    %zu made by the fallback matcher after %s failed, was ambiguous or weak (%zu of them succeeded; "
 						"fallback_class)\n",
 				s.fallbackMatcherMatches, s.matcherClass.c_str(), s.fallbackMatcherSuccesses);
 		if (s.rangeLatticeMatches)

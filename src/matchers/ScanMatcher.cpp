@@ -44,6 +44,10 @@ void ScanMatcher::loadParams(
 	config::read(cfg, section, "fallback_class", m_fallbackClass);
 	m_fallbackClass = mrpt::system::trim(m_fallbackClass);
 	config::read(cfg, section, "fallback_on_ambiguity", m_fallbackOnAmbiguity);
+	config::read(cfg, section, "fallback_above_sigma_xy", m_fallbackAboveSigmaXY);
+	if (!(m_fallbackAboveSigmaXY >= 0))
+		config::fail(cfg, section, "fallback_above_sigma_xy",
+			"must be a sigma in metres, >= 0 (0: off)");
 	config::read(cfg, section, "free_direction_from_guess", m_freeDirectionFromGuess);
 	config::read(cfg, section, "dequantize_ranges", m_dequantizeRanges);
 	m_fallback.reset();
@@ -77,6 +81,10 @@ void ScanMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::stri
 	config::write(cfg, section, "fallback_on_ambiguity", m_fallbackOnAmbiguity,
 		"an ambiguous match (flagged) goes to the fallback too; the fallback's result "
 		"replaces it when it is a success that is not ambiguous");
+	config::write(cfg, section, "fallback_above_sigma_xy", m_fallbackAboveSigmaXY,
+		"[m] a successful, unflagged match whose covariance leaves a translation sigma above "
+		"this (and above a range lattice's cell) goes to the fallback too; the fallback's "
+		"result replaces it when it is a success that is not ambiguous (0: off)");
 	config::write(cfg, section, "free_direction_from_guess", m_freeDirectionFromGuess,
 		"a match that fails only because its points leave one direction free (a corridor) "
 		"keeps the guess along it and the match across it, flagged ambiguous");
@@ -87,12 +95,26 @@ void ScanMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::stri
 	saveOwnParams(cfg, section);
 }
 
+double ScanMatcher::weakTranslationSigma(const MatchResult& r) const
+{
+	if (m_fallbackAboveSigmaXY <= 0 || !r.success || r.ambiguous) return 0;
+	const Eigen::Matrix2d xy = r.estimate.cov.asEigen().topLeftCorner<2, 2>();
+	const double sigma =
+		std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(xy).eigenvalues()[1]));
+	return sigma > std::max(m_fallbackAboveSigmaXY, rangeLatticeCellSigma()) ? sigma : 0;
+}
+
 template <typename Run>
 MatchResult ScanMatcher::tryFallback(MatchResult r, Run&& run)
 {
 	m_lastMatchByFallback = false;
 	const bool ambiguous = r.success && r.ambiguous && m_fallbackOnAmbiguity;
-	if ((r.success && !ambiguous) || r.failureKind == "too_few_points") return r;
+	// A match whose own covariance says its geometry fixes the position
+	// poorly: PCM's with a translation sigma of 1-2 cm or more were 2-4 mm
+	// worse than IDC's on the same pairs of orebro (calibration), where
+	// IDC keeps every point and PCM only its lines and ellipses.
+	const double weakSigma = weakTranslationSigma(r);
+	if ((r.success && !ambiguous && weakSigma <= 0) || r.failureKind == "too_few_points") return r;
 	// A matcher used without loadParams() has its default fallback, with
 	// that class's default parameters.
 	if (!m_fallback && m_followFallback && !m_fallbackClass.empty())
@@ -103,9 +125,9 @@ MatchResult ScanMatcher::tryFallback(MatchResult r, Run&& run)
 	if (!m_fallback) return r;
 	m_fallback->m_guessGateEnabled = m_guessGateEnabled;
 	MatchResult f = run(*m_fallback);
-	if (ambiguous)
+	if (r.success)
 	{
-		// An ambiguous match is flagged and used; a fallback's match that
+		// An ambiguous (or weak) match is used; a fallback's match that
 		// the points do not find ambiguous is better evidence. PCM's
 		// ambiguous estimates were the wrong solution more often than
 		// IDC's on the same pairs (orebro, calibration: 125 against 58 mm
@@ -116,7 +138,16 @@ MatchResult ScanMatcher::tryFallback(MatchResult r, Run&& run)
 			r.timeSeconds += f.timeSeconds;
 			return r;
 		}
-		f.primaryFailure = className() + ": ambiguous, " + r.ambiguityReason;
+		if (ambiguous)
+			f.primaryFailure = className() + ": ambiguous, " + r.ambiguityReason;
+		else
+		{
+			char buf[160];
+			std::snprintf(buf, sizeof(buf),
+				": weak, its translation sigma %.3f m > fallback_above_sigma_xy %.3f m",
+				weakSigma, m_fallbackAboveSigmaXY);
+			f.primaryFailure = className() + buf;
+		}
 	}
 	else
 		f.primaryFailure = className() + ": " + r.failureReason;

@@ -64,7 +64,8 @@ struct MatchResult
 	/** Non-empty when the configured matcher failed and its fallback
 	 * (`fallback_class`) made this result: "<class>: <why it failed>", or
 	 * when its match was ambiguous and the fallback's was not
-	 * (`fallback_on_ambiguity`): "<class>: ambiguous, <why>".
+	 * (`fallback_on_ambiguity`): "<class>: ambiguous, <why>", or when its
+	 * covariance was wide (`fallback_above_sigma_xy`): "<class>: weak, ...".
 	 * Everything else in the result is the fallback's. Counted by
 	 * summary.json and featloc-bench. */
 	std::string primaryFailure;

@@ -66,7 +66,7 @@ class PcmFeatureMatcher : public ScanMatcher
 	 * of a door jamb can, and IDC says when they cannot (MRPT's ICP, the
 	 * fallback before, slid along a corridor instead: doc/benchmarks.md,
 	 * "Issue 15, fourth session"). */
-	PcmFeatureMatcher() : ScanMatcher("featloc::IdcMatcher") {}
+	PcmFeatureMatcher() : ScanMatcher("featloc::IdcMatcher") { m_fallbackAboveSigmaXY = 0.01; }
 
 	struct Parameters : public mrpt::config::CLoadableOptions
 	{

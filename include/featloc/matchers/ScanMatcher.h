@@ -150,6 +150,8 @@ class ScanMatcher : public mrpt::rtti::CObject
 	virtual bool usesRangeLatticeStep() const { return false; }
 	/** `dequantize_ranges` (true; IcpMatcher: false). */
 	bool m_dequantizeRanges = true;
+	/** `fallback_above_sigma_xy` [m] (0: off; PcmFeatureMatcher: 0.01). */
+	double m_fallbackAboveSigmaXY = 0;
 
    private:
 	/** The lattice of `scan`'s readings (the scan before it too, the
@@ -168,7 +170,8 @@ class ScanMatcher : public mrpt::rtti::CObject
 	 * it is (MatchResult::primaryFailure), or `r` when no fallback applies.
 	 * A failure for too few points stays: no matcher can do better. With
 	 * fallback_on_ambiguity, an ambiguous `r` goes to the fallback too and
-	 * is replaced only by a success that is not ambiguous. */
+	 * is replaced only by a success that is not ambiguous; so does, with
+	 * fallback_above_sigma_xy, a weak one (weakTranslationSigma()). */
 	template <typename Run>
 	MatchResult tryFallback(MatchResult r, Run&& run);
 
@@ -214,6 +217,11 @@ class ScanMatcher : public mrpt::rtti::CObject
 	std::shared_ptr<ScanMatcher> m_fallback;
 	bool m_followFallback = true;  //!< false for a fallback itself
 	bool m_fallbackOnAmbiguity = true;	//!< `fallback_on_ambiguity`
+	/** With fallback_above_sigma_xy: the largest translation sigma [m] of a
+	 * successful, unflagged `r` when it exceeds both that key and the range
+	 * lattice's cell (rangeLatticeCellSigma(), which floors every match's
+	 * covariance on a lattice and so says nothing of its geometry); else 0. */
+	double weakTranslationSigma(const MatchResult& r) const;
 	bool m_freeDirectionFromGuess;	//!< `free_direction_from_guess`
 	bool m_lastMatchByFallback = false;	 //!< for inspectLastMatch()
 	RangeLattice m_lattice;
