@@ -36,20 +36,16 @@ bench() { # name, data, extra args...
   main_table < "$f.txt" | if [ -n "$HEADER" ]; then cat; else tail -n +3; fi
   HEADER=
 }
-lattice_log() { # world, out name, extra featloc-sim args
-  [ -f "$OUT/$2.rawlog" ] ||
-    "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$2" -q --set Laser:range_step=0.16 "${@:3}" > /dev/null
-}
 
 machine_line
 bench_calibration_and_held_out
 for w in office lab; do
-  lattice_log "$w" "$w-1cm-lattice" --set Laser:range_noise=0.01
+  sim_lattice "$w" "$w-1cm-lattice" --set Laser:range_noise=0.01
   bench "sim $w (1 cm, 0.16 m lattice)" "$OUT/$w-1cm-lattice.rawlog" -g "$OUT/$w-1cm-lattice.gt.txt" \
     --perturb-xy 0.3 --perturb-yaw-deg 10
 done
 for w in corridor-people room-moving-objects; do
-  lattice_log "$w" "$w-lattice" --seed 1
+  sim_lattice "$w" "$w-lattice" --seed 1
   bench "$w (0.16 m lattice)" "$OUT/$w-lattice.rawlog" -g "$OUT/$w-lattice.gt.txt" \
     --perturb-xy 0.3 --perturb-yaw-deg 10
 done

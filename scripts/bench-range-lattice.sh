@@ -24,20 +24,13 @@ source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-range-lattice "$@"
 
 HELD_OUT="corridor-people hall-people room-moving-objects"
-lattice_log() { # world, seed: $OUT/WORLD-lattice-seedSEED.rawlog (+ .gt.txt)
-  [ -f "$OUT/$1-lattice-seed$2.rawlog" ] ||
-    "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$1-lattice-seed$2" --seed "$2" -q \
-      --set Laser:range_step=0.16 > /dev/null
-}
 for w in office lab; do
   sim_1cm "$w"
-  [ -f "$OUT/$w-1cm-lattice.rawlog" ] ||
-    "$BIN/featloc-sim" "$ROOT/worlds/$w.ini" --out "$OUT/$w-1cm-lattice" -q \
-      --set Laser:range_noise=0.01 --set Laser:range_step=0.16 > /dev/null
+  sim_lattice "$w" "$w-1cm-lattice" --set Laser:range_noise=0.01
 done
 for w in $HELD_OUT; do
   [ -f "$OUT/$w.rawlog" ] || "$BIN/featloc-sim" "$ROOT/worlds/$w.ini" --out "$OUT/$w" -q > /dev/null
-  for seed in 1 2 3; do lattice_log "$w" "$seed"; done
+  for seed in 1 2 3; do sim_lattice "$w" "$w-lattice-seed$seed" --seed "$seed"; done
 done
 
 machine_line
