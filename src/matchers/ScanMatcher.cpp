@@ -294,6 +294,9 @@ MatchResult ScanMatcher::match(
 	const mrpt::poses::CPosePDFGaussian& initialGuess)
 {
 	const auto t0 = std::chrono::steady_clock::now();
+	// No lattice is looked for here: no floor from an earlier match of
+	// observations may remain.
+	m_rangeLatticeStep = 0;
 	MatchResult r = matchInSensorFrames(reference, current, initialGuess, initialGuess);
 	r.guess = initialGuess;
 	checkAgainstGuess(initialGuess, r);

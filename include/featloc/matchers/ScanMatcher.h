@@ -138,7 +138,8 @@ class ScanMatcher : public mrpt::rtti::CObject
 	 * (RangeLattice) in the match being made, 0 when none or not looked
 	 * for (looked for with dequantize_ranges, or usesRangeLatticeStep());
 	 * with dequantize_ranges its points were dequantized before
-	 * matchPoints(). Set by the match() of observations. */
+	 * matchPoints(). Set by the match() of observations; 0 in the match()
+	 * of points, which are matched as they are. */
 	double rangeLatticeStep() const { return m_rangeLatticeStep; }
 	/** The least range noise [m] a covariance of this match may assume:
 	 * the lattice's cell, rangeLatticeStep() / sqrt(12) (0 without one).
@@ -174,6 +175,11 @@ class ScanMatcher : public mrpt::rtti::CObject
 	 * fallback_above_sigma_xy, a weak one (weakTranslationSigma()). */
 	template <typename Run>
 	MatchResult tryFallback(MatchResult r, Run&& run);
+	/** With fallback_above_sigma_xy: the largest translation sigma [m] of a
+	 * successful, unflagged `r` when it exceeds both that key and the range
+	 * lattice's cell (rangeLatticeCellSigma(), which floors every match's
+	 * covariance on a lattice and so says nothing of its geometry); else 0. */
+	double weakTranslationSigma(const MatchResult& r) const;
 
 	/** Point checks, the coarse search over `window`'s 3 sigma (the guess
 	 * with the gate allowance) and matchPoints(); no timing, no guess
@@ -217,11 +223,6 @@ class ScanMatcher : public mrpt::rtti::CObject
 	std::shared_ptr<ScanMatcher> m_fallback;
 	bool m_followFallback = true;  //!< false for a fallback itself
 	bool m_fallbackOnAmbiguity = true;	//!< `fallback_on_ambiguity`
-	/** With fallback_above_sigma_xy: the largest translation sigma [m] of a
-	 * successful, unflagged `r` when it exceeds both that key and the range
-	 * lattice's cell (rangeLatticeCellSigma(), which floors every match's
-	 * covariance on a lattice and so says nothing of its geometry); else 0. */
-	double weakTranslationSigma(const MatchResult& r) const;
 	bool m_freeDirectionFromGuess;	//!< `free_direction_from_guess`
 	bool m_lastMatchByFallback = false;	 //!< for inspectLastMatch()
 	RangeLattice m_lattice;
