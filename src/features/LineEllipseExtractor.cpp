@@ -40,7 +40,8 @@ void setFootPointCovariance(ScanFeature& f)
 
 double gap(const ScanPoint& a, const ScanPoint& b)
 {
-	return std::hypot(a.x - b.x, a.y - b.y);
+	const double dx = a.x - b.x, dy = a.y - b.y;
+	return std::sqrt(dx * dx + dy * dy);	// as PointNoiseEstimator::chordDistance
 }
 
 double chordDistance(const ScanPoint& a, const ScanPoint& b, const ScanPoint& p)

@@ -8,8 +8,10 @@ namespace featloc
 double PointNoiseEstimator::chordDistance(const ScanPoint& a, const ScanPoint& b, const ScanPoint& p)
 {
 	const double ex = b.x - a.x, ey = b.y - a.y;
-	const double len = std::hypot(ex, ey);
-	if (len < 1e-12) return std::hypot(p.x - a.x, p.y - a.y);
+	// sqrt rather than hypot (no overflow at metres; glibc's hypot was
+	// several percent of a PCM match, which calls this for every point).
+	const double len = std::sqrt(ex * ex + ey * ey);
+	if (len < 1e-12) return std::sqrt((p.x - a.x) * (p.x - a.x) + (p.y - a.y) * (p.y - a.y));
 	return std::abs(ex * (p.y - a.y) - ey * (p.x - a.x)) / len;
 }
 

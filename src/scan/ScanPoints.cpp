@@ -5,9 +5,50 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace featloc
 {
+namespace
+{
+/** The cos and sin of a scan's beam bearings, kept for the next scan with
+ * the same bearings (every scan of one sensor): a sin and a cos per beam
+ * were a tenth of a 361-beam PCM match. MRPT's
+ * CSinCosLookUpTableFor2DScans keeps floats, with which a point's x, y
+ * would disagree with its range by up to 1e-7 of it; the code relies on
+ * x, y = r (cos, sin) of its bearing (RangeLattice::dequantize) and on
+ * the same points bit for bit as before. */
+struct BeamDirections
+{
+	std::vector<float> bearings;
+	std::vector<double> cos, sin;
+
+	void update(const mrpt::obs::CObservation2DRangeScan& scan)
+	{
+		const size_t n = scan.getScanSize();
+		bool same = bearings.size() == n;
+		m_next.resize(n);
+		for (size_t i = 0; i < n; i++)
+		{
+			m_next[i] = scan.getScanAngle(i);
+			same = same && m_next[i] == bearings[i];
+		}
+		if (same) return;
+		bearings.swap(m_next);
+		cos.resize(n);
+		sin.resize(n);
+		for (size_t i = 0; i < n; i++)
+		{
+			cos[i] = std::cos(static_cast<double>(bearings[i]));
+			sin[i] = std::sin(static_cast<double>(bearings[i]));
+		}
+	}
+
+   private:
+	std::vector<float> m_next;
+};
+}  // namespace
+
 ScanPoints ScanPoints::fromScan(const mrpt::obs::CObservation2DRangeScan& scan)
 {
 	ScanPoints out;
@@ -16,15 +57,17 @@ ScanPoints ScanPoints::fromScan(const mrpt::obs::CObservation2DRangeScan& scan)
 	out.angularStep = n > 1 ? scan.aperture / static_cast<double>(n - 1) : 0;
 	if (n < 2) return out;	// no bearing is defined for a single beam
 	out.points.reserve(n);
+	thread_local BeamDirections directions;
+	directions.update(scan);
 	for (size_t i = 0; i < n; i++)
 	{
 		if (!hasReturn(scan, i)) continue;
 		const double r = scan.getScanRange(i);
 		ScanPoint p;
 		p.range = r;
-		p.bearing = scan.getScanAngle(i);
-		p.x = r * std::cos(p.bearing);
-		p.y = r * std::sin(p.bearing);
+		p.bearing = directions.bearings[i];
+		p.x = r * directions.cos[i];
+		p.y = r * directions.sin[i];
 		p.beam = static_cast<uint32_t>(i);
 		out.points.push_back(p);
 	}
