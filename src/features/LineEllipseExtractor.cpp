@@ -170,6 +170,9 @@ void LineEllipseExtractor::split(
 
 void LineEllipseExtractor::mergeRuns(const ScanPoints& s)
 {
+	// m_pairKept[r]: runs r and r + 1, as they are, were fitted jointly and
+	// stayed apart; a later pass would fit them again to the same end.
+	m_pairKept.assign(m_runs.size(), 0);
 	bool merged = true;
 	while (merged)
 	{
@@ -181,6 +184,7 @@ void LineEllipseExtractor::mergeRuns(const ScanPoints& s)
 			// Only runs of the same cluster (sharing or adjacent points).
 			if (B.first > A.second + 1) continue;
 			if (clusterBreak(s.points[A.second], s.points[B.first])) continue;
+			if (m_pairKept[r]) continue;
 			// One line if the joint fit is as good as the noise allows: a
 			// single noise spike (which may have caused the split) must not
 			// keep a straight wall in pieces.
@@ -191,14 +195,24 @@ void LineEllipseExtractor::mergeRuns(const ScanPoints& s)
 				A.second = B.second;
 				m_runs.erase(m_runs.begin() + static_cast<long>(r) + 1);
 				m_runNoise.erase(m_runNoise.begin() + static_cast<long>(r) + 1);
+				m_pairKept.erase(m_pairKept.begin() + static_cast<long>(r) + 1);
+				// Run r changed: both its pairs are to be fitted again.
+				m_pairKept[r] = 0;
+				if (r > 0) m_pairKept[r - 1] = 0;
 				merged = true;
 			}
+			else
+				m_pairKept[r] = 1;
 		}
 	}
 }
 
 void LineEllipseExtractor::refine(const ScanPoints& s)
 {
+	// A run's fit depends on its points only: the last pair's B, when it
+	// kept its points, is this pair's A.
+	Run lastFitRun{1, 0};
+	LineFit lastFit;
 	for (unsigned it = 0; it < params.refine_iterations; it++)
 	{
 		bool moved = false;
@@ -208,8 +222,10 @@ void LineEllipseExtractor::refine(const ScanPoints& s)
 			auto& B = m_runs[r + 1];
 			if (B.first > A.second + 1) continue;  // not neighbours
 			if (A.second - A.first < 2 || B.second - B.first < 2) continue;
-			const LineFit fa = fitRun(s, A.first, A.second);
+			const LineFit fa = A == lastFitRun ? lastFit : fitRun(s, A.first, A.second);
 			const LineFit fb = fitRun(s, B.first, B.second);
+			lastFitRun = B;
+			lastFit = fb;
 			// Split runs share their boundary point: give it (and its
 			// neighbours, one at a time) to the closer line.
 			auto closerToB = [&](size_t k) {

@@ -1,6 +1,7 @@
 #include "featloc/scan/RangeLattice.h"
 
 #include <opencv2/core.hpp>
+#include <opencv2/core/hal/hal.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -60,11 +61,16 @@ double RangeLattice::step(const ScanPoints& scan)
 
 	m_histogram.assign(kDft, 0.0f);
 	for (double r : m_ranges) m_histogram[static_cast<size_t>(r / kBin)] += 1.0f;
-	const cv::Mat histogram(1, kDft, CV_32F, m_histogram.data());
 	// A real input's spectrum, packed (CCS): Re 0, Re 1, Im 1, Re 2, ...
+	// (what cv::dft gives for one row, bit for bit).
 	m_spectrum.resize(kDft);
-	cv::Mat spectrum(1, kDft, CV_32F, m_spectrum.data());
-	cv::dft(histogram, spectrum);
+	if (!m_dftPlan.plan)
+		m_dftPlan.plan = std::shared_ptr<cv::hal::DFT2D>(
+			cv::hal::DFT2D::create(kDft, 1, CV_32F, 1, 1, 0, 0));
+	constexpr size_t kRowBytes = kDft * sizeof(float);
+	static_cast<cv::hal::DFT2D*>(m_dftPlan.plan.get())
+		->apply(reinterpret_cast<const uchar*>(m_histogram.data()), kRowBytes,
+			reinterpret_cast<uchar*>(m_spectrum.data()), kRowBytes);
 
 	// R on the DFT's grid, f = k / (kDft kBin). The fundamental is the
 	// lowest peak about as high as the highest: its harmonics are no
@@ -82,8 +88,15 @@ double RangeLattice::step(const ScanPoints& scan)
 		const double im = m_spectrum[2 * static_cast<size_t>(k)];
 		return std::sqrt(re * re + im * im) / static_cast<double>(n);
 	};
-	double highest = 0;
-	for (int k = lowBin; k <= highBin; k++) highest = std::max(highest, R(k));
+	// The largest |.|^2, then one root: the same value as the largest R.
+	double highest2 = 0;
+	for (int k = lowBin; k <= highBin; k++)
+	{
+		const double re = m_spectrum[2 * static_cast<size_t>(k) - 1];
+		const double im = m_spectrum[2 * static_cast<size_t>(k)];
+		highest2 = std::max(highest2, re * re + im * im);
+	}
+	const double highest = std::sqrt(highest2) / static_cast<double>(n);
 	if (highest < kMinResultant) return 0;
 	int peak = lowBin;
 	while (R(peak) < highest - kPeakTolerance) peak++;

@@ -23,29 +23,30 @@ struct BeamDirections
 	std::vector<float> bearings;
 	std::vector<double> cos, sin;
 
+	/** MRPT's getScanAngle() is a function of the beam count, the
+	 * aperture and the sweep direction alone: those are the key. */
 	void update(const mrpt::obs::CObservation2DRangeScan& scan)
 	{
 		const size_t n = scan.getScanSize();
-		bool same = bearings.size() == n;
-		m_next.resize(n);
-		for (size_t i = 0; i < n; i++)
-		{
-			m_next[i] = scan.getScanAngle(i);
-			same = same && m_next[i] == bearings[i];
-		}
-		if (same) return;
-		bearings.swap(m_next);
+		if (n == bearings.size() && scan.aperture == m_aperture &&
+			scan.rightToLeft == m_rightToLeft)
+			return;
+		m_aperture = scan.aperture;
+		m_rightToLeft = scan.rightToLeft;
+		bearings.resize(n);
 		cos.resize(n);
 		sin.resize(n);
 		for (size_t i = 0; i < n; i++)
 		{
+			bearings[i] = scan.getScanAngle(i);
 			cos[i] = std::cos(static_cast<double>(bearings[i]));
 			sin[i] = std::sin(static_cast<double>(bearings[i]));
 		}
 	}
 
    private:
-	std::vector<float> m_next;
+	float m_aperture = 0;
+	bool m_rightToLeft = true;
 };
 }  // namespace
 
@@ -61,8 +62,10 @@ ScanPoints ScanPoints::fromScan(const mrpt::obs::CObservation2DRangeScan& scan)
 	directions.update(scan);
 	for (size_t i = 0; i < n; i++)
 	{
-		if (!hasReturn(scan, i)) continue;
+		// hasReturn(), reading the range once.
+		if (!scan.getScanRangeValidity(i)) continue;
 		const double r = scan.getScanRange(i);
+		if (!(std::isfinite(r) && r > 0 && r < scan.maxRange)) continue;
 		ScanPoint p;
 		p.range = r;
 		p.bearing = directions.bearings[i];

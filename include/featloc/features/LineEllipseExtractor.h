@@ -153,6 +153,7 @@ class LineEllipseExtractor
 
 	std::vector<Run> m_runs;  // reused buffers: no allocation per call
 	std::vector<double> m_runNoise;	 //!< per run: its cluster's noise
+	std::vector<char> m_pairKept;	//!< mergeRuns(): per pair of runs, fitted and kept apart
 	std::vector<Run> m_stack;
 	PointNoiseEstimator m_noise;  //!< robust point noise of a cluster (step 2)
 };
