@@ -145,9 +145,16 @@ void LineEllipseExtractor::split(
 		m_stack.pop_back();
 		double worst = 0;
 		size_t at = a;
+		// PointNoiseEstimator::chordDistance with the chord's length
+		// computed once.
+		const ScanPoint &pa = s.points[a], &pb = s.points[b];
+		const double ex = pb.x - pa.x, ey = pb.y - pa.y;
+		const double len = std::sqrt(ex * ex + ey * ey);
 		for (size_t k = a + 1; k < b; k++)
 		{
-			const double d = chordDistance(s.points[a], s.points[b], s.points[k]);
+			const ScanPoint& p = s.points[k];
+			const double d = len < 1e-12 ? chordDistance(pa, pb, p)
+										 : std::abs(ex * (p.y - pa.y) - ey * (p.x - pa.x)) / len;
 			if (d > worst)
 			{
 				worst = d;
@@ -209,10 +216,19 @@ void LineEllipseExtractor::mergeRuns(const ScanPoints& s)
 
 void LineEllipseExtractor::refine(const ScanPoints& s)
 {
-	// A run's fit depends on its points only: the last pair's B, when it
-	// kept its points, is this pair's A.
-	Run lastFitRun{1, 0};
-	LineFit lastFit;
+	// A run's fit depends on its points only: each run's last fit is kept
+	// with the points it was made on, and used again while the run keeps
+	// them (across pairs and passes).
+	m_runFits.assign(m_runs.size(), {Run{1, 0}, LineFit()});
+	auto fitOf = [&](size_t r) -> const LineFit& {
+		auto& [fitted, fit] = m_runFits[r];
+		if (fitted != m_runs[r])
+		{
+			fit = fitRun(s, m_runs[r].first, m_runs[r].second);
+			fitted = m_runs[r];
+		}
+		return fit;
+	};
 	for (unsigned it = 0; it < params.refine_iterations; it++)
 	{
 		bool moved = false;
@@ -222,10 +238,8 @@ void LineEllipseExtractor::refine(const ScanPoints& s)
 			auto& B = m_runs[r + 1];
 			if (B.first > A.second + 1) continue;  // not neighbours
 			if (A.second - A.first < 2 || B.second - B.first < 2) continue;
-			const LineFit fa = A == lastFitRun ? lastFit : fitRun(s, A.first, A.second);
-			const LineFit fb = fitRun(s, B.first, B.second);
-			lastFitRun = B;
-			lastFit = fb;
+			const LineFit fa = fitOf(r);
+			const LineFit fb = fitOf(r + 1);
 			// Split runs share their boundary point: give it (and its
 			// neighbours, one at a time) to the closer line.
 			auto closerToB = [&](size_t k) {

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "featloc/features/LineFit.h"
 #include "featloc/features/ScanFeature.h"
 #include "featloc/scan/PointNoiseEstimator.h"
 #include "featloc/scan/ScanPoints.h"
@@ -154,6 +155,7 @@ class LineEllipseExtractor
 	std::vector<Run> m_runs;  // reused buffers: no allocation per call
 	std::vector<double> m_runNoise;	 //!< per run: its cluster's noise
 	std::vector<char> m_pairKept;	//!< mergeRuns(): per pair of runs, fitted and kept apart
+	std::vector<std::pair<Run, LineFit>> m_runFits;	 //!< refine(): per run, its last fit
 	std::vector<Run> m_stack;
 	PointNoiseEstimator m_noise;  //!< robust point noise of a cluster (step 2)
 };
