@@ -182,18 +182,28 @@ void PcmFeatureMatcher::saveOwnParams(
 void PcmFeatureMatcher::memberships(const mrpt::math::TPose2D& x, const double bounds[3])
 {
 	m_pairs.clear();
+	// The three rotations of the bounds box's corners and its centre, for
+	// every feature.
+	double cosW[3], sinW[3];
+	for (int sw = -1; sw <= 1; sw++)
+	{
+		cosW[sw + 1] = std::cos(x.phi + sw * bounds[2]);
+		sinW[sw + 1] = std::sin(x.phi + sw * bounds[2]);
+	}
+	const double cw0 = std::cos(x.phi), sw0 = std::sin(x.phi);
 	for (size_t i = 0; i < m_reference.size(); i++)
 	{
 		const ScanFeature& fi = m_reference[i];
 		double px = 0, py = 0;
-		PcmMotionUpdate::predict(fi, x, px, py);
+		PcmMotionUpdate::predict(fi, x, cw0, sw0, px, py);
 		// Eq. (24): the paper's one corner of the bounds box, or featloc's
 		// largest over all eight (the maximum need not be at that corner).
 		double dmax2 = 0;
 		auto corner = [&](int sx, int sy, int sw) {
 			double cx = 0, cy = 0;
 			PcmMotionUpdate::predict(fi,
-				{x.x + sx * bounds[0], x.y + sy * bounds[1], x.phi + sw * bounds[2]}, cx, cy);
+				{x.x + sx * bounds[0], x.y + sy * bounds[1], x.phi + sw * bounds[2]},
+				cosW[sw + 1], sinW[sw + 1], cx, cy);
 			dmax2 = std::max(dmax2, (cx - px) * (cx - px) + (cy - py) * (cy - py));
 		};
 		if (params.dmax_corners == "published")

@@ -13,10 +13,15 @@ namespace featloc
 void PcmMotionUpdate::predict(
 	const ScanFeature& f, const mrpt::math::TPose2D& m, double& x, double& y)
 {
+	predict(f, m, std::cos(m.phi), std::sin(m.phi), x, y);
+}
+
+void PcmMotionUpdate::predict(const ScanFeature& f, const mrpt::math::TPose2D& m, double cw,
+	double sw, double& x, double& y)
+{
 	// f_i - A_i t, then R(w) = [cos sin; -sin cos] (eq. 2).
 	const double px = f.x - (f.a2 * m.x + f.c * m.y);
 	const double py = f.y - (f.c * m.x + f.b2 * m.y);
-	const double cw = std::cos(m.phi), sw = std::sin(m.phi);
 	x = cw * px + sw * py;
 	y = -sw * px + cw * py;
 }
@@ -27,10 +32,11 @@ double PcmMotionUpdate::cost(
 	const std::vector<FeaturePair>& pairs, const mrpt::math::TPose2D& motion)
 {
 	double e = 0;
+	const double cw = std::cos(motion.phi), sw = std::sin(motion.phi);
 	for (const auto& p : pairs)
 	{
 		double lx = 0, ly = 0;
-		predict(reference[p.i], motion, lx, ly);
+		predict(reference[p.i], motion, cw, sw, lx, ly);
 		const double dx = current[p.j].x - lx, dy = current[p.j].y - ly;
 		e += p.mu * (dx * dx + dy * dy);
 	}

@@ -66,5 +66,8 @@ class PcmMotionUpdate
 	static void predict(
 		const ScanFeature& f, const mrpt::math::TPose2D& motion, double& x,
 		double& y);
+	/** The same with cos w and sin w given (one rotation, many features). */
+	static void predict(const ScanFeature& f, const mrpt::math::TPose2D& motion, double cw,
+		double sw, double& x, double& y);
 };
 }  // namespace featloc
