@@ -172,3 +172,27 @@ TEST(RangeLattice, DequantizedReadingsLieNearerTheirSurfaces)
 	EXPECT_EQ(lattice.dequantize(scan, 0.0), 0u);
 	EXPECT_TRUE(scan.samePointsAs(exact[0]));
 }
+
+// The DFT's plan is made on first use and kept; a copy makes its own. A
+// copy of a lattice that has searched, the original and a fresh one find
+// the same step and offset, bit for bit, in any order.
+TEST(RangeLattice, ACopyFindsWhatTheOriginalFinds)
+{
+	auto onLattice = officeScans([](double r) { return noisy(0.05 * std::round(r / 0.05), 0.003); });
+	RangeLattice original;
+	const double first = original.step(onLattice[0]);
+	ASSERT_GT(first, 0);
+	RangeLattice copy = original;
+	RangeLattice assigned;
+	assigned = original;
+	for (const auto& scan : onLattice)
+	{
+		RangeLattice fresh;
+		const double q = fresh.step(scan);
+		EXPECT_EQ(copy.step(scan), q);
+		EXPECT_EQ(copy.offset(), fresh.offset());
+		EXPECT_EQ(original.step(scan), q);
+		EXPECT_EQ(assigned.step(scan), q);
+		EXPECT_EQ(assigned.offset(), fresh.offset());
+	}
+}
