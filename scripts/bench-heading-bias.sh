@@ -11,7 +11,7 @@
 # ATE comes from a systematic difference per step or from the sum of
 # independent ones; and the pairs of featloc-bench (+-0.3 m / 10 deg),
 # each matcher's heading error against the reference's turn.
-# Usage: scripts/bench-heading-bias.sh [OUTDIR]   (about 10 min on 2 cores)
+# Usage: scripts/bench-heading-bias.sh [OUTDIR]   (about 6 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-heading-bias "$@"
