@@ -13,6 +13,7 @@
 
 #include "featloc/core/ExceptionText.h"
 #include "featloc/io/EntrySource.h"
+#include "featloc/io/InputOptions.h"
 #include "featloc/registerClasses.h"
 #include "featloc/scan/RangeLattice.h"
 #include "featloc/scan/ScanPoints.h"
@@ -54,7 +55,7 @@ int main(int argc, char** argv)
 		std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
 		try
 		{
-			auto source = EntrySource::openFile(argv[a]);
+			auto source = EntrySource::openFile(argv[a], InputOptions());  // ranges only
 			RawlogEntry entry;
 			while (source->next(entry)) scansOf(entry.object, scans);
 		}

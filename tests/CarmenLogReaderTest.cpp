@@ -72,3 +72,43 @@ TEST(CarmenLogReader, MalformedLinesNameFileAndLine)
 	EXPECT_NE(errorOf("odom2.log").find("odom2.log:1: ODOM needs x y theta"), std::string::npos);
 	EXPECT_NE(errorOf("nope.log").find("does not exist"), std::string::npos);
 }
+
+// Where a FLASER message's beams point: with "sick" (the default) a count
+// whose 180 / n deg is a SICK resolution has its beams that far apart from
+// -90 deg, ending one step short of +90; 181 and 361 beams span -90..+90;
+// "even" spreads any count over -90..+90 (MRPT's carmen2rawlog).
+TEST(CarmenLogReader, FlaserBeamsPointWhereTheScannerLooked)
+{
+	TempDir dir;
+	auto bearings = [&](size_t n, const std::string& convention) {
+		std::ofstream(dir.file("b.log")) << flaser(n, 2.0, 0, 0, 0, 1);
+		CarmenLogReader::Options o;
+		o.beamAngles = convention;
+		const auto scans = CarmenLogReader::read(dir.file("b.log"), o);
+		const auto& s = *scans.at(0).scan;
+		EXPECT_EQ(s.getScanSize(), n);
+		// A beam's bearing on the robot: the sensor's heading plus MRPT's
+		// bearing within the scan.
+		std::vector<double> out;
+		for (size_t i = 0; i < n; i++) out.push_back(s.sensorPose.yaw() + s.getScanAngle(i));
+		return out;
+	};
+	const double deg = M_PI / 180;
+	struct Case
+	{
+		size_t n;
+		std::string convention;
+		double first, last;
+	};
+	for (const Case& c : {Case{180, "sick", -90, 89}, Case{360, "sick", -90, 89.5},
+			 Case{720, "sick", -90, 89.75}, Case{181, "sick", -90, 90}, Case{361, "sick", -90, 90},
+			 Case{100, "sick", -90, 90}, Case{180, "even", -90, 90}, Case{181, "even", -90, 90}})
+	{
+		SCOPED_TRACE(testing::Message() << c.n << " beams, " << c.convention);
+		const auto b = bearings(c.n, c.convention);
+		EXPECT_NEAR(b.front(), c.first * deg, 1e-6);
+		EXPECT_NEAR(b.back(), c.last * deg, 1e-6);
+		const double step = (c.last - c.first) / static_cast<double>(c.n - 1) * deg;
+		for (size_t i = 1; i < b.size(); i++) ASSERT_NEAR(b[i] - b[i - 1], step, 1e-6);
+	}
+}

@@ -47,6 +47,7 @@ TEST(RunConfiguration, NonDefaultValuesRoundTrip)
 	rc.input.laser_label = "LMS";
 	rc.input.invalid_range_policy = "invalidate";
 	rc.input.max_scans = 17;
+	rc.input.carmen_beam_angles = "even";
 	rc.odometry.covariance_source = "model";
 	rc.odometry.model.sigma_xy_per_rad = 0.123;
 	rc.odometry.model.sigma_yaw_min = 0.0123;
@@ -68,6 +69,7 @@ TEST(RunConfiguration, NonDefaultValuesRoundTrip)
 	EXPECT_EQ(back.input.laser_label, "LMS");
 	EXPECT_EQ(back.input.invalid_range_policy, "invalidate");
 	EXPECT_EQ(back.input.max_scans, 17u);
+	EXPECT_EQ(back.input.carmen_beam_angles, "even");
 	EXPECT_EQ(back.odometry.covariance_source, "model");
 	EXPECT_NEAR(back.odometry.model.sigma_xy_per_rad, 0.123, 1e-12);
 	EXPECT_NEAR(back.odometry.model.sigma_yaw_min, 0.0123, 1e-12);
@@ -102,6 +104,7 @@ TEST(RunConfiguration, BadValuesNameTheirKey)
 	const std::pair<const char*, const char*> cases[] = {
 		{"[Pipeline]\nestimator = kalman\n", "[Pipeline] estimator"},
 		{"[Input]\ninvalid_range_policy = ignore\n", "invalid_range_policy"},
+		{"[Input]\ncarmen_beam_angles = gmapping\n", "carmen_beam_angles"},
 		{"[ScanMatcher.IcpMatcher]\nALFA = 1.5\n", "ALFA"},
 		{"[ScanMatcher.IcpMatcher]\nalgorithm = icpFancy\n", "icpClassic"},
 		{"[Pipeline]\ninitial_pose = [1 2]\n", "initial_pose"},

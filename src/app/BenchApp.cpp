@@ -50,11 +50,13 @@ struct Sequence
 	std::vector<mrpt::poses::CPose2D> reference;  //!< poses, when known
 };
 
-Sequence loadCarmen(const std::string& path)
+Sequence loadCarmen(const std::string& path, const InputOptions& input)
 {
 	Sequence seq;
 	mrpt::poses::CPose2D prevOdo;
-	for (const auto& s : CarmenLogReader::read(path, {}))
+	CarmenLogReader::Options carmen;
+	carmen.beamAngles = input.carmen_beam_angles;
+	for (const auto& s : CarmenLogReader::read(path, carmen))
 	{
 		seq.scans.push_back(s.scan);
 		seq.times.push_back(s.time);
@@ -514,7 +516,7 @@ int BenchApp::main(int argc, char** argv)
 	const std::string data = argData.getValue();
 	if (argLoops.isSet() != argRelationsOut.isSet() || (argLoops.isSet() && !argReference.isSet()))
 		throw UsageError("--loop-relations needs --write-relations FILE and --reference-matcher CLASS");
-	const Sequence seq = CarmenLogSource::handles(data) ? loadCarmen(data) : loadRawlog(data, rc, argGt.getValue());
+	const Sequence seq = CarmenLogSource::handles(data) ? loadCarmen(data, rc.input) : loadRawlog(data, rc, argGt.getValue());
 	if (argLoops.isSet())
 		return writeLoopRelations(seq, data, argLoops.getValue(), argReference.getValue(),
 			argRelationsOut.getValue(), cfg);

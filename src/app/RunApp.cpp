@@ -176,7 +176,7 @@ void prepare(RunCommandLine& cl, const std::vector<std::string>& files, Prepared
 		throw ConfigError(
 			run.cfg.sourceName() +
 			": no rawlog: give one on the command line or set [Input] rawlog");
-	run.source = EntrySource::openFile(run.inputPath);
+	run.source = EntrySource::openFile(run.inputPath, run.rc.input);
 	run.reference = loadReference(run.cfg, run.rc, inputOnCommandLine, *run.source);
 
 	run.folder = std::make_unique<ResultsFolder>(cl.argOut.isSet()

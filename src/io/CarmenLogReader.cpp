@@ -1,5 +1,6 @@
 #include "featloc/io/CarmenLogReader.h"
 
+#include <mrpt/core/bits_math.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
@@ -36,6 +37,26 @@ double number(const std::string& tok, const std::string& where)
 	return v;
 }
 }  // namespace
+
+void CarmenLogReader::beamAngles(
+	size_t n, const std::string& convention, double& step, double& first)
+{
+	first = -0.5 * M_PI;
+	step = M_PI / static_cast<double>(n - 1);
+	if (convention != "sick") return;
+	// A SICK LMS scans at 1, 0.5 or 0.25 deg. A log of 180 or 360 beams
+	// over its 180 deg has them one step apart from -90 deg: with 180 / (n
+	// - 1) deg, every match on edmonton and fhw (180 beams) turned 0.5%
+	// more than the corrected poses and went 0.6-0.8 deg to the left of
+	// their direction of travel (freiburg-101, 360 beams: 0.3%, 0.3 deg);
+	// 181 and 361 beams did neither.
+	for (const double deg : {1.0, 0.5, 0.25})
+		if (std::abs(180.0 / static_cast<double>(n) - deg) < 1e-9)
+		{
+			step = mrpt::DEG2RAD(deg);
+			return;
+		}
+}
 
 std::vector<CarmenScan> CarmenLogReader::read(const std::string& path, const Options& options)
 {
@@ -94,10 +115,15 @@ std::vector<CarmenScan> CarmenLogReader::read(const std::string& path, const Opt
 		s.line = lineNo;
 		auto scan = std::make_shared<mrpt::obs::CObservation2DRangeScan>();
 		scan->sensorLabel = options.label;
-		scan->aperture = static_cast<float>(M_PI);
+		// MRPT's beams span the aperture symmetrically about the sensor's
+		// heading: a fan that starts at `first` is turned by its middle.
+		double step = 0, first = 0;
+		beamAngles(n, options.beamAngles, step, first);
+		const double aperture = step * static_cast<double>(n - 1);
+		scan->aperture = static_cast<float>(aperture);
 		scan->rightToLeft = true;
 		scan->maxRange = static_cast<float>(options.maxRange);
-		scan->sensorPose = mrpt::poses::CPose3D(laserOffset, 0, 0, 0, 0, 0);
+		scan->sensorPose = mrpt::poses::CPose3D(laserOffset, 0, 0, first + 0.5 * aperture, 0, 0);
 		scan->resizeScan(n);
 		for (size_t i = 0; i < n; i++)
 		{

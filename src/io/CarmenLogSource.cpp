@@ -7,8 +7,8 @@
 
 namespace featloc
 {
-CarmenLogSource::CarmenLogSource(const std::string& path)
-	: m_path(path), m_scans(CarmenLogReader::read(path, {}))
+CarmenLogSource::CarmenLogSource(const std::string& path, const CarmenLogReader::Options& options)
+	: m_path(path), m_scans(CarmenLogReader::read(path, options))
 {
 	// Some logs carry no usable time (orebro: all 0; belgioioso: 1.01893e+09
 	// on every line, 6 significant digits): number their scans instead, so

@@ -14,6 +14,7 @@ void InputOptions::loadFromConfigFile(
 		c, s, "invalid_range_policy", invalid_range_policy,
 		{"error", "invalidate"});
 	read(c, s, "max_scans", max_scans);
+	readChoice(c, s, "carmen_beam_angles", carmen_beam_angles, {"sick", "even"});
 }
 
 void InputOptions::saveToConfigFile(
@@ -28,5 +29,8 @@ void InputOptions::saveToConfigFile(
 		"error | invalidate: beams marked valid with NaN/Inf/negative range");
 	write(c, s, "max_scans", max_scans,
 		"stop after this many scans (0 = whole log)");
+	write(c, s, "carmen_beam_angles", carmen_beam_angles,
+		"CARMEN logs: sick (FLASER beams from -90 deg, 1 / 0.5 / 0.25 deg apart: 180 beams end at "
+		"+89 deg) | even (n beams over -90..+90 deg, MRPT's carmen2rawlog)");
 }
 }  // namespace featloc

@@ -52,7 +52,20 @@ class CarmenLogReader
 	{
 		double maxRange = 30.0;	 //!< [m]
 		std::string label = "FLASER";
+		/** Where a FLASER message's n beams point (the format does not say):
+		 * "sick" (default): the first at -90 deg (right), one step apart,
+		 * the step being whichever of 180/n and 180/(n-1) deg is a SICK
+		 * scanner's resolution (1, 0.5 or 0.25 deg): 180 and 360 beams are
+		 * 1 and 0.5 deg apart and end one step short of +90 deg (CARMEN's
+		 * and GMapping's reading, which the Radish logs' corrected poses
+		 * agree with); 181 and 361 beams span -90 to +90 deg; other counts
+		 * as "even". "even": n beams evenly over -90 to +90 deg (MRPT's
+		 * carmen2rawlog). */
+		std::string beamAngles = "sick";
 	};
+	/** The step [rad] between a FLASER message's n beams and the bearing
+	 * [rad] of its first (right-most) beam, as options.beamAngles says. */
+	static void beamAngles(size_t n, const std::string& convention, double& step, double& first);
 	static std::vector<CarmenScan> read(const std::string& path, const Options& options);
 };
 }  // namespace featloc

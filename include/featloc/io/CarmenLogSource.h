@@ -23,7 +23,8 @@ namespace featloc
 class CarmenLogSource : public EntrySource
 {
    public:
-	explicit CarmenLogSource(const std::string& path);
+	explicit CarmenLogSource(
+		const std::string& path, const CarmenLogReader::Options& options = {});
 
 	/** True for file names ending in .log or .log.gz (any case). */
 	static bool handles(const std::string& path);

@@ -6,6 +6,8 @@
 
 namespace featloc
 {
+struct InputOptions;
+
 /** Where the pipeline's entries come from: a rawlog file, a CARMEN log, or
  * (later) live MRPT drivers. Entries are rawlog entries (a CSensoryFrame, a
  * CActionCollection or one CObservation) in the order the source has them.
@@ -37,8 +39,9 @@ class EntrySource
 	 * source has none. */
 	virtual std::string imagesDirectory() const { return {}; }
 
-	/** The file source for `path`: a CARMEN log for .log / .log.gz names,
-	 * an MRPT rawlog otherwise. Validates it (see above). */
-	static Ptr openFile(const std::string& path);
+	/** The file source for `path`: a CARMEN log for .log / .log.gz names
+	 * (read as `input` says: carmen_beam_angles), an MRPT rawlog otherwise.
+	 * Validates it (see above). */
+	static Ptr openFile(const std::string& path, const InputOptions& input);
 };
 }  // namespace featloc

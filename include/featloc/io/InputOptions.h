@@ -22,6 +22,9 @@ struct InputOptions : public mrpt::config::CLoadableOptions
 	std::string invalid_range_policy = "error";
 	/** Stop after this many laser scans (0: the whole log). */
 	unsigned int max_scans = 0;
+	/** CARMEN logs: where a FLASER message's beams point, "sick" or "even"
+	 * (CarmenLogReader::Options::beamAngles). */
+	std::string carmen_beam_angles = "sick";
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& c,
