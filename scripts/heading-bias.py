@@ -19,7 +19,10 @@ Usage:
     prints per matcher, over the pairs it used (failures and errors above
     2 deg left out: a wrong minimum is not a bias), the mean signed heading
     error with its 95% interval, and the least-squares line error = a + b x
-    rotation (b: how much of each turn the matcher adds)."""
+    rotation (b: how much of each turn the matcher adds); and, over the used
+    pairs under 10 cm that moved at least 0.2 m, the mean error across the
+    reference's direction of travel (+: to the left) with its 95% interval,
+    and that as an angle of the mean step."""
 import math
 import sys
 
@@ -83,17 +86,22 @@ def name(d):
 
 def pairs(log, path):
     ref = read_carmen_reference(log)
-    turns = [relative(ref[k - 1], ref[k])[2] for k in range(1, len(ref))]
-    rows = {}
+    motions = [relative(ref[k - 1], ref[k]) for k in range(1, len(ref))]
+    turns = [m[2] for m in motions]
+    rows, lateral = {}, {}
     for line in open(path):
         if line.startswith("#"):
             continue
         f = line.rstrip("\n").split("\t")
         if f[3] == "failed":
             continue
-        k, ew = int(f[2]), float(f[6])
+        k, ex, ey, ew = int(f[2]), float(f[4]), float(f[5]), float(f[6])
         if abs(ew) < math.radians(2):
             rows.setdefault(f[1], []).append((turns[k], ew))
+        mx, my, _ = motions[k]
+        step = math.hypot(mx, my)
+        if math.hypot(ex, ey) < 0.1 and step >= 0.2:
+            lateral.setdefault(f[1], []).append(((-my * ex + mx * ey) / step, step))
     print("%s, pairs: the heading error of each matcher's used matches under 2 deg" % log.split("/")[-1])
     print("| matcher | pairs | mean [deg] (95% interval) | error = a + b x turn: a [deg] | b (95% interval) |")
     print("|---|---|---|---|---|")
@@ -103,6 +111,15 @@ def pairs(log, path):
         print("| %s | %d | %+.4f (%+.4f, %+.4f) | %+.4f | %+.4f (%+.4f, %+.4f) |" % (
             name, len(v), math.degrees(m), math.degrees(m - h), math.degrees(m + h),
             math.degrees(a), b, b - hb, b + hb))
+    print()
+    print("| matcher | pairs | error across the direction of travel, mean [mm] (95% interval) "
+          "| as an angle of the mean step [deg] |")
+    print("|---|---|---|---|")
+    for name, v in lateral.items():
+        m, h = mean_interval([e for e, _ in v])
+        mean_step = sum(s for _, s in v) / len(v)
+        print("| %s | %d | %+.1f (%+.1f, %+.1f) | %+.2f |" % (
+            name, len(v), 1000 * m, 1000 * (m - h), 1000 * (m + h), math.degrees(m / mean_step)))
 
 
 if __name__ == "__main__":
