@@ -58,6 +58,9 @@ done
 echo
 echo "### Whole runs on the held-out logs: ATE rmse [mm], even -> sick"
 echo
+echo "Each cell: even -> sick; then sick against even step by step (featloc-eval --paired-with: the mean"
+echo "RPE translation difference [mm] with its 95% interval; steps off only in one / only in the other)."
+echo
 echo "| log | PCM, matcher chain | PCM, EKF | MRPT's ICP, EKF |"
 echo "|---|---|---|---|"
 for f in $(held_out_radish_logs); do
@@ -66,13 +69,15 @@ for f in $(held_out_radish_logs); do
   for run in "matcher featloc::PcmFeatureMatcher" "ekf featloc::PcmFeatureMatcher" "ekf featloc::IcpMatcher"; do
     read -r est cls <<< "$run"
     cell=""
+    run="$name-$est-${cls#featloc::}"
     for way in even sick; do
-      bench_featloc_run "$name-$est-${cls#featloc::}-$way" "$f" "" --set "Pipeline:estimator=$est" \
+      bench_featloc_run "$run-$way" "$f" "" --set "Pipeline:estimator=$est" \
         --set "ScanMatcher:class=$cls" --set "Input:carmen_beam_angles=$way"
-      cell+="${cell:+ -> }$(jq -r '(.evaluation.ate_m.rmse // -0.001) * 1000 | round' \
-        "$OUT/$name-$est-${cls#featloc::}-$way/summary.json")"
+      cell+="${cell:+ -> }$(jq -r '(.evaluation.ate_m.rmse // -0.001) * 1000 | round' "$OUT/$run-$way/summary.json")"
     done
-    row+=" $cell |"
+    [ -f "$OUT/$name.reference.txt" ] ||
+      python3 "$ROOT/scripts/carmen-reference.py" "$f" "$OUT/$run-sick/poses_cov.txt" > "$OUT/$name.reference.txt"
+    row+=" $cell; $(runs_paired "$OUT/$name.reference.txt" "$OUT/$run-sick" "$OUT/$run-even") |"
   done
   echo "$row"
 done
