@@ -22,21 +22,28 @@ fi
 
 PCM=featloc::PcmFeatureMatcher
 OLD="ScanMatcher.PcmFeatureMatcher:fallback_above_sigma_xy=0"
+# The logs as the sixteenth session read them (its question): their beams
+# evenly over 180 deg. config.ini's reading since, and what it changes:
+# scripts/bench-carmen-beam-angles.sh.
+READ=(--set Input:carmen_beam_angles=even)
 machine_line
 # The held-out logs: orebro's ODOM messages miss 219 of its 237 scans and
 # its times do not increase (featloc-run says so), so its odometry and EKF
 # runs measure nothing.
 for f in $(held_out_radish_logs); do
   name="$(basename "$f" -corrected.log.gz)"
-  bench_featloc_run "$name-odometry" "$f" "" --set Pipeline:estimator=odometry
+  bench_featloc_run "$name-odometry" "$f" "" "${READ[@]}" --set Pipeline:estimator=odometry
   for est in matcher ekf; do
-    bench_featloc_run "$name-$est-pcm-old" "$f" "" --set "Pipeline:estimator=$est" \
+    bench_featloc_run "$name-$est-pcm-old" "$f" "" "${READ[@]}" --set "Pipeline:estimator=$est" \
       --set "ScanMatcher:class=$PCM" --set "$OLD"
-    bench_featloc_run "$name-$est-pcm" "$f" "" --set "Pipeline:estimator=$est" --set "ScanMatcher:class=$PCM"
+    bench_featloc_run "$name-$est-pcm" "$f" "" "${READ[@]}" --set "Pipeline:estimator=$est" \
+      --set "ScanMatcher:class=$PCM"
   done
-  bench_featloc_run "$name-ekf-icp" "$f" "" --set Pipeline:estimator=ekf --set ScanMatcher:class=featloc::IcpMatcher
-  bench_featloc_run "$name-ekf-idc" "$f" "" --set Pipeline:estimator=ekf --set ScanMatcher:class=featloc::IdcMatcher
-  "$BIN/featloc-bench" "$ROOT/config.ini" "$f" --perturb-xy 0.3 --perturb-yaw-deg 10 --seed 1 -q \
+  bench_featloc_run "$name-ekf-icp" "$f" "" "${READ[@]}" --set Pipeline:estimator=ekf \
+    --set ScanMatcher:class=featloc::IcpMatcher
+  bench_featloc_run "$name-ekf-idc" "$f" "" "${READ[@]}" --set Pipeline:estimator=ekf \
+    --set ScanMatcher:class=featloc::IdcMatcher
+  "$BIN/featloc-bench" "$ROOT/config.ini" "$f" "${READ[@]}" --perturb-xy 0.3 --perturb-yaw-deg 10 --seed 1 -q \
     -m "ICP (MRPT)=featloc::IcpMatcher,PCM=$PCM,IDC=featloc::IdcMatcher" --pairs "$OUT/$name-pairs.tsv" \
     > "$OUT/$name-pairs.txt"
   echo
