@@ -54,9 +54,7 @@ Sequence loadCarmen(const std::string& path, const InputOptions& input)
 {
 	Sequence seq;
 	mrpt::poses::CPose2D prevOdo;
-	CarmenLogReader::Options carmen;
-	carmen.beamAngles = input.carmen_beam_angles;
-	for (const auto& s : CarmenLogReader::read(path, carmen))
+	for (const auto& s : CarmenLogReader::read(path, CarmenLogReader::Options::from(input)))
 	{
 		seq.scans.push_back(s.scan);
 		seq.times.push_back(s.time);

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "featloc/core/InputError.h"
+#include "featloc/io/InputOptions.h"
 
 namespace featloc
 {
@@ -37,6 +38,13 @@ double number(const std::string& tok, const std::string& where)
 	return v;
 }
 }  // namespace
+
+CarmenLogReader::Options CarmenLogReader::Options::from(const InputOptions& input)
+{
+	Options o;
+	o.beamAngles = input.carmen_beam_angles;
+	return o;
+}
 
 void CarmenLogReader::beamAngles(
 	size_t n, const std::string& convention, double& step, double& first)

@@ -182,20 +182,19 @@ void PcmFeatureMatcher::saveOwnParams(
 void PcmFeatureMatcher::memberships(const mrpt::math::TPose2D& x, const double bounds[3])
 {
 	m_pairs.clear();
-	// The three rotations of the bounds box's corners and its centre, for
-	// every feature.
+	// The rotations of the bounds box's corners and of its centre (sw = 0),
+	// for every feature.
 	double cosW[3], sinW[3];
 	for (int sw = -1; sw <= 1; sw++)
 	{
 		cosW[sw + 1] = std::cos(x.phi + sw * bounds[2]);
 		sinW[sw + 1] = std::sin(x.phi + sw * bounds[2]);
 	}
-	const double cw0 = std::cos(x.phi), sw0 = std::sin(x.phi);
 	for (size_t i = 0; i < m_reference.size(); i++)
 	{
 		const ScanFeature& fi = m_reference[i];
 		double px = 0, py = 0;
-		PcmMotionUpdate::predict(fi, x, cw0, sw0, px, py);
+		PcmMotionUpdate::predict(fi, x, cosW[1], sinW[1], px, py);
 		// Eq. (24): the paper's one corner of the bounds box, or featloc's
 		// largest over all eight (the maximum need not be at that corner).
 		double dmax2 = 0;

@@ -81,21 +81,17 @@ double RangeLattice::step(const ScanPoints& scan)
 	const double df = 1.0 / (kDft * kBin);
 	const int lowBin = static_cast<int>(std::ceil(1.0 / (maxStep * df)));
 	const int highBin = std::min(kDft / 2 - 1, static_cast<int>(1.0 / (kMinStep * df)));
-	// sqrt(re^2 + im^2) rather than glibc's slower hypot: the values are
-	// far from overflow.
-	auto R = [&](int k) {
+	// |.|^2 at bin k, and R from it by sqrt rather than glibc's slower
+	// hypot (the values are far from overflow).
+	auto magnitude2 = [&](int k) {
 		const double re = m_spectrum[2 * static_cast<size_t>(k) - 1];
 		const double im = m_spectrum[2 * static_cast<size_t>(k)];
-		return std::sqrt(re * re + im * im) / static_cast<double>(n);
+		return re * re + im * im;
 	};
+	auto R = [&](int k) { return std::sqrt(magnitude2(k)) / static_cast<double>(n); };
 	// The largest |.|^2, then one root: the same value as the largest R.
 	double highest2 = 0;
-	for (int k = lowBin; k <= highBin; k++)
-	{
-		const double re = m_spectrum[2 * static_cast<size_t>(k) - 1];
-		const double im = m_spectrum[2 * static_cast<size_t>(k)];
-		highest2 = std::max(highest2, re * re + im * im);
-	}
+	for (int k = lowBin; k <= highBin; k++) highest2 = std::max(highest2, magnitude2(k));
 	const double highest = std::sqrt(highest2) / static_cast<double>(n);
 	if (highest < kMinResultant) return 0;
 	int peak = lowBin;

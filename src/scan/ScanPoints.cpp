@@ -11,6 +11,12 @@ namespace featloc
 {
 namespace
 {
+/** A valid beam's range is a return: finite, positive, below maxRange. */
+bool isReturnRange(double r, const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	return std::isfinite(r) && r > 0 && r < scan.maxRange;
+}
+
 /** The cos and sin of a scan's beam bearings, kept for the next scan with
  * the same bearings (every scan of one sensor): a sin and a cos per beam
  * were a tenth of a 361-beam PCM match. MRPT's
@@ -65,7 +71,7 @@ ScanPoints ScanPoints::fromScan(const mrpt::obs::CObservation2DRangeScan& scan)
 		// hasReturn(), reading the range once.
 		if (!scan.getScanRangeValidity(i)) continue;
 		const double r = scan.getScanRange(i);
-		if (!(std::isfinite(r) && r > 0 && r < scan.maxRange)) continue;
+		if (!isReturnRange(r, scan)) continue;
 		ScanPoint p;
 		p.range = r;
 		p.bearing = directions.bearings[i];
@@ -82,9 +88,7 @@ ScanPoints ScanPoints::fromScan(const mrpt::obs::CObservation2DRangeScan& scan)
 
 bool ScanPoints::hasReturn(const mrpt::obs::CObservation2DRangeScan& scan, size_t i)
 {
-	if (!scan.getScanRangeValidity(i)) return false;
-	const double r = scan.getScanRange(i);
-	return std::isfinite(r) && r > 0 && r < scan.maxRange;
+	return scan.getScanRangeValidity(i) && isReturnRange(scan.getScanRange(i), scan);
 }
 
 bool ScanPoints::samePointsAs(const ScanPoints& o) const

@@ -8,6 +8,8 @@
 
 namespace featloc
 {
+struct InputOptions;
+
 /** One FLASER message of a CARMEN log. */
 struct CarmenScan
 {
@@ -62,6 +64,9 @@ class CarmenLogReader
 		 * as "even". "even": n beams evenly over -90 to +90 deg (MRPT's
 		 * carmen2rawlog). */
 		std::string beamAngles = "sick";
+
+		/** The options [Input] gives (carmen_beam_angles). */
+		static Options from(const InputOptions& input);
 	};
 	/** The step [rad] between a FLASER message's n beams and the bearing
 	 * [rad] of its first (right-most) beam, as options.beamAngles says. */
