@@ -206,6 +206,71 @@ TEST(PointToLineCovariance, RangeDerivativesEqualFiniteDifferences)
 	EXPECT_GT(checked, 10);
 }
 
+// Ranges whose errors are one and the same (a range lattice's run kept on
+// its level) are one measurement, not as many as they are points: a wall
+// seen head on that fixes x alone leaves x as uncertain as the group's
+// error, however many beams hit it.
+TEST(PointToLineCovariance, AGroupsSharedErrorCountsOnceNotOncePerPoint)
+{
+	// A wall ahead (x = 2 m) and two side walls (y = +-1.5 m), 1 deg apart;
+	// the current scan is the reference, matched at no motion.
+	ScanPoints ref;
+	for (int i = -80; i <= 80; i++)
+	{
+		const double b = mrpt::DEG2RAD(static_cast<double>(i));
+		const double ahead = 2.0 / std::cos(b), side = 1.5 / std::abs(std::sin(b));
+		ScanPoint p;
+		p.range = std::abs(i) < 2 ? ahead : std::min(ahead, side);
+		p.bearing = b;
+		p.x = p.range * std::cos(b);
+		p.y = p.range * std::sin(b);
+		p.beam = static_cast<uint32_t>(i + 80);
+		ref.points.push_back(p);
+	}
+	ref.angularStep = mrpt::DEG2RAD(1.0);
+	const ReferencePolyline poly = polylineOf(ref);
+	ASSERT_EQ(poly.size(), ref.size());
+	std::vector<PointToLinePair> pairs;	 // each point with an edge it is on
+	for (uint32_t i = 0; i < ref.size(); i++)
+		if (poly.joined(i))
+			pairs.push_back({i, i});
+		else if (i > 0 && poly.joined(i - 1))
+			pairs.push_back({i, i - 1});
+	ASSERT_GT(pairs.size(), 100u);
+	const mrpt::math::TPose2D zero(0, 0, 0);
+	const double own = 0.002, shared = 0.05;
+	auto covariance = [&](const std::vector<ScanPoint>& current) {
+		Eigen::Matrix3d cov, info;
+		double sigma = 0;
+		EXPECT_TRUE(PointToLineCovariance::compute(current, poly, pairs, zero, own, 0.0, cov, sigma, info));
+		return cov;
+	};
+	const Eigen::Matrix3d independent = covariance(ref.points);
+	// The current scan's wall ahead: one error for all its points.
+	std::vector<ScanPoint> grouped = ref.points;
+	size_t inGroup = 0;
+	for (auto& p : grouped)
+		if (std::abs(p.x - 2.0) < 1e-9)
+		{
+			p.sharedErrorGroup = 1;
+			p.sharedRangeSigma = static_cast<float>(shared);
+			inGroup++;
+		}
+	ASSERT_GT(inGroup, 40u);
+	const Eigen::Matrix3d C = covariance(grouped);
+	// Moving every point of the wall ahead by e along its beam moves the
+	// wall by e cos(bearing) (within 37 deg: cos >= 0.8): x by about e.
+	const double added = C(0, 0) - independent(0, 0);
+	EXPECT_GT(added, 0.8 * 0.8 * shared * shared);
+	EXPECT_LT(added, 1.05 * shared * shared);
+	// As independent errors of that size, the wall's points would add
+	// about shared^2 / inGroup.
+	EXPECT_GT(added, 20 * shared * shared / static_cast<double>(inGroup));
+	// The side walls fix y; the wall ahead's shared error barely moves it
+	// (through the corners' local lines: 1 mm of its 5 cm).
+	EXPECT_LT(C(1, 1) - independent(1, 1), 0.01 * shared * shared);
+}
+
 TEST(IdcMatcher, NoiseFreePairRecoveredFromAPerturbedGuess)
 {
 	const SyntheticRoom room = SyntheticRoom::office();

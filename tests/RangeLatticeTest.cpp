@@ -158,6 +158,7 @@ TEST(RangeLattice, DequantizedReadingsLieNearerTheirSurfaces)
 		}
 	}
 	const double rmsBefore = std::sqrt(before / n), rmsAfter = std::sqrt(after / n);
+	// (ReadingsKeptOnTheirLevelShareOneError checks the groups.)
 	std::printf("range error rms: %.1f mm on the lattice, %.1f mm restored; %zu of %zu points moved\n",
 		1e3 * rmsBefore, 1e3 * rmsAfter, moved, n);
 	EXPECT_GT(rmsBefore, 0.04);	 // 0.16 / sqrt(12) = 0.046
@@ -195,4 +196,50 @@ TEST(RangeLattice, ACopyFindsWhatTheOriginalFinds)
 		EXPECT_EQ(assigned.step(scan), q);
 		EXPECT_EQ(assigned.offset(), fresh.offset());
 	}
+}
+
+// A run of readings that no anchor places keeps them on their level: one
+// rounding error for the whole run (on a wall seen head on, exactly one).
+// They share an error group with the cell's sigma, q / sqrt(12); points
+// put back on a chord have none; different runs have different groups.
+TEST(RangeLattice, ReadingsKeptOnTheirLevelShareOneError)
+{
+	const double q = 0.16;
+	mrpt::random::getRandomGenerator().randomize(3);
+	auto onLattice = officeScans([&](double r) { return noisy(q * std::round(r / q), 0.01); });
+	RangeLattice lattice;
+	size_t kept = 0, moved = 0, groups = 0;
+	for (const auto& raw : onLattice)
+	{
+		ScanPoints restored = raw;
+		const double found = lattice.step(raw);
+		ASSERT_NEAR(found, q, 1e-3);
+		lattice.dequantize(restored, found, lattice.offset());
+		for (size_t i = 0; i < restored.size(); i++)
+		{
+			const ScanPoint& p = restored[i];
+			if (p.range == raw[i].range)
+			{
+				kept++;
+				EXPECT_NE(p.sharedErrorGroup, 0u) << i;
+				EXPECT_NEAR(p.sharedRangeSigma, found / std::sqrt(12.0), 1e-6);
+			}
+			else
+			{
+				moved++;
+				EXPECT_EQ(p.sharedErrorGroup, 0u) << i;
+			}
+			if (i == 0 || p.sharedErrorGroup == 0) continue;
+			const ScanPoint& before = restored[i - 1];
+			const bool sameRun = before.beam + 1 == p.beam &&
+				std::lround(before.range / q) == std::lround(raw[i].range / q) &&
+				std::lround(raw[i - 1].range / q) == std::lround(raw[i].range / q);
+			if (before.sharedErrorGroup != 0 && sameRun)
+				EXPECT_EQ(before.sharedErrorGroup, p.sharedErrorGroup) << i;
+			if (before.sharedErrorGroup != p.sharedErrorGroup) groups++;
+		}
+	}
+	EXPECT_GT(kept, 20u);
+	EXPECT_GT(moved, 10 * kept / 10);
+	EXPECT_GT(groups, 5u);
 }

@@ -285,7 +285,7 @@ void CfIdcMatcher::matchPoints(
 	m_curvature.params = params.curvature;
 	m_correlator.params = params.correlation;
 	m_idc.params = params.idc;
-	m_idc.params.min_range_sigma = std::max(m_idc.params.min_range_sigma, rangeLatticeCellSigma());
+	m_idc.rangeLatticeCellSigma = rangeLatticeCellSigma();
 	result.success = false;
 	result.iterations = 0;
 	result.estimate = initialGuess;

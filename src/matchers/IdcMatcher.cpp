@@ -53,7 +53,7 @@ void IdcMatcher::matchPoints(
 {
 	buildReference(reference);
 	m_idc.params = params.idc;
-	m_idc.params.min_range_sigma = std::max(m_idc.params.min_range_sigma, rangeLatticeCellSigma());
+	m_idc.rangeLatticeCellSigma = rangeLatticeCellSigma();
 	IterativeDualCorrespondence::Result r;
 	m_idc.run(m_polyline, current.points, initialGuess, r);
 	result.success = r.success;

@@ -403,7 +403,8 @@ void IterativeDualCorrespondence::run(
 		"the paired points", "all paired surfaces parallel to it, as in a corridor");
 	Eigen::Matrix3d H;
 	if (!PointToLineCovariance::compute(
-			current, reference, m_lines, x, params.min_range_sigma, r.cov, r.rangeSigma, H))
+			current, reference, m_lines, x, params.min_range_sigma, rangeLatticeCellSigma, r.cov,
+			r.rangeSigma, H))
 	{
 		r.failureReason = m_lines.size() < 3 ? "" : check.singular(H);
 		if (r.failureReason.empty())

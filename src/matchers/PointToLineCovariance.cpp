@@ -3,6 +3,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <vector>
 
 namespace featloc
 {
@@ -59,7 +61,8 @@ void PointToLineCovariance::rangeDerivatives(
 bool PointToLineCovariance::compute(
 	const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
 	const std::vector<PointToLinePair>& pairs, const mrpt::math::TPose2D& x,
-	double minSigma, Eigen::Matrix3d& cov, double& sigma, Eigen::Matrix3d& information)
+	double minSigma, double latticeCellSigma, Eigen::Matrix3d& cov, double& sigma,
+	Eigen::Matrix3d& information)
 {
 	const size_t nc = current.size();
 	// g_k for every range z_k: current points first, then reference points.
@@ -118,12 +121,50 @@ bool PointToLineCovariance::compute(
 		inverse[0] = 0;
 	}
 	const double dof = std::max(1.0, sensitivity - 3);
-	sigma = std::max(minSigma, std::sqrt(J / dof));
-	Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
-	for (const auto& gk : g) S += gk * gk.transpose();
+	const double residualSigma = std::sqrt(J / dof);
+	sigma = std::max({minSigma, latticeCellSigma, residualSigma});
+	// A range in a shared-error group has its own noise (the residuals')
+	// plus the group's one error, which moves the group's ranges together:
+	// S = sum_k g_k g_k^T s_k^2 + sum_G (sum_{k in G} g_k)(...)^T s_G^2.
+	const double ownSigma = std::max(minSigma, residualSigma);
+	Eigen::Matrix3d S = Eigen::Matrix3d::Zero(), Sown = Eigen::Matrix3d::Zero();
+	// (group key, sum of its g_k, s_G^2), kept per thread between calls.
+	thread_local std::vector<std::tuple<size_t, Eigen::Vector3d, double>> groupSums;
+	groupSums.clear();
+	auto addShared = [&](const ScanPoint& p, const Eigen::Vector3d& gk, size_t side) {
+		if (p.sharedErrorGroup == 0) return false;
+		auto& [key, sum, s2] = groupSums.emplace_back();
+		key = 2 * static_cast<size_t>(p.sharedErrorGroup) + side;
+		sum = gk;
+		s2 = static_cast<double>(p.sharedRangeSigma) * p.sharedRangeSigma;
+		return true;
+	};
+	for (size_t k = 0; k < g.size(); k++)
+	{
+		const ScanPoint& p = k < nc ? current[k] : reference.point(static_cast<uint32_t>(k - nc));
+		if (addShared(p, g[k], k < nc ? 0 : 1))
+			Sown += g[k] * g[k].transpose();
+		else
+			S += g[k] * g[k].transpose();
+	}
+	S = S * (sigma * sigma) + Sown * (ownSigma * ownSigma);
+	if (!groupSums.empty())
+	{
+		std::sort(groupSums.begin(), groupSums.end(),
+			[](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
+		for (size_t i = 0; i < groupSums.size();)
+		{
+			Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+			size_t j = i;
+			for (; j < groupSums.size() && std::get<0>(groupSums[j]) == std::get<0>(groupSums[i]); j++)
+				sum += std::get<1>(groupSums[j]);
+			S += sum * sum.transpose() * std::get<2>(groupSums[i]);
+			i = j;
+		}
+	}
 	const Eigen::Matrix3d Hinv =
 		eig.eigenvectors() * inverse.asDiagonal() * eig.eigenvectors().transpose();
-	cov = Hinv * S * Hinv * (sigma * sigma);
+	cov = Hinv * S * Hinv;
 	if (unconstrained) cov += kUnconstrainedVariance * weakest * weakest.transpose();
 	cov = 0.5 * (cov + cov.transpose()).eval();
 	return true;

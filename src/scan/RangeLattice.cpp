@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <complex>
 
 namespace featloc
@@ -165,6 +166,18 @@ size_t RangeLattice::dequantize(ScanPoints& scan, double q, double offset)
 		m_runs.emplace_back(s, e);
 		s = e + 1;
 	}
+	// Readings kept on their level (no anchor to place them by): the run
+	// is off its surface by one rounding error, uniform over the level's
+	// q (on a surface seen head on, exactly one for all its beams).
+	const auto cellSigma = static_cast<float>(q / std::sqrt(12.0));
+	auto keepOnLevel = [&](size_t first, size_t last, size_t runStart = SIZE_MAX) {
+		const size_t group = 1 + p[runStart == SIZE_MAX ? first : runStart].beam;
+		for (size_t i = first; i <= last; i++)
+		{
+			p[i].sharedErrorGroup = static_cast<uint32_t>(group);
+			p[i].sharedRangeSigma = cellSigma;
+		}
+	};
 	size_t moved = 0;
 	const size_t runs = m_runs.size();
 	for (size_t j = 0; j < runs; j++)
@@ -182,7 +195,10 @@ size_t RangeLattice::dequantize(ScanPoints& scan, double q, double offset)
 		else if (right && j + 2 < runs && isAnchor(m_runs[j + 1].second))
 			a = e, b = m_runs[j + 1].second;
 		else
+		{
+			keepOnLevel(s, e);
 			continue;
+		}
 		double ax, ay, bx, by;
 		anchor(a, ax, ay);
 		anchor(b, bx, by);
@@ -198,7 +214,11 @@ size_t RangeLattice::dequantize(ScanPoints& scan, double q, double offset)
 			const double r = (ax * dy - ay * dx) / den;
 			// On its own level's reach: a chord of a strongly curved
 			// surface, or an anchor that was noise, may cross far off.
-			if (!(std::abs(r - level) <= 0.5 * q)) continue;
+			if (!(std::abs(r - level) <= 0.5 * q))
+			{
+				keepOnLevel(i, i, s);
+				continue;
+			}
 			p[i].range = r;
 			p[i].x = r * ux;
 			p[i].y = r * uy;

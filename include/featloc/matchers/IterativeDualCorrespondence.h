@@ -170,6 +170,12 @@ class IterativeDualCorrespondence
 		const mrpt::math::TPose2D& x, double maxDistance);
 
 	Parameters params;
+	/** [m] The range lattice's cell q / sqrt(12) of the scans matched (0:
+	 * none; set by the matcher per match): it floors the range noise of
+	 * the readings put back on their surfaces, whose errors are shared
+	 * along each run; readings kept on their level carry theirs as a
+	 * shared error group (ScanPoint::sharedErrorGroup) instead. */
+	double rangeLatticeCellSigma = 0;
 
    private:
 	/** One Gauss-Newton step on the point-to-line error of the

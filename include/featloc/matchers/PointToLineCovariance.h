@@ -34,13 +34,23 @@ struct PointToLinePair
  *
  * with independent range errors of standard deviation s. The sum runs over
  * the ranges, not the pairs: a reference point in several local lines
- * contributes once, with the sum of its effects. All derivatives are
+ * contributes once, with the sum of its effects. Ranges that share one
+ * error (ScanPoint::sharedErrorGroup: a range lattice's run of readings
+ * kept on their level) add it once per group,
+ * (sum_{k in G} g_k)(sum_{k in G} g_k)^T s_G^2, on top of their own noise:
+ * a wall seen head on whose beams all read one level fixes the motion
+ * along its normal to the level's rounding error, not to that over the
+ * root of its beam count. All derivatives are
  * analytic: a line's centroid moves by 1/m of a point's displacement, its
  * direction (total least squares) by
  * d alpha/d p_j = (cos 2a (d_y, d_x) - sin 2a (d_x, -d_y)) / gap,
  * d = p_j - c, gap the scatter matrix's eigenvalue difference. s is
  * estimated from the residuals (E[J] = s^2 sum_i |de_i/dz|^2), floored at
- * minSigma, so modelling error on real surfaces widens the covariance. */
+ * minSigma, so modelling error on real surfaces widens the covariance; on a
+ * range lattice (latticeCellSigma > 0: its cell, q / sqrt(12)) the ranges
+ * outside any group, the readings put back on their surfaces, take the
+ * cell as their least noise (their errors are shared along each chord,
+ * which a per-point sigma can only bound). */
 class PointToLineCovariance
 {
    public:
@@ -80,6 +90,7 @@ class PointToLineCovariance
 	static bool compute(
 		const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
 		const std::vector<PointToLinePair>& pairs, const mrpt::math::TPose2D& x,
-		double minSigma, Eigen::Matrix3d& cov, double& sigma, Eigen::Matrix3d& information);
+		double minSigma, double latticeCellSigma, Eigen::Matrix3d& cov, double& sigma,
+		Eigen::Matrix3d& information);
 };
 }  // namespace featloc

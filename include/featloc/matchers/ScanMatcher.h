@@ -145,7 +145,8 @@ class ScanMatcher : public mrpt::rtti::CObject
 	 * the lattice's cell, rangeLatticeStep() / sqrt(12) (0 without one).
 	 * Readings put back on their surfaces lie nearer than that, but their
 	 * errors are shared along each run, which a per-point sigma or a
-	 * scan's scatter cannot show. */
+	 * scan's scatter cannot show. (Readings kept on their level carry
+	 * their shared error themselves: ScanPoint::sharedErrorGroup.) */
 	double rangeLatticeCellSigma() const;
 	/** Whether matchPoints() reads rangeLatticeStep(). */
 	virtual bool usesRangeLatticeStep() const { return false; }

@@ -66,8 +66,11 @@ class RangeLattice
 	 * to q/2 off it. A run with an anchor on one side only (a surface's
 	 * end) goes on the line through that anchor and the next one beyond
 	 * it; a run without one keeps its readings, and so does a point the
-	 * line would put more than q/2 off its level. Returns the number of
-	 * points moved. */
+	 * line would put more than q/2 off its level. Readings kept on their
+	 * level share one rounding error per run: they get the run's
+	 * ScanPoint::sharedErrorGroup with sharedRangeSigma q / sqrt(12), so
+	 * that a covariance counts it once (PointToLineCovariance). Returns
+	 * the number of points moved. */
 	size_t dequantize(ScanPoints& scan, double q, double offset = 0);
 
    private:

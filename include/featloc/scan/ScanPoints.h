@@ -19,6 +19,13 @@ struct ScanPoint
 	double range = 0;  //!< distance to the sensor origin [m]
 	double bearing = 0;	 //!< angle from the sensor's X axis [rad], in (-pi, pi]
 	uint32_t beam = 0;	//!< index of the beam in the original scan
+	/** Points whose range errors are one and the same share a group
+	 * (0: none, the point's error is its own): a range lattice's run of
+	 * readings kept on their level (RangeLattice::dequantize) is off its
+	 * surface by one rounding error, whatever the number of beams. */
+	uint32_t sharedErrorGroup = 0;
+	/** [m] the standard deviation of that shared error. */
+	float sharedRangeSigma = 0;
 };
 
 /** The valid points of a 2-D range scan, in the sensor frame, ordered by
