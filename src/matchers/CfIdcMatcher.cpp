@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "featloc/config/ConfigValues.h"
+#include "featloc/matchers/SegmentResidualTest.h"
 
 namespace featloc
 {
@@ -33,7 +34,9 @@ void CfIdcMatcher::Parameters::loadFromConfigFile(
 	read(c, s, "pairing_fallback", pairing_fallback);
 	read(c, s, "segment_gate", segment_gate);
 	read(c, s, "segment_gate_from_lattice", segment_gate_from_lattice);
+	read(c, s, "segment_residual_chi2", segment_residual_chi2);
 	idc.loadFromConfigFile(c, s);
+	require(segment_residual_chi2 >= 0, c, s, "segment_residual_chi2", ">= 0 (0 disables it)");
 	require(min_segment_points >= 2, c, s, "min_segment_points", ">= 2");
 	require(segment_gate >= 0, c, s, "segment_gate", ">= 0 (0 disables it)");
 }
@@ -57,6 +60,8 @@ void CfIdcMatcher::Parameters::saveToConfigFile(
 		"[m] keep the current segments within this (median) of the reference once IDC has converged, twice this at its switch to point-to-line (0: the paper's pairing decides)");
 	write(c, s, "segment_gate_from_lattice", segment_gate_from_lattice,
 		"the segment gate is at least the step of a range lattice the current scan's ranges sit on (MRPT's simulated log: 0.16 m), which can put a static segment that far off the reference (false: segment_gate alone)");
+	write(c, s, "segment_residual_chi2", segment_residual_chi2,
+		"with segment_gate: at the gate's final test, a kept segment whose residuals at the estimate (an offset and a slope along it) exceed this chi-square under the range noise is dropped as moved, most discordant first, up to a third of the kept points (a door that turned, a cart pushed a few cm; 0: off)");
 	idc.saveToConfigFile(c, s);
 }
 
@@ -216,9 +221,53 @@ void CfIdcMatcher::collectKeptCurrent(const ScanPoints& current)
 				current.points.begin() + s.segment.last + 1);
 }
 
+void CfIdcMatcher::dropMovedByResiduals(const ScanPoints& current, const mrpt::math::TPose2D& x)
+{
+	// The residuals' noise: the reference's (its local lines were fitted
+	// to it), not below IDC's floor or a range lattice's cell.
+	const double sigma =
+		std::max({m_polyline.rangeNoise(), params.idc.min_range_sigma, rangeLatticeCellSigma()});
+	struct Moved
+	{
+		size_t segment;
+		SegmentResidualTest::Result test;
+	};
+	std::vector<Moved> moved;
+	size_t kept = 0;
+	for (size_t k = 0; k < m_currentReport.size(); k++)
+	{
+		const SegmentReport& s = m_currentReport[k];
+		if (!s.kept) continue;
+		kept += s.segment.size();
+		// What IDC pairs at the end: points within its least pairing
+		// distance of a reference line.
+		const auto test = SegmentResidualTest::run(
+			m_polyline, current, s.segment, x, sigma, params.idc.min_pair_distance);
+		if (test.points >= params.min_segment_points && test.chi2 > params.segment_residual_chi2)
+			moved.push_back({k, test});
+	}
+	std::sort(moved.begin(), moved.end(),
+		[](const Moved& a, const Moved& b) { return a.test.chi2 > b.test.chi2; });
+	size_t dropped = 0;
+	for (const Moved& m : moved)
+	{
+		SegmentReport& s = m_currentReport[m.segment];
+		if (static_cast<double>(dropped + s.segment.size()) > kMaxMovedShare * static_cast<double>(kept))
+			continue;
+		dropped += s.segment.size();
+		s.kept = false;
+		char buf[220];
+		std::snprintf(buf, sizeof(buf),
+			"moved: its residuals at the estimate, %.3f m %+.3f m per m along it, give a "
+			"chi-square of %.0f > %.0f (segment_residual_chi2)",
+			m.test.offset, m.test.slope, m.test.chi2, params.segment_residual_chi2);
+		s.reason = buf;
+	}
+}
+
 bool CfIdcMatcher::reselect(
 	const ScanPoints& reference, const ScanPoints& current, const mrpt::math::TPose2D& x,
-	double gate)
+	double gate, bool testResiduals)
 {
 	// Kept as they are if the estimate is too poor for the test to leave
 	// enough points (IDC then fails or succeeds on the pairing's choice).
@@ -261,6 +310,7 @@ bool CfIdcMatcher::reselect(
 		s.kept = false;
 		s.reason = buf;
 	}
+	if (testResiduals && params.segment_residual_chi2 > 0) dropMovedByResiduals(current, x);
 	collectKeptCurrent(current);
 	if (m_kept.size() < 3 * params.idc.min_pairs)
 	{
@@ -373,10 +423,10 @@ void CfIdcMatcher::matchPoints(
 		// the few points that fix a weak direction are not judged by an
 		// estimate that is wrong along it; the segment gate proper at the end.
 		reselectAtSwitch = [&reference, &current, gate, this](const mrpt::math::TPose2D& x) {
-			reselect(reference, current, x, 2 * gate);
+			reselect(reference, current, x, 2 * gate, false);
 		};
 		reselectAtEnd = [&reference, &current, gate, this](const mrpt::math::TPose2D& x) {
-			return reselect(reference, current, x, gate);
+			return reselect(reference, current, x, gate, true);
 		};
 	}
 	IterativeDualCorrespondence::Result r;

@@ -49,7 +49,15 @@ namespace featloc
  *   is made again with segment_gate itself (the iterations go on if that
  *   drops anything). The looser first test leaves the few points that fix
  *   a weak direction (a door jamb of three points along a corridor) to be
- *   judged by an estimate that is right along it.
+ *   judged by an estimate that is right along it;
+ * - segment_residual_chi2 (with the segment gate, in its final test): a
+ *   door that turned a few degrees, a cart pushed a few centimetres, lie
+ *   within the gate and keep their shape; their points' residuals at the
+ *   estimate do not (SegmentResidualTest: an offset and a slope along the
+ *   segment, chi-square of tens of sigmas). The segments above the
+ *   threshold are dropped too, most discordant first, as long as what is
+ *   dropped stays under a third of the kept points (the static majority,
+ *   which the estimate follows, is not judged by the minority).
  * If the curvature pairing keeps less than a third of the points of the
  * segments large enough (or fewer than 3 min_pairs), IDC starts from all of
  * them (pairing_fallback; reported as the reason and in
@@ -101,6 +109,10 @@ class CfIdcMatcher : public ScanMatcher
 		 * that far off the reference at the true motion (false: the fixed
 		 * segment_gate alone, an ablation). */
 		bool segment_gate_from_lattice = true;
+		/** Chi-square (2 dof) of a kept segment's residual offset and slope
+		 * at the estimate above which the final segment gate drops it as
+		 * moved (SegmentResidualTest); 0: off. */
+		double segment_residual_chi2 = 200;
 		IterativeDualCorrespondence::Parameters idc;
 
 		void loadFromConfigFile(
@@ -160,11 +172,17 @@ class CfIdcMatcher : public ScanMatcher
 	/** CF-SMA2's verdicts in the reports. */
 	void pairSegments();
 	/** segment_gate, at the estimate x: the reference becomes all its
-	 * segments, the current scan those lying within `gate` of it (median).
+	 * segments, the current scan those lying within `gate` of it (median),
+	 * and, with testResiduals, whose residuals do not say they moved.
 	 * True if that changed the sets. */
 	bool reselect(
 		const ScanPoints& reference, const ScanPoints& current, const mrpt::math::TPose2D& x,
-		double gate);
+		double gate, bool testResiduals);
+	/** segment_residual_chi2: drops the kept current segments whose
+	 * residuals at x say they moved (at most kMaxMovedShare of the kept
+	 * points, most discordant first). */
+	void dropMovedByResiduals(const ScanPoints& current, const mrpt::math::TPose2D& x);
+	static constexpr double kMaxMovedShare = 1.0 / 3.0;
 	/** The reference polyline of the reference segments marked kept. */
 	void buildReference(const ScanPoints& reference);
 	/** The current points of the segments marked kept. */
