@@ -169,6 +169,8 @@ TEST(CfIdcMatcher, ADoorThatTurnedIsDroppedByItsResiduals)
 		for (const auto& s : withTest.lastCurrentSegments())
 			dropped += s.reason.rfind("moved: its residuals", 0) == 0;
 		EXPECT_GE(dropped, 1u) << start;
+		EXPECT_EQ(r1.segmentsDroppedByResiduals, dropped) << start;	// counted for summary.json
+		EXPECT_EQ(r0.segmentsDroppedByResiduals, 0u) << start;
 		for (const auto& s : without.lastCurrentSegments())
 			EXPECT_NE(s.reason.rfind("moved: its residuals", 0), 0u) << s.reason;
 	}

@@ -628,6 +628,8 @@ TEST(FeatlocRun, FailedMatchesAreCountedByKindInTheSummary)
 	EXPECT_EQ(byKind, sp["counts"]["match_failures"].get<size_t>());
 	EXPECT_EQ(sp["counts"]["ambiguous_matches_used"], 0);  // the coarse search is off by default
 	EXPECT_EQ(sp["counts"]["matcher_fallbacks"], 0);  // ICP has none
+	EXPECT_EQ(sp["counts"]["matches_with_segments_dropped_by_residuals"], 0);	 // CF-IDC's only
+	EXPECT_EQ(sp["counts"]["segments_dropped_by_residuals"], 0);
 }
 
 // On the bundled log CF-IDC's guess gate rejects good matches where the

@@ -378,6 +378,7 @@ nlohmann::json toJson(const ScanPairBenchmark::Result& r)
 		{"flagged", r.flagged()}, {"silent_gross_errors", r.silentGross},
 		{"gross_used", r.grossUsed},
 		{"matcher_fallbacks", r.matcherFallbacks},
+		{"pairs_with_segments_dropped_by_residuals", r.segmentsDroppedByResiduals},
 		{"fallback_matcher_matches", r.fallbackMatches},
 		{"fallback_matcher_successes", r.fallbackSuccesses},
 		{"coarse_search_skipped", r.searchSkipped},
@@ -620,6 +621,11 @@ int BenchApp::main(int argc, char** argv)
 						"iterations from the guess put coarse_confirm_share of the points on the "
 						"reference\n",
 				r.matcher.c_str(), r.searchSkipped, r.pairs);
+	for (const auto& r : results)
+		if (r.segmentsDroppedByResiduals > 0)
+			std::printf("\n%s: %zu of %zu pairs dropped segments of the current scan whose residuals "
+						"at the estimate said they moved (segment_residual_chi2)\n",
+				r.matcher.c_str(), r.segmentsDroppedByResiduals, r.pairs);
 	for (const auto& r : results)
 		if (r.guessKeptAlongFreeDirection > 0)
 			std::printf("\n%s: %zu of %zu pairs kept the guess along the one direction their points "

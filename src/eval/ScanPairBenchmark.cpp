@@ -104,6 +104,7 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			a.time.push_back(r.timeSeconds);
 			a.iterations += r.iterations;
 			if (!r.matcherFallback.empty()) res[m].matcherFallbacks++;
+			if (r.segmentsDroppedByResiduals > 0) res[m].segmentsDroppedByResiduals++;
 			if (r.confirmedShare > 0) res[m].searchSkipped++;
 			if (r.guessKeptAlongFreeDirection) res[m].guessKeptAlongFreeDirection++;
 			if (!r.primaryFailure.empty())

@@ -258,9 +258,9 @@ void CfIdcMatcher::dropMovedByResiduals(const ScanPoints& current, const mrpt::m
 		s.kept = false;
 		char buf[220];
 		std::snprintf(buf, sizeof(buf),
-			"moved: its residuals at the estimate, %.3f m %+.3f m per m along it, give a "
-			"chi-square of %.0f > %.0f (segment_residual_chi2)",
-			m.test.offset, m.test.slope, m.test.chi2, params.segment_residual_chi2);
+			"%s at the estimate, %.3f m %+.3f m per m along it, give a chi-square of %.0f > %.0f "
+			"(segment_residual_chi2)",
+			kMovedByResiduals, m.test.offset, m.test.slope, m.test.chi2, params.segment_residual_chi2);
 		s.reason = buf;
 	}
 }
@@ -434,6 +434,8 @@ void CfIdcMatcher::matchPoints(
 
 	result.currentPoints = m_kept.size();
 	result.referencePoints = m_polyline.size();
+	for (const auto& s : m_currentReport)
+		result.segmentsDroppedByResiduals += !s.kept && s.reason.rfind(kMovedByResiduals, 0) == 0;
 	result.success = r.success;
 	result.failureReason = r.failureReason;
 	result.iterations = r.iterations;

@@ -41,6 +41,8 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"ambiguous_matches_used", s.ambiguousMatches},
 		{"guess_gate_overruled", s.guessGateOverruled},
 		{"matcher_fallbacks", s.matcherFallbacks},
+		{"matches_with_segments_dropped_by_residuals", s.matchesWithSegmentsDroppedByResiduals},
+		{"segments_dropped_by_residuals", s.segmentsDroppedByResiduals},
 		{"fallback_matcher_matches", s.fallbackMatcherMatches},
 		{"fallback_matcher_successes", s.fallbackMatcherSuccesses},
 		{"coarse_search_skipped", s.coarseSearchSkipped},

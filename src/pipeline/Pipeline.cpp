@@ -266,6 +266,11 @@ void Pipeline::processStep(
 			if (match.ambiguous) stats.ambiguousMatches++;
 			if (!match.guessGateOverruled.empty()) stats.guessGateOverruled++;
 			if (!match.matcherFallback.empty()) stats.matcherFallbacks++;
+			if (match.segmentsDroppedByResiduals > 0)
+			{
+				stats.matchesWithSegmentsDroppedByResiduals++;
+				stats.segmentsDroppedByResiduals += match.segmentsDroppedByResiduals;
+			}
 			if (match.confirmedShare > 0) stats.coarseSearchSkipped++;
 			if (match.rangeLatticeStep > 0)
 			{

@@ -100,6 +100,9 @@ class ScanPairBenchmark
 		 * covariance (MatchResult::ambiguous): flagged, never silent. */
 		size_t ambiguousUsed = 0;
 		size_t matcherFallbacks = 0;  //!< the matcher took its own fallback (MatchResult)
+		/** Pairs where the matcher dropped segments as moved by their
+		 * residuals (MatchResult::segmentsDroppedByResiduals). */
+		size_t segmentsDroppedByResiduals = 0;
 		/** Pairs the fallback matcher made after the matcher failed
 		 * (MatchResult::primaryFailure), and of those the successes. */
 		size_t fallbackMatches = 0, fallbackSuccesses = 0;

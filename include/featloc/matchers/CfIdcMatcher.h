@@ -183,6 +183,8 @@ class CfIdcMatcher : public ScanMatcher
 	 * points, most discordant first). */
 	void dropMovedByResiduals(const ScanPoints& current, const mrpt::math::TPose2D& x);
 	static constexpr double kMaxMovedShare = 1.0 / 3.0;
+	/** How the reason of a segment dropped by its residuals starts. */
+	static constexpr const char* kMovedByResiduals = "moved: its residuals";
 	/** The reference polyline of the reference segments marked kept. */
 	void buildReference(const ScanPoints& reference);
 	/** The current points of the segments marked kept. */

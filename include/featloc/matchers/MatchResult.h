@@ -61,6 +61,10 @@ struct MatchResult
 	 * started from every segment). Counted by summary.json and
 	 * featloc-bench. */
 	std::string matcherFallback;
+	/** Segments of the current scan the matcher dropped as moved because
+	 * their residuals at the estimate said so (CF-IDC's
+	 * segment_residual_chi2); 0 for the other matchers. */
+	size_t segmentsDroppedByResiduals = 0;
 	/** Non-empty when the configured matcher failed and its fallback
 	 * (`fallback_class`) made this result: "<class>: <why it failed>", or
 	 * when its match was ambiguous and the fallback's was not

@@ -59,6 +59,11 @@ struct RunStats
 	/** Matches where the matcher took its own fallback
 	 * (MatchResult::matcherFallback). */
 	size_t matcherFallbacks = 0;
+	/** Matches that dropped segments of the current scan as moved by their
+	 * residuals (MatchResult::segmentsDroppedByResiduals > 0), and how
+	 * many segments in all. */
+	size_t matchesWithSegmentsDroppedByResiduals = 0;
+	size_t segmentsDroppedByResiduals = 0;
 	/** Matches the fallback matcher made after the configured one failed
 	 * (MatchResult::primaryFailure), and how many of those succeeded. */
 	size_t fallbackMatcherMatches = 0;
