@@ -24,6 +24,15 @@ source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-cfidc-segment-residuals "$@"
 
 OFF="CF-IDC off=featloc::CfIdcMatcher{segment_residual_chi2=0}"
+# featloc-bench on one log with the matchers $M, each paired with the test
+# off (seed 1), into $OUT/KIND-NAME.txt; prints its paired rows.
+paired_with_off() { # kind, name, data, args...
+  local kind="$1" name="$2" data="$3"
+  shift 3
+  "$BIN/featloc-bench" "$ROOT/config.ini" "$data" -m "$M" --paired-with "CF-IDC off" \
+    --perturb-xy 0.3 --perturb-yaw-deg 10 --seed 1 -q --header --name "$name" "$@" > "$OUT/$kind-$name.txt"
+  paired_rows "seed 1" "$OUT/$kind-$name.txt"
+}
 machine_line
 echo
 echo "### Calibration: each threshold paired with the test off"
@@ -32,18 +41,11 @@ echo "| data | seed | matcher | \\|t\\| err mean difference, 95% interval [mm] |
 echo "|---|---|---|---|---|"
 M="$OFF"
 for chi in 50 100 200 400; do M="$M,chi2 $chi=featloc::CfIdcMatcher{segment_residual_chi2=$chi}"; done
-calibrate() { # name, data, args...
-  local name="$1" data="$2"
-  shift 2
-  "$BIN/featloc-bench" "$ROOT/config.ini" "$data" -m "$M" --paired-with "CF-IDC off" \
-    --perturb-xy 0.3 --perturb-yaw-deg 10 --seed 1 -q --header --name "$name" "$@" > "$OUT/calibration-$name.txt"
-  paired_rows "seed 1" "$OUT/calibration-$name.txt"
-}
 for scene in office lab; do
   sim_1cm "$scene"
-  calibrate "$scene" "$OUT/$scene-1cm.rawlog" -g "$OUT/$scene-1cm.gt.txt"
+  paired_with_off calibration "$scene" "$OUT/$scene-1cm.rawlog" -g "$OUT/$scene-1cm.gt.txt"
 done
-[ -d "$LASER2D" ] && calibrate orebro "$LASER2D/orebro-corrected.log.gz"
+[ -d "$LASER2D" ] && paired_with_off calibration orebro "$LASER2D/orebro-corrected.log.gz"
 
 # The moving scenes and their frozen twins, seeds 1-3.
 M="IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcMatcher,$OFF"
@@ -94,21 +96,14 @@ echo
 echo "| data | seed | matcher | \\|t\\| err mean difference, 95% interval [mm] | grossly wrong: only this / only the other, McNemar p |"
 echo "|---|---|---|---|---|"
 M="$OFF,CF-IDC=featloc::CfIdcMatcher"
-held() { # name, data, args...
-  local name="$1" data="$2"
-  shift 2
-  "$BIN/featloc-bench" "$ROOT/config.ini" "$data" -m "$M" --paired-with "CF-IDC off" \
-    --perturb-xy 0.3 --perturb-yaw-deg 10 --seed 1 -q --header --name "$name" "$@" > "$OUT/held-$name.txt"
-  paired_rows "seed 1" "$OUT/held-$name.txt"
-}
 for w in hall-people corridor-people; do
   [ -f "$OUT/$w.rawlog" ] || "$BIN/featloc-sim" "$ROOT/worlds/$w.ini" --out "$OUT/$w" -q > /dev/null
-  held "$w" "$OUT/$w.rawlog" -g "$OUT/$w.gt.txt"
+  paired_with_off held "$w" "$OUT/$w.rawlog" -g "$OUT/$w.gt.txt"
 done
 sim_lattice corridor-people corridor-people-lattice --seed 1
-held corridor-people-lattice "$OUT/corridor-people-lattice.rawlog" -g "$OUT/corridor-people-lattice.gt.txt"
-held bundled "$ROOT/rawlogs/mrpt-simul/simul.rawlog" -g "$ROOT/rawlogs/mrpt-simul/simul.gt.txt"
-for f in $(held_out_radish_logs); do held "$(basename "$f" -corrected.log.gz)" "$f"; done
+paired_with_off held corridor-people-lattice "$OUT/corridor-people-lattice.rawlog" -g "$OUT/corridor-people-lattice.gt.txt"
+paired_with_off held bundled "$ROOT/rawlogs/mrpt-simul/simul.rawlog" -g "$ROOT/rawlogs/mrpt-simul/simul.gt.txt"
+for f in $(held_out_radish_logs); do paired_with_off held "$(basename "$f" -corrected.log.gz)" "$f"; done
 
 echo
 echo "### Whole runs, CF-IDC: ATE rmse [mm] / failed / fallback matches; the test against off step by step"

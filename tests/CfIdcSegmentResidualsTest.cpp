@@ -24,18 +24,10 @@ using mrpt::poses::CPose2D;
 
 namespace
 {
-/** A 6 x 4 m room with a table, a door on its west wall swinging shut from
- * 90 to 0 deg over 2 s (t = 2..4), 0.9 m long. */
+/** A 6 x 4 m room with a doorway in its west wall (y = 1..1.9). */
 const char* kRoom = R"(
 [Wall.room]
 polyline = [0 1.9; 0 4; 6 4; 6 0; 0 0; 0 1]
-[Obstacle.table]
-polygon = [3.5 2.8; 4.5 2.8; 4.5 3.4; 3.5 3.4]
-[Door.west]
-hinge  = [0 1]
-length = 0.9
-swing  = [0 90; 2 90; 4 0; 8 0]
-period = 10
 )";
 
 SimWorld room()

@@ -131,21 +131,18 @@ bool PointToLineCovariance::compute(
 	// (group key, sum of its g_k, s_G^2), kept per thread between calls.
 	thread_local std::vector<std::tuple<size_t, Eigen::Vector3d, double>> groupSums;
 	groupSums.clear();
-	auto addShared = [&](const ScanPoint& p, const Eigen::Vector3d& gk, size_t side) {
-		if (p.sharedErrorGroup == 0) return false;
-		auto& [key, sum, s2] = groupSums.emplace_back();
-		key = 2 * static_cast<size_t>(p.sharedErrorGroup) + side;
-		sum = gk;
-		s2 = static_cast<double>(p.sharedRangeSigma) * p.sharedRangeSigma;
-		return true;
-	};
 	for (size_t k = 0; k < g.size(); k++)
 	{
 		const ScanPoint& p = k < nc ? current[k] : reference.point(static_cast<uint32_t>(k - nc));
-		if (addShared(p, g[k], k < nc ? 0 : 1))
-			Sown += g[k] * g[k].transpose();
-		else
+		if (p.sharedErrorGroup == 0)
+		{
 			S += g[k] * g[k].transpose();
+			continue;
+		}
+		Sown += g[k] * g[k].transpose();
+		// The two scans' groups apart: the current scan's even keys.
+		groupSums.emplace_back(2 * static_cast<size_t>(p.sharedErrorGroup) + (k < nc ? 0 : 1), g[k],
+			static_cast<double>(p.sharedRangeSigma) * p.sharedRangeSigma);
 	}
 	S = S * (sigma * sigma) + Sown * (ownSigma * ownSigma);
 	if (!groupSums.empty())

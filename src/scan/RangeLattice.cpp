@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <complex>
 
 namespace featloc
@@ -170,11 +169,12 @@ size_t RangeLattice::dequantize(ScanPoints& scan, double q, double offset)
 	// is off its surface by one rounding error, uniform over the level's
 	// q (on a surface seen head on, exactly one for all its beams).
 	const auto cellSigma = static_cast<float>(q / std::sqrt(12.0));
-	auto keepOnLevel = [&](size_t first, size_t last, size_t runStart = SIZE_MAX) {
-		const size_t group = 1 + p[runStart == SIZE_MAX ? first : runStart].beam;
+	// Points first..last of the run starting at point `run` (its group
+	// is named after that point's beam).
+	auto keepOnLevel = [&](size_t first, size_t last, size_t run) {
 		for (size_t i = first; i <= last; i++)
 		{
-			p[i].sharedErrorGroup = static_cast<uint32_t>(group);
+			p[i].sharedErrorGroup = 1 + p[run].beam;
 			p[i].sharedRangeSigma = cellSigma;
 		}
 	};
@@ -196,7 +196,7 @@ size_t RangeLattice::dequantize(ScanPoints& scan, double q, double offset)
 			a = e, b = m_runs[j + 1].second;
 		else
 		{
-			keepOnLevel(s, e);
+			keepOnLevel(s, e, s);
 			continue;
 		}
 		double ax, ay, bx, by;
