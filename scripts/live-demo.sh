@@ -45,7 +45,13 @@ fi
   --set Simulation:duration=$((SECS + 30)) ${EMULATOR_ARGS:-} > "$OUT/emulator.txt" 2>&1 &
 emu=$!
 trap 'kill -TERM $emu 2>/dev/null || true' EXIT
-sleep 0.5
+# featloc-sim simulates the log before it opens its ports: wait for its
+# devices (up to 60 s), not a fixed time.
+for _ in $(seq 600); do
+  grep -q 'waiting for the drivers to connect' "$OUT/emulator.txt" 2>/dev/null && break
+  kill -0 $emu 2>/dev/null || { cat "$OUT/emulator.txt" >&2; exit 1; }
+  sleep 0.1
+done
 PIN=()
 if [ -n "${LIVE_CPU:-}" ]; then
   PIN=(taskset -c "$LIVE_CPU")

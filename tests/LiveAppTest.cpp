@@ -247,7 +247,7 @@ TEST(Live, EmulatedHokuyoAndOdometryRunAndReplayToTheSamePoses)
 	const unsigned short laser = freePort(), odo = freePort();
 	const std::string out = dir.file("live"), replay = dir.file("replay");
 	const std::string prefix = dir.file("emu");
-	const CommandResult r = runCommand(emulatorCommand(prefix, laser, odo) + "sleep 0.5; " +
+	const CommandResult r = runCommand(emulatorCommand(prefix, laser, odo) +
 		shellQuote(kLive) + " " + liveArgs(laser, odo) + " --duration 4 --out " + shellQuote(out) +
 		" --set Evaluation:ground_truth=" + shellQuote(prefix + ".served.gt.txt") +
 		"; code=$?; kill -TERM $emu; wait $emu; echo exit=$code");
@@ -309,7 +309,7 @@ TEST(Live, AHokuyoAndASickTogetherWithOdometryAreRecordedAndReplayed)
 	const CommandResult r = runCommand(
 		emulatorCommand(prefix, laser, odo,
 			"--sick-port " + std::to_string(sick) + " --set Laser:rate=25") +
-		"sleep 0.5; " + shellQuote(kLive) + " " + liveArgs(laser, odo) + both +
+		shellQuote(kLive) + " " + liveArgs(laser, odo) + both +
 		" --duration 4 --out " + shellQuote(out) + " --set Evaluation:ground_truth=" +
 		shellQuote(prefix + ".served.gt.txt") +
 		"; code=$?; kill -TERM $emu; wait $emu; echo exit=$code");
@@ -374,7 +374,7 @@ TEST(Live, CtrlCPassesOnAndRecordsEveryObservationReceived)
 	const std::string out = dir.file("live"), prefix = dir.file("emu");
 	// The emulator stops first (it reports what it delivered), then
 	// featloc-live gets Ctrl-C: all of it must be in live.rawlog.
-	const CommandResult r = runCommand(emulatorCommand(prefix, laser, odo) + "sleep 0.5; " +
+	const CommandResult r = runCommand(emulatorCommand(prefix, laser, odo) +
 		shellQuote(kLive) + " " + liveArgs(laser, odo) + " --out " + shellQuote(out) +
 		" > /dev/null 2>&1 & live=$!; sleep 4; kill -TERM $emu; wait $emu; sleep 0.5; "
 		"kill -INT $live; wait $live; echo exit=$?; cat " + shellQuote(prefix + ".out"));
@@ -398,7 +398,7 @@ TEST(Live, DeviceFaultsMidRunAreReportedAndRecoveredWithNothingReceivedLost)
 	const CommandResult r = runCommand(
 		emulatorCommand(prefix, laser, odo,
 			"--laser-fault outage@2:1.5 --laser-fault garbage@5 --laser-fault stall@6:3") +
-		"sleep 0.5; " + shellQuote(kLive) + " " + liveArgs(laser, odo) +
+		shellQuote(kLive) + " " + liveArgs(laser, odo) +
 		" --set Live:restart_after_silence=1.5 --set Evaluation:ground_truth=" +
 		shellQuote(prefix + ".served.gt.txt") + " --out " + shellQuote(out) + " > " +
 		shellQuote(dir.file("live.txt")) + " 2>&1 & live=$!; sleep 12; kill -TERM $emu; "

@@ -347,7 +347,7 @@ TEST(Viewer, FollowsALiveRunAsItIsWritten)
 	const std::string out = tmp.file("live");
 	// The viewer starts before the run, follows its staging folder while it
 	// runs, and takes its screenshot 5 s in.
-	const std::string script = emulatorCommand(tmp.file("emu"), laser, odo) + "sleep 0.5; " +
+	const std::string script = emulatorCommand(tmp.file("emu"), laser, odo) +
 		shellQuote(kViewer) + " " + shellQuote(out) + " --follow --screenshot " +
 		shellQuote(tmp.file("f.png")) + " --screenshot-after 5 > " + shellQuote(tmp.file("v.txt")) +
 		" 2>&1 & v=$!; " + shellQuote(kLive) + " " + liveArgs(laser, odo) + " --out " +
@@ -378,7 +378,7 @@ TEST(Viewer, LiveGuiOpensTheViewerOnTheRun)
 	const std::string out = tmp.file("live");
 	// featloc-live --gui starts featloc-viewer --follow in its own process
 	// (it stays after the run): the test checks it is running, then ends it.
-	const std::string script = emulatorCommand(tmp.file("emu"), laser, odo) + "sleep 0.5; " +
+	const std::string script = emulatorCommand(tmp.file("emu"), laser, odo) +
 		shellQuote(kLive) +
 		" " + liveArgs(laser, odo) + " --out " + shellQuote(out) + " --duration 3 --gui > " +
 		shellQuote(tmp.file("l.txt")) + " 2>&1; kill $emu; " +
