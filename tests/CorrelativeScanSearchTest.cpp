@@ -387,6 +387,37 @@ TEST(CorrelativeScanSearch, AWrongMinimumTheReferenceDoesNotConfirmGoesToTheSear
 	EXPECT_LT(translationError(r.estimate.mean, truth), 0.005);
 }
 
+// On a range lattice a wall seen head on reads one level on all its beams,
+// and along an aisle little else fixes the position: featloc-bench's pair
+// 775 of the warehouse with nothing moving on MRPT's 0.16 m lattice
+// (worlds/warehouse-aisles.ini, --frozen, Laser:range_step = 0.16; +-0.3 m /
+// +-10 deg, seed 1). IDC's iterations from the guess stop 0.26 m along the
+// aisle with 0.87 of the points within 5 cm, and the poses 0.1 m either
+// side of that confirm as well (coarse_confirm_probe): the search runs and
+// the match is right.
+TEST(CorrelativeScanSearch, APoseSlidAlongAnAisleOnARangeLatticeIsNotConfirmed)
+{
+	mrpt::obs::CObservation2DRangeScan ref, cur;
+	test::readScanPair("warehouse-lattice-pair-775.rawlog", ref, cur);
+	const CPose2D truth(0.1, 0, 0);
+	const auto guess = uniformGuess(CPose2D(0.374702, -0.075956, mrpt::DEG2RAD(6.815261)), 0.3, 10);
+	for (const std::string cls : {"featloc::IdcMatcher", "featloc::CfIdcMatcher"})
+	{
+		const MatchResult slid = matcher(cls, "coarse_confirm_probe=false")->match(ref, cur, guess);
+		ASSERT_TRUE(slid.success) << cls << ": " << slid.failureReason;
+		EXPECT_GE(slid.confirmedShare, 0.85) << cls;
+		EXPECT_GT(translationError(slid.estimate.mean, truth), 0.2) << cls;
+		EXPECT_FALSE(slid.ambiguous) << cls << ": the slide was silent";
+
+		const MatchResult r = matcher(cls, "")->match(ref, cur, guess);
+		ASSERT_TRUE(r.success) << cls << ": " << r.failureReason;
+		EXPECT_EQ(r.confirmedShare, 0.0) << cls << ": the search did not run";
+		EXPECT_TRUE(r.confirmationSlid) << cls;
+		EXPECT_FALSE(slid.confirmationSlid) << cls;
+		EXPECT_LT(translationError(r.estimate.mean, truth), 0.03) << cls;
+	}
+}
+
 // A pose slid along a corridor keeps most points near the walls: the
 // confirming distance must be tight enough to tell. featloc-bench's pair
 // 387 of the simulated corridor with walking people (+-0.5 m / +-15 deg,

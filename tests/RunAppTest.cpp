@@ -1099,6 +1099,7 @@ TEST(FeatlocRun, SummaryCountsTheMatchesMadeWithoutTheCoarseSearch)
 	EXPECT_EQ(s["counts"]["matches"], 11);
 	EXPECT_EQ(s["counts"]["match_failures"], 0);
 	EXPECT_EQ(s["counts"]["coarse_search_skipped"], 11);
+	EXPECT_EQ(s["counts"]["coarse_confirmations_slid"], 0) << "the corners fix every direction";
 	EXPECT_NE(r.output.find("11 without the coarse search: the points confirmed the iterations"),
 		std::string::npos)
 		<< r.output;

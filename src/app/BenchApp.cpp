@@ -382,6 +382,7 @@ nlohmann::json toJson(const ScanPairBenchmark::Result& r)
 		{"fallback_matcher_matches", r.fallbackMatches},
 		{"fallback_matcher_successes", r.fallbackSuccesses},
 		{"coarse_search_skipped", r.searchSkipped},
+		{"coarse_confirmations_slid", r.confirmationsSlid},
 		{"guess_kept_along_free_direction", r.guessKeptAlongFreeDirection},
 		{"success_rate", r.successRate()}, {"mae_x_m", r.maeX}, {"mae_y_m", r.maeY},
 		{"mae_yaw_deg", mrpt::RAD2DEG(r.maeYaw)}, {"mean_trans_err_m", r.meanTrans},
@@ -621,6 +622,12 @@ int BenchApp::main(int argc, char** argv)
 						"iterations from the guess put coarse_confirm_share of the points on the "
 						"reference\n",
 				r.matcher.c_str(), r.searchSkipped, r.pairs);
+	for (const auto& r : results)
+		if (r.confirmationsSlid > 0)
+			std::printf("\n%s: on %zu of %zu pairs the points confirmed the iterations from the guess "
+						"but a pose slid along its least certain direction fit as well, and the "
+						"coarse search ran (coarse_confirm_probe)\n",
+				r.matcher.c_str(), r.confirmationsSlid, r.pairs);
 	for (const auto& r : results)
 		if (r.segmentsDroppedByResiduals > 0)
 			std::printf("\n%s: %zu of %zu pairs dropped segments of the current scan whose residuals "

@@ -133,6 +133,11 @@ void RunReport::printSummary(const RunStats& s)
 			std::printf("    %zu without the coarse search: the points confirmed the iterations from "
 						"the guess (coarse_confirm_share)\n",
 				s.coarseSearchSkipped);
+		if (s.coarseConfirmationsSlid)
+			std::printf("    %zu with the coarse search after all: the points confirmed the "
+						"iterations from the guess, but a pose slid along its least certain "
+						"direction as well (coarse_confirm_probe)\n",
+				s.coarseConfirmationsSlid);
 		if (s.guessKeptAlongFreeDirection)
 			std::printf("    %zu kept the guess along the one direction their points left free, as "
 						"along a corridor (free_direction_from_guess; used, flagged ambiguous)\n",

@@ -106,6 +106,7 @@ std::vector<ScanPairBenchmark::Result> ScanPairBenchmark::run(
 			if (!r.matcherFallback.empty()) res[m].matcherFallbacks++;
 			if (r.segmentsDroppedByResiduals > 0) res[m].segmentsDroppedByResiduals++;
 			if (r.confirmedShare > 0) res[m].searchSkipped++;
+			if (r.confirmationSlid) res[m].confirmationsSlid++;
 			if (r.guessKeptAlongFreeDirection) res[m].guessKeptAlongFreeDirection++;
 			if (!r.primaryFailure.empty())
 			{

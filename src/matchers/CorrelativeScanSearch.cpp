@@ -80,6 +80,8 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	readDegrees(c, s, "coarse_distinct_yaw_DEG", distinctYaw);
 	read(c, s, "coarse_confirm_share", confirmShare);
 	read(c, s, "coarse_confirm_distance", confirmDistance);
+	read(c, s, "coarse_confirm_probe", confirmProbe);
+	read(c, s, "coarse_confirm_probe_sigma", confirmProbeSigma);
 	require(windowSigmas > 0, c, s, "coarse_window_sigmas", "> 0");
 	require(minWindowXY >= 0, c, s, "coarse_min_window_xy", ">= 0");
 	require(minWindowYaw >= 0, c, s, "coarse_min_window_yaw_DEG", ">= 0");
@@ -101,6 +103,7 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	require(confirmShare >= 0 && confirmShare <= 1, c, s, "coarse_confirm_share",
 		"in [0, 1] (0: the search always runs)");
 	require(confirmDistance > 0, c, s, "coarse_confirm_distance", "> 0");
+	require(confirmProbeSigma >= 0, c, s, "coarse_confirm_probe_sigma", ">= 0");
 }
 
 void CorrelativeScanSearch::Options::saveToConfigFile(
@@ -149,6 +152,12 @@ void CorrelativeScanSearch::Options::saveToConfigFile(
 		"(0: the search always runs)");
 	write(c, s, "coarse_confirm_distance", confirmDistance,
 		"[m] a current point this close to a reference point is confirmed");
+	write(c, s, "coarse_confirm_probe", confirmProbe,
+		"the search runs also where a pose slid by 2 or 4 x coarse_confirm_distance along the "
+		"estimate's least certain translation puts as large a share within it");
+	write(c, s, "coarse_confirm_probe_sigma", confirmProbeSigma,
+		"[m] the probe runs where the estimate's largest translation sigma reaches this "
+		"(0: wherever the share confirms)");
 }
 
 mrpt::math::CMatrixDouble33 CorrelativeScanSearch::Result::gridCovariance() const

@@ -46,6 +46,7 @@ nlohmann::json toJson(const RunStats& s, const std::vector<std::string>& outputs
 		{"fallback_matcher_matches", s.fallbackMatcherMatches},
 		{"fallback_matcher_successes", s.fallbackMatcherSuccesses},
 		{"coarse_search_skipped", s.coarseSearchSkipped},
+		{"coarse_confirmations_slid", s.coarseConfirmationsSlid},
 		{"range_lattice_matches", s.rangeLatticeMatches},
 		{"range_lattice_step_m",
 			s.rangeLatticeSteps.empty() ? 0.0 : ErrorStats::of(s.rangeLatticeSteps).median},

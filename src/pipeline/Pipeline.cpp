@@ -272,6 +272,7 @@ void Pipeline::processStep(
 				stats.segmentsDroppedByResiduals += match.segmentsDroppedByResiduals;
 			}
 			if (match.confirmedShare > 0) stats.coarseSearchSkipped++;
+			if (match.confirmationSlid) stats.coarseConfirmationsSlid++;
 			if (match.rangeLatticeStep > 0)
 			{
 				stats.rangeLatticeMatches++;

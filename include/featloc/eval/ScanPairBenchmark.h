@@ -109,6 +109,9 @@ class ScanPairBenchmark
 		/** Pairs whose coarse search was skipped: the points confirmed the
 		 * iterations from the guess (MatchResult::confirmedShare). */
 		size_t searchSkipped = 0;
+		/** Pairs the share confirmed but a slid pose fit as well, so the
+		 * search ran (MatchResult::confirmationSlid). */
+		size_t confirmationsSlid = 0;
 		/** Pairs whose match kept the guess along the one direction its
 		 * points left free (MatchResult::guessKeptAlongFreeDirection; also
 		 * in ambiguousUsed). */

@@ -88,6 +88,20 @@ class CorrelativeScanSearch
 		 * search always runs; IcpMatcher: 0). */
 		double confirmShare = 0.85;
 		double confirmDistance = 0.05;	//!< [m]
+		/** The confirmation must also find the estimate where the points
+		 * peak along its least certain translation: if a pose slid by 2 or
+		 * 4 x confirmDistance either way along it puts as large a share of
+		 * the points within confirmDistance, the search runs (an aisle or a
+		 * corridor on a range lattice, where the iterations can stop along
+		 * it with the walls' points all on the reference). */
+		bool confirmProbe = true;
+		/** The probe runs only where the estimate's largest translation
+		 * sigma reaches this: a match that fixes every direction to a 25th
+		 * of the probe's shorter step (2 x 5 cm) has no weak direction to
+		 * slide along, and the probe's four shares would cost PCM's office
+		 * pairs a seventh of their time (doc/benchmarks.md, "Issue 15,
+		 * nineteenth session"). 0: wherever the share confirms. */
+		double confirmProbeSigma = 0.004;  //!< [m]
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& c, const std::string& s) override;

@@ -85,6 +85,10 @@ struct MatchResult
 	 * succeeded at a pose that puts this share of the current points near
 	 * the reference (coarse_confirm_share; 0 otherwise). */
 	double confirmedShare = 0;
+	/** The share confirmed the iterations from the guess, but a pose slid
+	 * along the estimate's least certain direction fit as well
+	 * (coarse_confirm_probe), so the coarse search ran. */
+	bool confirmationSlid = false;
 	/** What the gates add to the guess's covariance (ScanMatcher::match's
 	 * gateAllowance; zero when none). */
 	mrpt::math::CMatrixDouble33 gateAllowance;

@@ -71,6 +71,9 @@ struct RunStats
 	/** Matches whose coarse search was skipped: the points confirmed the
 	 * iterations from the guess (MatchResult::confirmedShare). */
 	size_t coarseSearchSkipped = 0;
+	/** Matches the share confirmed but a slid pose fit as well, so the
+	 * search ran (MatchResult::confirmationSlid). */
+	size_t coarseConfirmationsSlid = 0;
 	/** Matches whose current scan's readings sat on a range lattice
 	 * (MatchResult::rangeLatticeStep), its steps [m], and how many of
 	 * those the matcher put back on their surfaces (dequantize_ranges). */
