@@ -18,7 +18,7 @@
 #    apartment and the parking garage (made this session; as they are and on
 #    the lattice), the warehouse at 1 cm noise, and the other five Radish
 #    logs (../shared/data/laser2d or $FEATLOC_LASER2D).
-# Usage: scripts/bench-confirm-probe.sh [OUTDIR]   (about 7 min on 2 cores)
+# Usage: scripts/bench-confirm-probe.sh [OUTDIR]   (about 30 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-confirm-probe "$@"
@@ -83,6 +83,31 @@ for run in 1 2 3; do
       $COMMON -m "PCM (probe $probe)=featloc::PcmFeatureMatcher{coarse_confirm_probe=$probe},IcpMatcher (MRPT)=featloc::IcpMatcher" \
       $HEADER --name "sim office (1 cm), run $run" "${PB[@]}" | main_table
     HEADER=
+  done
+done
+# Whole runs, probe off (A) and on (B), as config.ini has them otherwise:
+# the bundled log (0.16 m lattice), the corridor with people (seeds 1-3),
+# the held-out Radish logs, and the warehouse on the lattice.
+echo
+echo "### Whole runs: ATE rmse [mm] / failed matches / the fallback's matches, without and with the probe; with against without step by step"
+echo
+sim_corridor_seeds
+for cls in PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
+  echo
+  echo "#### $cls"
+  echo
+  echo "| log | estimator | without the probe | with it | with against without: mean RPE difference [mm] (95% interval); steps off only with / only without, McNemar p |"
+  echo "|---|---|---|---|---|"
+  for est in matcher ekf; do
+    whole_runs_two_ways "$est" "1 2 3" "$cls-off" "ScanMatcher.$cls:coarse_confirm_probe=false" "$cls-on" \
+      "ScanMatcher.$cls:coarse_confirm_probe=true" --set "ScanMatcher:class=featloc::$cls"
+    name="warehouse-lattice-$cls"
+    for v in off on; do
+      bench_featloc_run "$name-$est-$v" "$OUT/warehouse, lattice.rawlog" "$OUT/warehouse, lattice.gt.txt" \
+        --set "Pipeline:estimator=$est" --set "ScanMatcher:class=featloc::$cls" \
+        --set "ScanMatcher.$cls:coarse_confirm_probe=$([ $v = on ] && echo true || echo false)"
+    done
+    echo "| warehouse, lattice | $est | $(run_counts "$name-$est-off") | $(run_counts "$name-$est-on") | $(runs_paired "$OUT/warehouse, lattice.gt.txt" "$OUT/$name-$est-on" "$OUT/$name-$est-off") |"
   done
 done
 echo

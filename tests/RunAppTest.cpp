@@ -719,6 +719,40 @@ TEST(FeatlocBench, ErrorsBesideTheCramerRaoBoundOfTheSimulatedWorld)
 		<< noTruth.output;
 }
 
+// A log of featloc-sim --frozen (nothing moving) fits its world file only
+// with the world frozen the same way: --frozen. Without it the people of
+// the world file are where the log has none, and the error says which
+// option is missing.
+TEST(FeatlocBench, AFrozenLogIsBoundByItsFrozenWorld)
+{
+	TempDir dir;
+	const std::string world = std::string(FEATLOC_SOURCE_DIR) + "/worlds/corridor-people.ini";
+	const CommandResult sim = runCommand(shellQuote(FEATLOC_SIM_EXE) + " " + shellQuote(world) +
+		" --frozen -q --set Simulation:duration=4 --out " + shellQuote(dir.file("frozen")));
+	ASSERT_EQ(sim.exitCode, 0) << sim.output;
+	const std::string common = shellQuote(FEATLOC_BENCH_EXE) + " " + shellQuote(kConfig) + " " +
+		shellQuote(dir.file("frozen.rawlog")) + " -g " + shellQuote(dir.file("frozen.gt.txt")) +
+		" -q -m featloc::CfIdcMatcher --world " + shellQuote(world);
+	const CommandResult moving = runCommand(common);
+	EXPECT_EQ(moving.exitCode, 1) << moving.output;
+	EXPECT_NE(moving.output.find("does not fit it at its ground-truth pose"), std::string::npos)
+		<< moving.output;
+	EXPECT_NE(moving.output.find("needs --frozen here too"), std::string::npos) << moving.output;
+
+	const CommandResult frozen = runCommand(common + " --frozen -j " + shellQuote(dir.file("b.json")));
+	ASSERT_EQ(frozen.exitCode, 0) << frozen.output;
+	const auto j = readJson(dir.file("b.json"));
+	EXPECT_GT(j["results"][0]["cramer_rao"]["pairs"].get<int>(), 10);
+	EXPECT_EQ(j["results"][0]["points_kept"]["moved_seen"], 0) << "nothing moves";
+
+	const CommandResult noWorld = runCommand(shellQuote(FEATLOC_BENCH_EXE) + " " +
+		shellQuote(kConfig) + " " + shellQuote(dir.file("frozen.rawlog")) + " -g " +
+		shellQuote(dir.file("frozen.gt.txt")) + " -q --frozen");
+	EXPECT_EQ(noWorld.exitCode, 2) << noWorld.output;
+	EXPECT_NE(noWorld.output.find("--frozen needs --world FILE"), std::string::npos)
+		<< noWorld.output;
+}
+
 // With the world, featloc-bench also counts the current points on things
 // that moved since the reference scan (people here) that CF-IDC kept for
 // IDC: its segment gate drops most of them and keeps nearly all the rest;

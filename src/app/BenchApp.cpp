@@ -116,14 +116,15 @@ Sequence loadRawlog(
  * current scan's beams on things that moved since the reference scan. */
 void attachWorld(std::vector<ScanPairSample>& pairs, const std::vector<size_t>& referenceIndex,
 	const std::vector<size_t>& currentIndex, const Sequence& seq, const std::string& worldPath,
-	bool withBounds)
+	bool withBounds, bool frozen)
 {
 	if (seq.reference.empty())
 		throw UsageError("--world needs the scans' ground truth (--ground-truth FILE)");
 	TrackedConfig wc;
 	wc.loadFile(worldPath);
-	const SimConfiguration world = SimConfiguration::load(wc);
+	SimConfiguration world = SimConfiguration::load(wc);
 	wc.requireAllKeysRead();
+	if (frozen) world.world = world.world.frozen();
 	std::map<size_t, mrpt::math::CMatrixDouble33> info;
 	auto informationOf = [&](size_t k) -> const mrpt::math::CMatrixDouble33& {
 		auto it = info.find(k);
@@ -143,7 +144,8 @@ void attachWorld(std::vector<ScanPairSample>& pairs, const std::vector<size_t>& 
 		if (r.beamsOff > r.beamsValid / 10)
 			throw InputError("--world '" + worldPath + "': scan " + std::to_string(k) + " does not fit it at its ground-truth pose: " +
 				std::to_string(r.beamsOff) + " of its " + std::to_string(r.beamsValid) +
-				" valid ranges are more than 5 sigma from the world's");
+				" valid ranges are more than 5 sigma from the world's" +
+				(frozen ? std::string() : " (a log of featloc-sim --frozen needs --frozen here too)"));
 		return info[k] = r.information;
 	};
 	for (size_t p = 0; p < pairs.size(); p++)
@@ -486,6 +488,10 @@ int BenchApp::main(int argc, char** argv)
 		"carts, doors) that the matchers reporting their parts (CF-IDC's "
 		"segments, PCM's features) kept",
 		false, "", "FILE", cmd);
+	TCLAP::SwitchArg argFrozen("", "frozen",
+		"With --world: the log was simulated with featloc-sim --frozen (the world's people and "
+		"carts left out, its doors held at their angle at t = 0)",
+		cmd);
 	TCLAP::ValueArg<std::string> argLoops("", "loop-relations",
 		"Instead of benchmarking: where TRAJECTORY (of this log) comes back to a place "
 		"(poses within 1 m and 30 deg, 50 or more scans apart), match the two scans "
@@ -501,6 +507,7 @@ int BenchApp::main(int argc, char** argv)
 	if (argKind.getValue() != "uniform" && argKind.getValue() != "gaussian")
 		throw UsageError("--perturbation must be uniform or gaussian");
 	if (argStride.getValue() < 1) throw UsageError("--stride must be >= 1");
+	if (argFrozen.getValue() && !argWorld.isSet()) throw UsageError("--frozen needs --world FILE");
 	const auto basinLevels = parseBasinLevels(argBasinLevels.getValue());
 
 	TrackedConfig cfg;
@@ -560,7 +567,8 @@ int BenchApp::main(int argc, char** argv)
 	}
 	if (pairs.empty()) throw InputError("'" + data + "' gives no scan pair to benchmark");
 	if (argWorld.isSet())
-		attachWorld(pairs, referenceIndex, currentIndex, seq, argWorld.getValue(), !argApply.isSet());
+		attachWorld(pairs, referenceIndex, currentIndex, seq, argWorld.getValue(), !argApply.isSet(),
+			argFrozen.getValue());
 
 	ScanPairBenchmark::Options o;
 	o.perturbXY = argXY.getValue();
