@@ -121,12 +121,16 @@ sim_1cm() { # scene [seed]
     "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$1-1cm" -q --set Laser:range_noise=0.01 > /dev/null
   fi
 }
-# featloc-sim's log of worlds/WORLD.ini with MRPT's simulator's 0.16 m range
-# lattice (Laser:range_step, before the noise), as $OUT/NAME.rawlog (+
-# .gt.txt), made once per OUT; further arguments go to featloc-sim.
-sim_lattice() { # world, name, featloc-sim args...
+# featloc-sim's log of worlds/WORLD.ini as $OUT/NAME.rawlog (+ .gt.txt),
+# made once per OUT; further arguments go to featloc-sim.
+sim_world() { # world, name, featloc-sim args...
   [ -f "$OUT/$2.rawlog" ] ||
-    "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$2" -q --set Laser:range_step=0.16 "${@:3}" > /dev/null
+    "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$2" -q "${@:3}" > /dev/null
+}
+# The same with MRPT's simulator's 0.16 m range lattice (Laser:range_step,
+# before the noise).
+sim_lattice() { # world, name, featloc-sim args...
+  sim_world "$1" "$2" --set Laser:range_step=0.16 "${@:3}"
 }
 # One featloc-run as config.ini has it but for the --set arguments, into
 # $OUT/NAME (its console output in $OUT/NAME.txt), without the rawlog and

@@ -32,11 +32,8 @@ COMMON="--seed 1 -q --paired-with none"
 HEADER=--header
 bench() { bench_main_table "coarse search was skipped" "$@"; }  # name, data, extra args...
 PB=(--perturb-xy 0.3 --perturb-yaw-deg 10)
-sim() { # world, name, featloc-sim args...
-  [ -f "$OUT/$2.rawlog" ] || "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$2" -q "${@:3}" > /dev/null
-}
 simbench() { # world, name, featloc-sim args...: simulate (once) and bench
-  sim "$@"
+  sim_world "$@"
   bench "$2" "$OUT/$2.rawlog" -g "$OUT/$2.gt.txt" "${PB[@]}"
 }
 

@@ -23,9 +23,6 @@ M="IcpMatcher (MRPT)=featloc::IcpMatcher,PCM=featloc::PcmFeatureMatcher,IDC=feat
 COMMON="--seed 1 -q"
 HEADER=--header
 PB=(--perturb-xy 0.3 --perturb-yaw-deg 10)
-sim() { # world, name, featloc-sim args...
-  [ -f "$OUT/$2.rawlog" ] || "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$2" -q "${@:3}" > /dev/null
-}
 WORLDS="apartment warehouse-aisles parking-garage"
 
 machine_line
@@ -33,7 +30,7 @@ echo
 echo "### Static (--frozen), 1 cm range noise"
 echo
 for w in $WORLDS; do
-  sim "$w" "$w-frozen-1cm" --frozen --set Laser:range_noise=0.01
+  sim_world "$w" "$w-frozen-1cm" --frozen --set Laser:range_noise=0.01
   bench_run "$w frozen, 1 cm" "$OUT/$w-frozen-1cm.rawlog" -g "$OUT/$w-frozen-1cm.gt.txt" "${PB[@]}" \
     --world "$ROOT/worlds/$w.ini" --frozen --basin "$OUT/basin-$w.png"
   HEADER=
@@ -43,10 +40,10 @@ echo "### As written: people, carts, each world's laser"
 echo
 HEADER=--header
 for w in $WORLDS; do
-  sim "$w" "$w"
+  sim_world "$w" "$w"
   bench_run "$w" "$OUT/$w.rawlog" -g "$OUT/$w.gt.txt" "${PB[@]}" --world "$ROOT/worlds/$w.ini"
   HEADER=
-  sim "$w" "$w-frozen" --frozen
+  sim_world "$w" "$w-frozen" --frozen
   bench_main_table "" "$w frozen" "$OUT/$w-frozen.rawlog" -g "$OUT/$w-frozen.gt.txt" "${PB[@]}"
 done
 echo
@@ -54,7 +51,7 @@ echo "### As written, on the 0.16 m range lattice"
 echo
 HEADER=--header
 for w in $WORLDS; do
-  sim "$w" "$w-lattice" --set Laser:range_step=0.16
+  sim_lattice "$w" "$w-lattice"
   bench_main_table "" "$w, lattice" "$OUT/$w-lattice.rawlog" -g "$OUT/$w-lattice.gt.txt" "${PB[@]}"
 done
 echo
