@@ -392,8 +392,8 @@ TEST(CorrelativeScanSearch, AWrongMinimumTheReferenceDoesNotConfirmGoesToTheSear
 // 775 of the warehouse with nothing moving on MRPT's 0.16 m lattice
 // (worlds/warehouse-aisles.ini, --frozen, Laser:range_step = 0.16; +-0.3 m /
 // +-10 deg, seed 1). IDC's iterations from the guess stop 0.26 m along the
-// aisle with 0.87 of the points within 5 cm, and the poses 0.1 m either
-// side of that confirm as well (coarse_confirm_probe): the search runs and
+// aisle with 0.87 of the points within 5 cm, and the pose 0.2 m towards
+// the truth puts more there (coarse_confirm_probe): the search runs and
 // the match is right.
 TEST(CorrelativeScanSearch, APoseSlidAlongAnAisleOnARangeLatticeIsNotConfirmed)
 {

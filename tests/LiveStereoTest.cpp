@@ -87,7 +87,8 @@ TEST(Live, AStereoCameraReplayedByCCameraSensorFeedsTheStereoLandmarksLive)
 		shellQuote(std::string(FEATLOC_SOURCE_DIR) + "/worlds/moon-lab.ini") + " --out " +
 		shellQuote(prefix) + " --serve -q --laser-port " + std::to_string(laser) +
 		" --odometry-port " + std::to_string(odo) + " > " + shellQuote(prefix + ".out") +
-		" 2>&1 & emu=$!; " + waitForEmulator(prefix + ".out") + shellQuote(FEATLOC_LIVE_EXE) + " " + shellQuote(config) +
+		" 2>&1 & emu=$!; " + waitForEmulator(prefix + ".out") + shellQuote(FEATLOC_LIVE_EXE) +
+		" " + shellQuote(config) +
 		" -q" + devices + " --duration 5 --out " + shellQuote(out) +
 		" --set Evaluation:ground_truth=" + shellQuote(prefix + ".served.gt.txt") +
 		"; code=$?; kill -TERM $emu; wait $emu; echo exit=$code; cat " +
