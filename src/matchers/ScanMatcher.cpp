@@ -176,15 +176,20 @@ MatchResult ScanMatcher::match(
 
 	// Robot motion X, sensor motion Y: X = S1 (+) Y (+) S2^-1, hence
 	// Y = S1^-1 (+) X (+) S2. MRPT propagates the covariance through both
-	// compositions with their Jacobians.
+	// compositions with their Jacobians: on the left changeCoordinatesReference
+	// rotates it by S1's heading; on the right only the composition with a
+	// pose PDF (of zero covariance) applies d(X (+) U)/dX, the lever arm of
+	// the rotation. (MRPT 2.5's operator+=(CPose2D) instead rotates the
+	// covariance by U's heading: with a sensor turned 90 deg on the robot the
+	// two rotations cancelled and x and y stayed swapped.)
 	auto toSensorFrames = [&](mrpt::poses::CPosePDFGaussian g) {
 		g.changeCoordinatesReference(mrpt::poses::CPose2D() - s1);
-		g += s2;
+		g += mrpt::poses::CPosePDFGaussian(s2);
 		return g;
 	};
 	auto toRobotFrames = [&](mrpt::poses::CPosePDFGaussian& g) {
 		g.changeCoordinatesReference(s1);
-		g += mrpt::poses::CPose2D() - s2;
+		g += mrpt::poses::CPosePDFGaussian(mrpt::poses::CPose2D() - s2);
 	};
 	// The coarse search's window also covers what the gate allows for.
 	mrpt::poses::CPosePDFGaussian window = initialGuess;
