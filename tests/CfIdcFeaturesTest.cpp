@@ -84,6 +84,42 @@ TEST(AdaptiveBreakpointSegmenter, AJumpIsABreakAndASmoothWallIsNot)
 	EXPECT_EQ(segments[1].last, s.size() - 1);
 }
 
+TEST(AdaptiveBreakpointSegmenter, ADenseNoisyWallIsOneSegmentWithSigmaFromTheScan)
+{
+	// One wall 1 m ahead, 1081 beams over 270 deg, 3 cm range noise: with
+	// the paper's fixed 5 mm sigma_r, eq. (3) breaks it wherever two
+	// neighbours differ by some 4 cm in range; with sigma_r estimated from
+	// the scan (about 3 cm), the wall stays whole.
+	featloc::test::SyntheticRoom wall;
+	wall.add(1, -20, 1, 20);
+	mrpt::random::CRandomGenerator rng(7);
+	auto scan = wall.scan(mrpt::poses::CPose2D(), mrpt::poses::CPose2D(), 1081, mrpt::DEG2RAD(270.0));
+	for (size_t i = 0; i < scan->getScanSize(); i++)
+		if (scan->getScanRangeValidity(i))
+			scan->setScanRange(i,
+				scan->getScanRange(i) + static_cast<float>(0.03 * rng.drawGaussian1D_normalized()));
+	const ScanPoints s = ScanPoints::fromScan(*scan);
+	// Within 60 deg of the wall's normal: a few points further out are
+	// far apart anyway.
+	auto segmentsNearTheNormal = [&](bool fromScan, double* sigma) {
+		AdaptiveBreakpointSegmenter::Parameters p;
+		p.sigmaFromScan = fromScan;
+		const AdaptiveBreakpointSegmenter seg(p);
+		std::vector<ScanSegment> out;
+		seg.segment(s, out);
+		*sigma = seg.lastSigmaR();
+		size_t n = 0;
+		for (const auto& g : out)
+			n += std::abs(s.points[g.first].bearing) < mrpt::DEG2RAD(60.0);
+		return n;
+	};
+	double fixed = 0, estimated = 0;
+	EXPECT_GT(segmentsNearTheNormal(false, &fixed), 50u);
+	EXPECT_EQ(fixed, 0.005);
+	EXPECT_LE(segmentsNearTheNormal(true, &estimated), 3u);
+	EXPECT_NEAR(estimated, 0.03, 0.006);
+}
+
 TEST(AdaptiveBreakpointSegmenter, IncidenceAboveLambdaBreaksAWall)
 {
 	// Eq. (3): a wall seen at 75 deg incidence (below 90 - lambda = 80) is

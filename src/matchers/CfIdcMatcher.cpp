@@ -209,7 +209,8 @@ void CfIdcMatcher::buildReference(const ScanPoints& reference)
 	m_segments.clear();
 	for (const auto& s : m_referenceReport)
 		if (s.kept) m_segments.push_back(s.segment);
-	m_polyline.build(reference, m_segments, params.idc.line_half_window);
+	m_polyline.build(reference, m_segments, params.idc.line_half_window,
+		lineGrowthTargetFor(params.idc.lineTargetDirectionSigma()));
 }
 
 void CfIdcMatcher::collectKeptCurrent(const ScanPoints& current)
@@ -331,7 +332,7 @@ void CfIdcMatcher::matchPoints(
 	const ScanPoints& reference, const ScanPoints& current,
 	const mrpt::poses::CPosePDFGaussian& initialGuess, MatchResult& result)
 {
-	m_segmenter.params = params.segmentation;
+	m_segmenter.params = segmentationFor(params.segmentation);
 	m_curvature.params = params.curvature;
 	m_correlator.params = params.correlation;
 	m_idc.params = params.idc;

@@ -35,16 +35,20 @@ void IdcMatcher::buildReference(const ScanPoints& reference)
 	// One build serves every match against the same scan: a keyframe's,
 	// and the second run of the iterations when coarse_confirm_share sends
 	// a match to the coarse search.
-	if (m_built && m_builtSegmentation == params.segmentation &&
+	const AdaptiveBreakpointSegmenter::Parameters segmentation = segmentationFor(params.segmentation);
+	if (m_built && m_builtSegmentation == segmentation &&
 		m_builtLineHalfWindow == params.idc.line_half_window &&
+		m_builtLineTarget == lineGrowthTargetFor(params.idc.lineTargetDirectionSigma()) &&
 		m_builtReference.samePointsAs(reference))
 		return;
-	AdaptiveBreakpointSegmenter(params.segmentation).segment(reference, m_segments);
-	m_polyline.build(reference, m_segments, params.idc.line_half_window);
+	AdaptiveBreakpointSegmenter(segmentation).segment(reference, m_segments);
+	m_polyline.build(reference, m_segments, params.idc.line_half_window,
+		lineGrowthTargetFor(params.idc.lineTargetDirectionSigma()));
 	m_built = true;
 	m_builtReference = reference;
-	m_builtSegmentation = params.segmentation;
+	m_builtSegmentation = segmentation;
 	m_builtLineHalfWindow = params.idc.line_half_window;
+	m_builtLineTarget = lineGrowthTargetFor(params.idc.lineTargetDirectionSigma());
 }
 
 void IdcMatcher::matchPoints(

@@ -31,6 +31,7 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	read(c, s, "step_tolerance", step_tolerance);
 	read(c, s, "line_half_window", line_half_window);
 	readDegrees(c, s, "max_line_direction_sigma_DEG", max_line_direction_sigma);
+	read(c, s, "grow_lines_to_direction_sigma", grow_lines_to_direction_sigma);
 	read(c, s, "guess_gate_chi2", guess_gate_chi2);
 	read(c, s, "covariance_inflation", covariance_inflation);
 	read(c, s, "min_range_sigma", min_range_sigma);
@@ -83,6 +84,8 @@ void IterativeDualCorrespondence::Parameters::saveToConfigFile(
 		"point_to_line phase: a reference edge's local line takes up to this many neighbours on each side, while they stay within 3 sigma of it");
 	writeDegrees(c, s, "max_line_direction_sigma_DEG", max_line_direction_sigma,
 		"[deg] point_to_line phase: points pair only with local lines whose direction is known this well (noise / sqrt(scatter along the line))");
+	write(c, s, "grow_lines_to_direction_sigma", grow_lines_to_direction_sigma,
+		"point_to_line phase: a local line whose direction is still known worse than max_line_direction_sigma_DEG after line_half_window grows on until it is not (up to 8x as many points), instead of being left out: dense noisy scans (false: as until 2026-12-01)");
 	write(c, s, "guess_gate_chi2", guess_gate_chi2,
 		"failure when the estimate's Mahalanobis^2 from the initial guess exceeds this (21.1: 99.99% for 3 dof; 0 = off)");
 	write(c, s, "covariance_inflation", covariance_inflation,

@@ -27,8 +27,8 @@ ReferencePolyline::Query::Query(double qx, double qy)
 {
 }
 
-void ReferencePolyline::build(
-	const ScanPoints& s, const std::vector<ScanSegment>& segments, unsigned int lineHalfWindow)
+void ReferencePolyline::build(const ScanPoints& s, const std::vector<ScanSegment>& segments,
+	unsigned int lineHalfWindow, double targetDirectionSigma)
 {
 	m_points.clear();
 	m_joined.clear();
@@ -119,9 +119,23 @@ void ReferencePolyline::build(
 				scatter.add(p.x, p.y);
 				(left ? lo : hi) = next;
 			};
+			// Past lineHalfWindow a line grows on while its direction is
+			// known worse than targetDirectionSigma: with dense beams (0.25
+			// deg) and 3 cm noise, 13 points span 10 cm and leave the
+			// direction +-14 deg, and no line would pass
+			// max_line_direction_sigma.
+			const unsigned int most =
+				targetDirectionSigma > 0 ? kLongestLineFactor * lineHalfWindow : lineHalfWindow;
+			const double noise = std::max(1e-3, m_rangeNoise);
 			bool left = true, right = true;
-			for (unsigned int w = 0; w < lineHalfWindow && (left || right); w++)
+			for (unsigned int w = 0; w < most && (left || right); w++)
 			{
+				if (w >= lineHalfWindow)
+				{
+					const double gap = scatter.line().gap;
+					if (gap > 0 && noise * noise <= targetDirectionSigma * targetDirectionSigma * gap)
+						break;
+				}
 				grow(left, true);
 				grow(right, false);
 			}

@@ -62,5 +62,6 @@ class IdcMatcher : public ScanMatcher
 	ScanPoints m_builtReference;
 	AdaptiveBreakpointSegmenter::Parameters m_builtSegmentation;
 	unsigned int m_builtLineHalfWindow = 0;
+	double m_builtLineTarget = -1;
 };
 }  // namespace featloc

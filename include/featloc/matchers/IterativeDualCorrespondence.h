@@ -112,6 +112,17 @@ class IterativeDualCorrespondence
 		 * if the line's direction is known this well
 		 * (ReferencePolyline::directionSigma) [rad]. */
 		double max_line_direction_sigma = mrpt::DEG2RAD(5.0);
+		/** point_to_line: a local line whose direction is still known worse
+		 * than max_line_direction_sigma after line_half_window neighbours a
+		 * side grows on until it is not (up to
+		 * ReferencePolyline::kLongestLineFactor times as many), instead of
+		 * being left out: dense, noisy scans. */
+		bool grow_lines_to_direction_sigma = true;
+		/** The target ReferencePolyline::build grows local lines to [rad]. */
+		double lineTargetDirectionSigma() const
+		{
+			return grow_lines_to_direction_sigma ? max_line_direction_sigma : 0.0;
+		}
 		double guess_gate_chi2 = 21.1;	//!< 99.99% for 3 dof; 0 = off
 		double covariance_inflation = 1.2;  //!< variance scale of Censi's formula
 		double min_range_sigma = 0.005;	 //!< [m] covariance noise floor

@@ -63,10 +63,14 @@ class ReferencePolyline
 	};
 
 	/** Keeps the points of `segments` (in order), edges inside each, and
-	 * fits each edge's LocalLine. */
-	void build(
-		const ScanPoints& points, const std::vector<ScanSegment>& segments,
-		unsigned int lineHalfWindow = 6);
+	 * fits each edge's LocalLine. With targetDirectionSigma > 0 [rad] a
+	 * line whose direction sigma (directionSigma()) is still above it after
+	 * lineHalfWindow neighbours a side grows on, up to kLongestLineFactor
+	 * times that, while the points fit: dense noisy scans need more points
+	 * for the same direction. */
+	void build(const ScanPoints& points, const std::vector<ScanSegment>& segments,
+		unsigned int lineHalfWindow = 6, double targetDirectionSigma = 0);
+	static constexpr unsigned int kLongestLineFactor = 8;
 
 	size_t size() const { return m_points.size(); }
 	const ScanPoint& point(uint32_t i) const { return m_points[i]; }

@@ -10,6 +10,7 @@
 #include "featloc/matchers/CorrelativeScanSearch.h"
 #include "featloc/matchers/MatchInspection.h"
 #include "featloc/matchers/MatchResult.h"
+#include "featloc/scan/AdaptiveBreakpointSegmenter.h"
 #include "featloc/scan/RangeLattice.h"
 #include "featloc/scan/ScanPoints.h"
 
@@ -141,6 +142,24 @@ class ScanMatcher : public mrpt::rtti::CObject
 	 * matchPoints(). Set by the match() of observations; 0 in the match()
 	 * of points, which are matched as they are. */
 	double rangeLatticeStep() const { return m_rangeLatticeStep; }
+	/** `p` for this match's scans: a range lattice left in the readings
+	 * (not dequantized) is not range noise, so eq. (3)'s sigma_r is not
+	 * estimated from them (its steps would widen every bound by 3 x step /
+	 * sqrt(12) and join surfaces across their depth jumps). */
+	AdaptiveBreakpointSegmenter::Parameters segmentationFor(
+		AdaptiveBreakpointSegmenter::Parameters p) const
+	{
+		if (m_rangeLatticeStep > 0 && !m_dequantizeRanges) p.sigmaFromScan = false;
+		return p;
+	}
+	/** The same for the direction sigma local lines grow to
+	 * (grow_lines_to_direction_sigma): on a lattice left in the readings the
+	 * range noise estimated from them is the lattice's, and lines grown to
+	 * it span its arcs. 0: no growth. */
+	double lineGrowthTargetFor(double target) const
+	{
+		return m_rangeLatticeStep > 0 && !m_dequantizeRanges ? 0.0 : target;
+	}
 	/** The least range noise [m] a covariance of this match may assume:
 	 * the lattice's cell, rangeLatticeStep() / sqrt(12) (0 without one).
 	 * Readings put back on their surfaces lie nearer than that, but their

@@ -30,6 +30,13 @@ namespace featloc
  * line put a corridor's matches 10 cm off along it. A beam lost on a
  * surface (a dropout) splits that surface in two, which costs little.
  *
+ * featloc: with sigmaFromScan, sigma_r is at least the scan's own range
+ * noise (PointNoiseEstimator::rangeNoise over the whole scan, chords of 10
+ * cm; corners and depth jumps are outliers to its median). With a fixed
+ * 5 mm a 0.25 deg Hokuyo at 3 cm noise had its walls cut into segments of
+ * a few points (neighbours 4 cm apart in range against a 4 cm bound), too
+ * short for any local line to know its direction.
+ *
  * Every point ends in exactly one segment (isolated points are one-point
  * segments): the IDC reference polyline joins consecutive points of a
  * segment only; CF-IDC drops segments that are too small itself. */
@@ -41,11 +48,13 @@ class AdaptiveBreakpointSegmenter
 		double lambda = mrpt::DEG2RAD(10.0);  //!< [rad] lambda of eq. (3)
 		double sigma_r = 0.005;	 //!< [m] sigma_r of eq. (3)
 		bool breakAtMissingReturns = true;	//!< featloc (false: the paper)
+		bool sigmaFromScan = false;	 //!< featloc, off by default (doc/config-reference.md)
 
 		bool operator==(const Parameters& o) const
 		{
 			return lambda == o.lambda && sigma_r == o.sigma_r &&
-				breakAtMissingReturns == o.breakAtMissingReturns;
+				breakAtMissingReturns == o.breakAtMissingReturns &&
+				sigmaFromScan == o.sigmaFromScan;
 		}
 
 		void loadFromConfigFile(
@@ -63,12 +72,17 @@ class AdaptiveBreakpointSegmenter
 	void segment(const ScanPoints& points, std::vector<ScanSegment>& out) const;
 
 	/** True when eq. (3) puts a breakpoint between points a and b (b after
-	 * a). */
+	 * a), with params.sigma_r (or, after segment(), the sigma_r it used). */
 	bool isBreakpoint(const ScanPoint& a, const ScanPoint& b) const;
 
+	/** The sigma_r the last segment() used [m]. */
+	double lastSigmaR() const { return m_sigmaR >= 0 ? m_sigmaR : params.sigma_r; }
+
 	Parameters params;
+	static constexpr double kNoiseChord = 0.10;	 //!< [m] chords of the noise estimate
 
    private:
 	mutable double m_lastDphi = -1, m_lastRatio = 0;  // eq. (3) for the last dphi
+	mutable double m_sigmaR = -1;  // segment()'s sigma_r (-1: params.sigma_r)
 };
 }  // namespace featloc
