@@ -36,19 +36,18 @@ void IdcMatcher::buildReference(const ScanPoints& reference)
 	// and the second run of the iterations when coarse_confirm_share sends
 	// a match to the coarse search.
 	const AdaptiveBreakpointSegmenter::Parameters segmentation = segmentationFor(params.segmentation);
+	const double lineTarget = lineGrowthTargetFor(params.idc.lineTargetDirectionSigma());
 	if (m_built && m_builtSegmentation == segmentation &&
-		m_builtLineHalfWindow == params.idc.line_half_window &&
-		m_builtLineTarget == lineGrowthTargetFor(params.idc.lineTargetDirectionSigma()) &&
+		m_builtLineHalfWindow == params.idc.line_half_window && m_builtLineTarget == lineTarget &&
 		m_builtReference.samePointsAs(reference))
 		return;
 	AdaptiveBreakpointSegmenter(segmentation).segment(reference, m_segments);
-	m_polyline.build(reference, m_segments, params.idc.line_half_window,
-		lineGrowthTargetFor(params.idc.lineTargetDirectionSigma()));
+	m_polyline.build(reference, m_segments, params.idc.line_half_window, lineTarget);
 	m_built = true;
 	m_builtReference = reference;
 	m_builtSegmentation = segmentation;
 	m_builtLineHalfWindow = params.idc.line_half_window;
-	m_builtLineTarget = lineGrowthTargetFor(params.idc.lineTargetDirectionSigma());
+	m_builtLineTarget = lineTarget;
 }
 
 void IdcMatcher::matchPoints(

@@ -88,7 +88,7 @@ void ReferencePolyline::build(const ScanPoints& s, const std::vector<ScanSegment
 	// noise, estimated on chords of 10 cm at least as dense points would
 	// understate it, is what a line's direction sigma rests on: a line must
 	// not claim a direction better known than it is.
-	m_rangeNoise = m_noise.rangeNoise(m_points, m_segments, kNoiseChord);
+	m_rangeNoise = m_noise.rangeNoise(m_points, m_segments, PointNoiseEstimator::kRangeNoiseChord);
 	const double scatter2 = mrpt::square(std::max(1e-3, m_noise.estimate(m_points, m_segments)));
 	m_lines.assign(m_points.size(), LocalLine());
 	for (const auto& seg : m_segments)

@@ -64,7 +64,7 @@ void AdaptiveBreakpointSegmenter::segment(
 	{
 		const std::vector<ScanSegment> whole{{0, static_cast<uint32_t>(n - 1)}};
 		m_sigmaR = std::max(m_sigmaR,
-			PointNoiseEstimator().rangeNoise(points.points, whole, kNoiseChord));
+			PointNoiseEstimator().rangeNoise(points.points, whole, PointNoiseEstimator::kRangeNoiseChord));
 	}
 	ScanSegment cur;
 	cur.first = 0;

@@ -84,7 +84,8 @@ class ReferencePolyline
 	 * line, whose points then scatter less across it. */
 	double directionSigma(uint32_t i) const;
 	/** The range noise estimated when building [m]
-	 * (PointNoiseEstimator::rangeNoise, chords of kNoiseChord at least). */
+	 * (PointNoiseEstimator::rangeNoise, chords of
+	 * PointNoiseEstimator::kRangeNoiseChord at least). */
 	double rangeNoise() const { return m_rangeNoise; }
 
 
@@ -104,7 +105,6 @@ class ReferencePolyline
 	bool closestPoint(const Query& q, double maxDistance, Hit& hit, uint32_t hint = kNoHint) const;
 	bool matchingRangePoint(const Query& q, double window, Hit& hit, uint32_t hint = kNoHint) const;
 	static constexpr uint32_t kNoHint = 0xffffffffu;
-	static constexpr double kNoiseChord = 0.10;	 //!< [m]
 
    private:
 	/** Visits the points and edges outwards from `bearing` on both sides:

@@ -149,7 +149,7 @@ class ScanMatcher : public mrpt::rtti::CObject
 	AdaptiveBreakpointSegmenter::Parameters segmentationFor(
 		AdaptiveBreakpointSegmenter::Parameters p) const
 	{
-		if (m_rangeLatticeStep > 0 && !m_dequantizeRanges) p.sigmaFromScan = false;
+		if (latticeLeftInReadings()) p.sigmaFromScan = false;
 		return p;
 	}
 	/** The same for the direction sigma local lines grow to
@@ -158,8 +158,10 @@ class ScanMatcher : public mrpt::rtti::CObject
 	 * it span its arcs. 0: no growth. */
 	double lineGrowthTargetFor(double target) const
 	{
-		return m_rangeLatticeStep > 0 && !m_dequantizeRanges ? 0.0 : target;
+		return latticeLeftInReadings() ? 0.0 : target;
 	}
+	/** This match's scans hold a range lattice that was not undone. */
+	bool latticeLeftInReadings() const { return m_rangeLatticeStep > 0 && !m_dequantizeRanges; }
 	/** The least range noise [m] a covariance of this match may assume:
 	 * the lattice's cell, rangeLatticeStep() / sqrt(12) (0 without one).
 	 * Readings put back on their surfaces lie nearer than that, but their

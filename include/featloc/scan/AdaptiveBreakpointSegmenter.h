@@ -79,7 +79,6 @@ class AdaptiveBreakpointSegmenter
 	double lastSigmaR() const { return m_sigmaR >= 0 ? m_sigmaR : params.sigma_r; }
 
 	Parameters params;
-	static constexpr double kNoiseChord = 0.10;	 //!< [m] chords of the noise estimate
 
    private:
 	mutable double m_lastDphi = -1, m_lastRatio = 0;  // eq. (3) for the last dphi

@@ -32,6 +32,9 @@ class PointNoiseEstimator
 	 * with 1 cm range noise it gives 0.6 cm. 0 with no usable point. */
 	double rangeNoise(const std::vector<ScanPoint>& points,
 		const std::vector<ScanSegment>& segments, double minChord);
+	/** [m] the minChord of rangeNoise() that the reference polyline and
+	 * the segmentation estimate a scan's range noise with. */
+	static constexpr double kRangeNoiseChord = 0.10;
 
    private:
 	double fromDeviations();
