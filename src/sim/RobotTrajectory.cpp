@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
@@ -60,7 +61,7 @@ RobotTrajectory RobotTrajectory::follow(
 			0.0, (std::cos(err) - std::cos(o.turn_in_place)) /
 				(1 - std::cos(o.turn_in_place)));
 		const double v = std::min(goal.speed * align, dist / dt);
-		traj.m_samples.push_back({pose, v, w});
+		traj.m_samples.push_back({pose, v, w, target});
 		pose = integrate(pose, v, w, dt);
 		traj.m_length += v * dt;
 		t += dt;
@@ -73,7 +74,7 @@ RobotTrajectory RobotTrajectory::follow(
 			throw std::runtime_error(msg.str());
 		}
 	}
-	traj.m_samples.push_back({pose, 0, 0});	 // at rest at the end
+	traj.m_samples.push_back({pose, 0, 0, wps.size() - 1});	 // at rest at the end
 	traj.m_duration = t;
 	return traj;
 }
@@ -129,15 +130,41 @@ RobotTrajectory RobotTrajectory::fromOptions(
 	else
 		yaw = mrpt::DEG2RAD(std::stod(o.initial_yaw));
 	RobotTrajectory traj = follow(wps, yaw, o);
+	if (o.path == "waypoints") traj.requireClearOf(world, "waypoints", 0);
 	if (o.kidnap_waypoints.empty()) return traj;
 	std::vector<Waypoint> kw;
 	for (const auto& r : o.kidnap_waypoints) kw.push_back({r[0], r[1], r.size() > 2 ? r[2] : o.speed});
 	auto second = std::make_shared<RobotTrajectory>(
 		follow(kw, std::atan2(kw[1].y - kw[0].y, kw[1].x - kw[0].x), o));
+	second->requireClearOf(world, "kidnap_waypoints", traj.m_duration);
 	traj.m_duration += second->m_duration;
 	traj.m_length += second->m_length;
 	traj.m_kidnapped = std::move(second);
 	return traj;
+}
+
+void RobotTrajectory::requireClearOf(const SimWorld& world, const char* key, double t0) const
+{
+	// Closer than this to a surface counts as touching it (rounding).
+	constexpr double kTouching = 1e-9;
+	for (size_t i = 0; i + 1 < m_samples.size(); i++)
+	{
+		const auto& a = m_samples[i].pose;
+		const auto& b = m_samples[i + 1].pose;
+		if (world.pathIsClear({a.x(), a.y()}, {b.x(), b.y()}, kTouching)) continue;
+		const size_t k = m_samples[i].target;
+		const Waypoint& from = m_waypoints[k - 1];
+		const Waypoint& to = m_waypoints[k];
+		std::ostringstream where;
+		where << std::fixed << std::setprecision(2) << "(" << b.x() << ", " << b.y()
+			  << ") at t = " << t0 + static_cast<double>(i + 1) * m_period << " s";
+		std::ostringstream msg;
+		msg << "[Robot] " << key << ": the robot's path goes through a wall or obstacle near "
+			<< where.str() << ", between waypoints " << k - 1 << " (" << from.x << ", " << from.y << ") and "
+			<< k << " (" << to.x << ", " << to.y
+			<< "); its scans would be taken from inside it. Move the waypoints into free space";
+		throw std::runtime_error(msg.str());
+	}
 }
 
 mrpt::poses::CPose2D RobotTrajectory::poseAt(double t) const

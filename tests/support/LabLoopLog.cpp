@@ -13,7 +13,7 @@ LabLoopLog LabLoopLog::simulate(
 	TrackedConfig c;
 	c.loadFile(std::string(FEATLOC_SOURCE_DIR) + "/worlds/lab.ini");
 	c.applyOverride("Robot:path=waypoints");
-	c.applyOverride("Robot:waypoints=[2 2; 12 2; 12 5; 9.5 5; 9.5 8.5; 2 8.5; 2 2]");
+	c.applyOverride("Robot:waypoints=[2 2; 12 2; 12 3.8; 9.5 3.8; 9.5 8.5; 2 8.5; 2 2]");
 	c.applyOverride("Simulation:seed=" + std::to_string(seed));
 	for (const auto& o : overrides) c.applyOverride(o);
 	auto sc = SimConfiguration::load(c);

@@ -7,7 +7,9 @@
 namespace featloc::test
 {
 /** A featloc-sim log of worlds/lab.ini's loop around the lab
- * (2 2 -> 12 2 -> 12 5 -> 9.5 5 -> 9.5 8.5 -> 2 8.5 -> 2 2) with `seed`,
+ * (2 2 -> 12 2 -> 12 3.8 -> 9.5 3.8 -> 9.5 8.5 -> 2 8.5 -> 2 2; clear of
+ * the obstacles: the loop through 12 5 drove through the slanted box and
+ * took 18 scans from inside it) with `seed`,
  * config overrides ("Section:key=value") on top, written into `folder`. */
 struct LabLoopLog
 {

@@ -29,7 +29,11 @@ class RobotTrajectory
 		const std::vector<Waypoint>& waypoints, double initialYaw,
 		const RobotPathOptions& options);
 
-	/** The trajectory [Robot] describes (waypoints or exploration). */
+	/** The trajectory [Robot] describes (waypoints or exploration).
+	 * Throws std::runtime_error, naming the key, when the path driven
+	 * through [Robot] waypoints or kidnap_waypoints goes through a static
+	 * wall or obstacle of `world` (its scans would be taken from inside
+	 * it: a log no real robot could record). */
 	static RobotTrajectory fromOptions(
 		const RobotPathOptions& options, const SimWorld& world,
 		mrpt::random::CRandomGenerator& rng);
@@ -49,7 +53,12 @@ class RobotTrajectory
 	{
 		mrpt::poses::CPose2D pose;	//!< at the start of the period
 		double v, w;  //!< controls during the period
+		size_t target;	//!< index of the waypoint driven to
 	};
+	/** Throws (see fromOptions) where the driven path crosses or touches a
+	 * static wall or obstacle; `key` names the waypoints, `t0` is the
+	 * path's start in the run. */
+	void requireClearOf(const SimWorld& world, const char* key, double t0) const;
 	/** The path driven after the kidnapping (from time kidnapTime()). */
 	std::shared_ptr<const RobotTrajectory> m_kidnapped;
 	mrpt::poses::CPose2D ownPoseAt(double t) const;
