@@ -12,10 +12,17 @@
 #    orebro is a calibration log, and it has no odometry: constant-velocity
 #    prior, steps up to 3 m), the held-out corridor with people, seeds 1-6.
 #  - Each cell: ATE rmse [mm] / failed matches, kept | replaced.
-# Usage: scripts/bench-keyframe-after-failure.sh [OUTDIR]   (about 10 min on 2 cores)
+#  - With --factor (after OUTDIR): the keyframe kept, and
+#    [Pipeline] failed_match_keyframe_factor 1 | 2 instead ("Issue 15,
+#    twenty-first session": each cell factor 1 | factor 2, the default).
+# Usage: scripts/bench-keyframe-after-failure.sh [OUTDIR [--factor]]   (about 10 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-keyframe-after-failure "$@"
+SWITCH="Pipeline:failed_match_keeps_keyframe"; VALUES=(true false); WHAT="keyframe kept | replaced after a failure"
+if [ "${2:-}" = "--factor" ]; then
+  SWITCH="Pipeline:failed_match_keyframe_factor"; VALUES=(1 2); WHAT="failed_match_keyframe_factor 1 | 2"
+fi
 
 MATCHERS=(IcpMatcher PcmFeatureMatcher IdcMatcher CfIdcMatcher)
 
@@ -33,7 +40,7 @@ logs=(bundled office lab)
 logs+=(seed1 seed2 seed3 seed4 seed5 seed6)
 for est in matcher ekf; do
   echo
-  echo "### Whole runs, estimator = $est: ATE rmse [mm] / failed matches, keyframe kept | replaced after a failure"
+  echo "### Whole runs, estimator = $est: ATE rmse [mm] / failed matches, $WHAT"
   echo
   printf '| log |'; printf ' %s |' "${MATCHERS[@]}"; echo
   printf '|---|'; printf -- '---|%.0s' "${MATCHERS[@]}"; echo
@@ -47,9 +54,9 @@ for est in matcher ekf; do
     row="| $log |"
     for m in "${MATCHERS[@]}"; do
       cell=""
-      for keep in true false; do
+      for keep in "${VALUES[@]}"; do
         cell="$cell${cell:+ | }$(run "${log// /-}-$est-$m-$keep" "$in" "$gt" --set "ScanMatcher:class=featloc::$m" \
-          --set "Pipeline:estimator=$est" --set "Pipeline:failed_match_keeps_keyframe=$keep")"
+          --set "Pipeline:estimator=$est" --set "$SWITCH=$keep")"
       done
       row="$row ${cell/ | / \\| } |"
     done

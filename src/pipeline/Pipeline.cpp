@@ -108,6 +108,7 @@ RunStats Pipeline::run(
 	}
 	stats.globalStart = m_options.global_start;
 	m_keyframeScan.reset();
+	m_previousMatchFailed = false;
 	m_odometryCheck = OdometryCovarianceCheck(
 		m_odometry.covariance_check_window, m_odometry.covariance_check_quantile);
 	m_velocityPrior = ConstantVelocityPrior(m_odometry.no_odometry_velocity_window);
@@ -224,8 +225,14 @@ bool Pipeline::isNewKeyframe(const MatchResult* match) const
 	const mrpt::poses::CPose2D m = match && match->success
 		? match->estimate.mean
 		: m_estimator->pose().mean - m_estimator->currentKeyframePose().value_or(m_keyframePose);
-	return (m_options.keyframe_distance > 0 && m.norm() >= m_options.keyframe_distance) ||
-		(m_options.keyframe_angle > 0 && std::abs(m.phi()) >= m_options.keyframe_angle);
+	// After a failure that follows a good match: further, so the next good
+	// match still measures the failed step (failed_match_keyframe_factor).
+	// In a streak of failures the reference is what fails: as usual.
+	const double factor = match && !match->success && !m_previousMatchFailed
+		? m_options.failed_match_keyframe_factor
+		: 1.0;
+	return (m_options.keyframe_distance > 0 && m.norm() >= factor * m_options.keyframe_distance) ||
+		(m_options.keyframe_angle > 0 && std::abs(m.phi()) >= factor * m_options.keyframe_angle);
 }
 
 void Pipeline::processStep(
@@ -313,10 +320,12 @@ void Pipeline::processStep(
 		if (inMap.event == "found")	 // the estimator restarted
 		{
 			m_keyframeScan.reset();
+			m_previousMatchFailed = false;
 			m_velocityPrior.clear();
 		}
 	}
 	const bool keyframe = step.scan && (!m_keyframeScan || isNewKeyframe(matchPtr));
+	if (matchPtr) m_previousMatchFailed = !matchPtr->success;
 	if (keyframe)
 	{
 		m_keyframeScan = step.scan;

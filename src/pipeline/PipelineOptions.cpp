@@ -43,6 +43,8 @@ void PipelineOptions::loadFromConfigFile(
 	require(keyframe_distance >= 0, c, s, "keyframe_distance", ">= 0");
 	require(keyframe_angle >= 0, c, s, "keyframe_angle_DEG", ">= 0");
 	read(c, s, "failed_match_keeps_keyframe", failed_match_keeps_keyframe);
+	read(c, s, "failed_match_keyframe_factor", failed_match_keyframe_factor);
+	require(failed_match_keyframe_factor >= 1, c, s, "failed_match_keyframe_factor", ">= 1");
 }
 
 mrpt::poses::CPosePDFGaussian PipelineOptions::initialPose() const
@@ -85,5 +87,9 @@ void PipelineOptions::saveToConfigFile(
 	write(c, s, "failed_match_keeps_keyframe", failed_match_keeps_keyframe,
 		"true: a failed match keeps the reference scan (the next good match corrects the "
 		"failed steps); false: its scan becomes the reference");
+	write(c, s, "failed_match_keyframe_factor", failed_match_keyframe_factor,
+		"failed_match_keeps_keyframe: after a failed match the reference is replaced when the "
+		"estimate's motion since it reaches this many times keyframe_distance / "
+		"keyframe_angle_DEG (1: as after a good match)");
 }
 }  // namespace featloc

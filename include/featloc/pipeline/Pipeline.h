@@ -83,6 +83,9 @@ class Pipeline
 	/** The format #1 odometry step that ended at the keyframe scan (zero
 	 * otherwise), for OdometrySamplingOffset. */
 	mrpt::poses::CPose2D m_keyframeActionStep;
+	/** The match before this step's failed (failed_match_keyframe_factor
+	 * applies to a failure after a good match only). */
+	bool m_previousMatchFailed = false;
 	OdometryCovarianceCheck m_odometryCheck;
 	/** Steps without odometry: the estimates' recent velocity. */
 	ConstantVelocityPrior m_velocityPrior;

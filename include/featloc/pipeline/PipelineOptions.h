@@ -53,6 +53,15 @@ struct PipelineOptions : public mrpt::config::CLoadableOptions
 	 * step stays in the estimate (doc/benchmarks.md, "Issue 15, eleventh
 	 * session"). Ignored with every scan a keyframe. */
 	bool failed_match_keeps_keyframe = true;
+	/** With failed_match_keeps_keyframe: after a failed match the
+	 * reference is replaced only when the estimate's motion since it
+	 * reaches this many times keyframe_distance or keyframe_angle. At 1 a
+	 * failed scan in a turn (15 deg a scan) that reaches keyframe_angle
+	 * became the reference with its step's odometry error, although the
+	 * next scan's match, one step further, would measure that step; the
+	 * factor bounds how far behind the reference falls in a streak of
+	 * failures (doc/benchmarks.md, "Issue 15, twenty-first session"). */
+	double failed_match_keyframe_factor = 2.0;
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& c,
