@@ -218,7 +218,8 @@ bool Pipeline::isNewKeyframe(const MatchResult* match) const
 	// counting a gated match as failed (new keyframe), or using the
 	// estimate's motion instead, were both measured worse on most logs
 	// (doc/benchmarks.md, "Keyframe decision after a gated match").
-	if (match && !match->success && !m_options.failed_match_keeps_keyframe) return true;
+	const bool failed = match && !match->success;
+	if (failed && !m_options.failed_match_keeps_keyframe) return true;
 	// Without a match (the odometry estimator) or after a failed one, the
 	// estimate's own motion since the keyframe decides: otherwise every
 	// scan would be a keyframe, and map.simplemap would hold the whole log.
@@ -228,9 +229,8 @@ bool Pipeline::isNewKeyframe(const MatchResult* match) const
 	// After a failure that follows a good match: further, so the next good
 	// match still measures the failed step (failed_match_keyframe_factor).
 	// In a streak of failures the reference is what fails: as usual.
-	const double factor = match && !match->success && !m_previousMatchFailed
-		? m_options.failed_match_keyframe_factor
-		: 1.0;
+	const double factor =
+		failed && !m_previousMatchFailed ? m_options.failed_match_keyframe_factor : 1.0;
 	return (m_options.keyframe_distance > 0 && m.norm() >= factor * m_options.keyframe_distance) ||
 		(m_options.keyframe_angle > 0 && std::abs(m.phi()) >= factor * m_options.keyframe_angle);
 }
