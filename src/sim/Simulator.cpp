@@ -49,7 +49,13 @@ Simulator::Simulator(
 	  m_beacons(std::move(beacons)),
 	  m_stereo(std::move(stereo))
 {
-	rng().randomize(m_sim.seed);
+	// A fresh generator, not rng().randomize(seed): MRPT 2.5's randomize()
+	// reseeds the Mersenne twister but keeps its std::normal_distribution,
+	// which holds the second value of its last pair of Gaussians. Whatever
+	// drew an odd number of them before (an earlier simulation in the same
+	// process) then shifted every Gaussian of this one: the same seed gave
+	// another log (a test's figures changed with the tests run before it).
+	rng() = mrpt::random::CRandomGenerator(m_sim.seed);
 	// Beacons draw from their own sequence: adding them to a world leaves
 	// its laser and odometry exactly as they were (same seed, same draws).
 	m_beaconRng.randomize(m_sim.seed + 0x9e3779b9u);
