@@ -23,7 +23,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-cfidc "$@"
 
 # As published, as far as switches go (doc/cfidc-matcher.md).
-PAPER_IDC="coarse_search=false;dequantize_ranges=false;final_phase=idc;breakpoint_at_missing_returns=false;guess_gate_chi2=0;max_translation_sigma=1e9;max_rotation_sigma_DEG=1e9"
+PAPER_IDC="coarse_search=false;dequantize_ranges=false;final_phase=idc;breakpoint_at_missing_returns=false;breakpoint_sigma_r_from_scan=false;guess_gate_chi2=0;max_translation_sigma=1e9;max_rotation_sigma_DEG=1e9"
 PAPER_CFIDC="$PAPER_IDC;fallback_class=;pairing_gate=false;pairing_fallback=false;segment_gate=0;curvature_sampling=normalized"
 MATCHERS="IDC as published=featloc::IdcMatcher{$PAPER_IDC},CF-IDC as published=featloc::CfIdcMatcher{$PAPER_CFIDC},IDC + featloc=featloc::IdcMatcher,CF-IDC + featloc=featloc::CfIdcMatcher,IcpMatcher=featloc::IcpMatcher"
 ERRORS="--perturbation gaussian --perturb-xy 0.05 --perturb-yaw-deg 5 --seed 1"

@@ -386,7 +386,10 @@ TEST(ScanMatcherFallback, AWeakMatchIsReplacedByTheFallbacksUnambiguousOne)
 // 4 of 38 points near the reference and it fails; IDC, which keeps the
 // small segments and isolated points, makes the match within the reference
 // poses' own few centimetres. The paper's CF-IDC (fallback_class empty)
-// fails as before.
+// fails as before. With the paper's fixed sigma_r in the segmentation
+// (breakpoint_sigma_r_from_scan = false): with sigma_r from the scan the
+// segments grow, CF-IDC makes this match itself (within the reference's
+// centimetres) and the pair no longer tests the fallback.
 TEST(ScanMatcherFallback, CfIdcsFailureOnARealLogIsMadeByIdc)
 {
 	mrpt::obs::CObservation2DRangeScan ref, cur;
@@ -396,11 +399,12 @@ TEST(ScanMatcherFallback, CfIdcsFailureOnARealLogIsMadeByIdc)
 	const auto guess = diagonalPoseGaussian(
 		CPose2D(1.105932, -0.118864, 0.053165), 0.3 * a, mrpt::DEG2RAD(10.0) * a);
 
-	const MatchResult own = fromIni("featloc::CfIdcMatcher", "[ScanMatcher.CfIdcMatcher]\nfallback_class =\n")->match(ref, cur, guess);
+	const std::string fixedSigma = "[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\n";
+	const MatchResult own = fromIni("featloc::CfIdcMatcher", fixedSigma + "fallback_class =\n")->match(ref, cur, guess);
 	EXPECT_FALSE(own.success);
 	EXPECT_NE(own.failureReason.find("too few pairs"), std::string::npos) << own.failureReason;
 
-	auto cfIdc = fromIni("featloc::CfIdcMatcher", "");
+	auto cfIdc = fromIni("featloc::CfIdcMatcher", fixedSigma);
 	ASSERT_TRUE(cfIdc->fallback());
 	EXPECT_EQ(cfIdc->fallback()->className(), "featloc::IdcMatcher");
 	const MatchResult r = cfIdc->match(ref, cur, guess);

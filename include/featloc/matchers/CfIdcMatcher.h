@@ -91,6 +91,10 @@ class CfIdcMatcher : public ScanMatcher
 
 	struct Parameters : public mrpt::config::CLoadableOptions
 	{
+		// featloc, as in IdcMatcher: sigma_r at least the scan's own range
+		// noise (breakpoint_sigma_r_from_scan = false: the paper).
+		Parameters() { segmentation.sigmaFromScan = true; }
+
 		AdaptiveBreakpointSegmenter::Parameters segmentation;
 		unsigned int min_segment_points = 5;
 		CurvatureFunction::Parameters curvature;

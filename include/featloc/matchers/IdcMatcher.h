@@ -23,6 +23,11 @@ class IdcMatcher : public ScanMatcher
    public:
 	struct Parameters : public mrpt::config::CLoadableOptions
 	{
+		// featloc: eq. (3)'s sigma_r at least the scan's own range noise
+		// (breakpoint_sigma_r_from_scan; doc/benchmarks.md, "Issue 15,
+		// twenty-second session"). The paper's fixed sigma_r: false.
+		Parameters() { segmentation.sigmaFromScan = true; }
+
 		AdaptiveBreakpointSegmenter::Parameters segmentation;
 		IterativeDualCorrespondence::Parameters idc;
 

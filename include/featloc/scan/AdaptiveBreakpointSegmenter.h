@@ -48,7 +48,7 @@ class AdaptiveBreakpointSegmenter
 		double lambda = mrpt::DEG2RAD(10.0);  //!< [rad] lambda of eq. (3)
 		double sigma_r = 0.005;	 //!< [m] sigma_r of eq. (3)
 		bool breakAtMissingReturns = true;	//!< featloc (false: the paper)
-		bool sigmaFromScan = false;	 //!< featloc, off by default (doc/config-reference.md)
+		bool sigmaFromScan = false;	 //!< featloc (IDC and CF-IDC turn it on; doc/config-reference.md)
 
 		bool operator==(const Parameters& o) const
 		{
