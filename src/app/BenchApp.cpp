@@ -432,7 +432,8 @@ int BenchApp::main(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argMatchers("m", "matchers",
 		"Comma-separated matchers, each [LABEL=]CLASS[{key=value;...}]: the class, "
 		"its [ScanMatcher.<Class>] parameters with the overrides on top, and the "
-		"label of its rows",
+		"label of its rows; a key ScanMatcher.<Other>:key sets one of another matcher's "
+		"section, which the matcher's fallback_class reads",
 		false,
 		"featloc::PcmFeatureMatcher,featloc::IcpMatcher", "CLASSES", cmd);
 	TCLAP::ValueArg<std::string> argReference("", "reference-matcher",

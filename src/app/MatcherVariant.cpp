@@ -4,6 +4,7 @@
 
 #include "featloc/app/UsageError.h"
 #include "featloc/config/TrackedConfig.h"
+#include "featloc/core/ConfigError.h"
 #include "featloc/matchers/ScanMatcherFactory.h"
 
 namespace featloc
@@ -90,8 +91,37 @@ ScanMatcher::Ptr MatcherVariant::create(TrackedConfig& cfg) const
 	}
 	if (text.find("[" + section + "]\n") == std::string::npos) text += "[" + section + "]\n";
 	own.loadText(text, cfg.sourceName());
-	for (const auto& [k, value] : overrides) own.applyOverride(section + ":" + k + "=" + value);
+	// "SECTION:key" sets a key of another matcher's section, the one its
+	// fallback_class reads (e.g. CF-IDC's IDC fallback): a variant of a
+	// matcher with a fallback is then one configuration, whatever the ini
+	// has in that section.
+	std::vector<std::pair<std::string, std::string>> elsewhere;
+	for (const auto& [k, value] : overrides)
+	{
+		const auto colon = k.find(':');
+		if (colon == std::string::npos)
+		{
+			own.applyOverride(section + ":" + k + "=" + value);
+			continue;
+		}
+		const std::string sec = k.substr(0, colon);
+		if (sec.rfind(std::string(ScanMatcherFactory::kSection) + ".", 0) != 0)
+			throw UsageError("matcher '" + label + "': override '" + k +
+				"' names a section that is not a matcher's ([" + ScanMatcherFactory::kSection +
+				".<Class>])");
+		own.applyOverride(k + "=" + value);
+		elsewhere.emplace_back(sec, k.substr(colon + 1));
+	}
 	m->loadParams(own, section);
+	// An override of another section that neither the matcher nor its
+	// fallback read is as much an error as one of its own.
+	const auto unread = own.unreadKeys();
+	for (const auto& [sec, key] : elsewhere)
+		for (const auto& [us, uk] : unread)
+			if (mrpt::system::lowerCase(us) == mrpt::system::lowerCase(sec) &&
+				mrpt::system::lowerCase(uk) == mrpt::system::lowerCase(key))
+				throw ConfigError("matcher '" + label + "': override [" + sec + "] " + key +
+					" is read neither by " + className + " nor by its fallback");
 	for (const auto& sec : sections)
 		if (sec != section) own.acceptSection(sec);
 	own.requireAllKeysRead();

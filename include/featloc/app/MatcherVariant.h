@@ -26,8 +26,11 @@ struct MatcherVariant
 	static std::vector<MatcherVariant> parseList(const std::string& text);
 
 	/** The matcher with its parameters: from `cfg` (keys marked read there),
-	 * the overrides applied to a copy of the section. Throws ConfigError
-	 * for an unknown class or an override key the class does not read. */
+	 * the overrides applied to a copy of the section; an override
+	 * "ScanMatcher.<Other>:key=value" sets a key of another matcher's
+	 * section, for the matcher's fallback_class. Throws ConfigError for an
+	 * unknown class or an override key neither the class nor its fallback
+	 * reads. */
 	ScanMatcher::Ptr create(TrackedConfig& cfg) const;
 };
 }  // namespace featloc
