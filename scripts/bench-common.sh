@@ -164,16 +164,19 @@ sim_corridor_seeds() {
 # (featloc-eval B --paired-with A: mean RPE difference [mm] with its 95%
 # interval; the steps only one gets off by > 10 cm or 2 deg, McNemar's p).
 # Runs in $OUT/LOG-EST-A and $OUT/LOG-EST-B; further arguments go to both.
+# A "--set of" may hold several Section:key=value, separated by spaces.
 whole_runs_two_ways() { # est, seeds, label A, --set of A, label B, --set of B, featloc-run args...
-  local est="$1" seeds="$2" a="$3" set_a="$4" b="$5" set_b="$6" cases=() c name input gt ref s f
+  local est="$1" seeds="$2" a="$3" b="$5" cases=() c name input gt ref s f kv set_a=() set_b=()
+  for kv in $4; do set_a+=(--set "$kv"); done
+  for kv in $6; do set_b+=(--set "$kv"); done
   shift 6
   cases=("bundled::$ROOT/rawlogs/mrpt-simul/simul.gt.txt")
   for s in $seeds; do cases+=("corridor-seed$s:$OUT/corridor-people-seed$s.rawlog:$OUT/corridor-people-seed$s.gt.txt"); done
   for f in $(held_out_radish_logs); do cases+=("$(basename "$f" -corrected.log.gz):$f:"); done
   for c in "${cases[@]}"; do
     IFS=: read -r name input gt <<< "$c"
-    bench_featloc_run "$name-$est-$a" "$input" "$gt" --set "Pipeline:estimator=$est" "$@" --set "$set_a"
-    bench_featloc_run "$name-$est-$b" "$input" "$gt" --set "Pipeline:estimator=$est" "$@" --set "$set_b"
+    bench_featloc_run "$name-$est-$a" "$input" "$gt" --set "Pipeline:estimator=$est" "$@" "${set_a[@]}"
+    bench_featloc_run "$name-$est-$b" "$input" "$gt" --set "Pipeline:estimator=$est" "$@" "${set_b[@]}"
     ref="$gt"
     if [ -z "$ref" ]; then
       ref="$OUT/$name.reference.txt"

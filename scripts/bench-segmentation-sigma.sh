@@ -6,22 +6,24 @@
 # since that session).
 #  - Per pair (featloc-bench, Borges & Aldon's protocol +-0.3 m / +-10 deg,
 #    seed 1, every pair counted, off and on side by side in one run with
-#    PCM and MRPT's ICP as the peers): the calibration scenes (office, lab
-#    at 1 cm; orebro), the held-out worlds with movers (corridor and hall
-#    with people, room and workshop with doors and carts), the three
+#    MRPT's ICP as the peer; PCM's off | on are its IDC fallback's): the
+#    calibration scenes (office, lab at 1 cm; orebro), the held-out worlds
+#    with movers (corridor and hall with people, room and workshop with
+#    doors and carts), the three
 #    held-out static worlds (apartment, warehouse, garage; frozen) at 1 cm
 #    and at 3 cm noise, the office at 3 cm, the corridor with people and the
 #    warehouse on MRPT's 0.16 m range lattice, and the five held-out Radish
 #    logs.
-#  - Whole runs (featloc-run as config.ini has it, IDC and CF-IDC each as
+#  - Whole runs (featloc-run as config.ini has it, PCM, IDC and CF-IDC each as
 #    the matcher, estimator = matcher and ekf, off | on): the bundled log,
 #    the corridor with people seeds 1-3, the held-out Radish logs.
+#  - PCM's and CF-IDC's IDC fallback is set as IDC is, in both.
 #  - With --probe (after OUTDIR): the same logs, IDC and CF-IDC with
 #    coarse_confirm_probe_sigma = 0.004 ("off": the probe only where the
 #    estimate's largest translation sigma reaches 4 mm) against 0 ("on":
 #    wherever the share confirms the guess), both with
 #    breakpoint_sigma_r_from_scan = true.
-# Usage: scripts/bench-segmentation-sigma.sh [OUTDIR [--probe]]   (about 11 min on 2 cores)
+# Usage: scripts/bench-segmentation-sigma.sh [OUTDIR [--probe]]   (about 16 min on 2 cores each)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-segmentation-sigma "$@"
@@ -31,8 +33,14 @@ KEY=breakpoint_sigma_r_from_scan OFF=false ON=true
 if [ "${2:-}" = "--probe" ]; then
   KEY=coarse_confirm_probe_sigma OFF=0.004 ON=0
 fi
-M="IcpMatcher (MRPT)=featloc::IcpMatcher,PCM=featloc::PcmFeatureMatcher"
-M="$M,IDC off=$IDC{$KEY=$OFF},IDC on=$IDC{$KEY=$ON},CF-IDC off=$CF{$KEY=$OFF},CF-IDC on=$CF{$KEY=$ON}"
+# CF-IDC's and PCM's IDC fallback ([ScanMatcher.IdcMatcher]) set the same
+# way as IDC itself: each variant is one configuration (PCM's own matching
+# has no such key; its off | on differ in the fallback alone).
+FB="ScanMatcher.IdcMatcher:$KEY"
+M="IcpMatcher (MRPT)=featloc::IcpMatcher"
+M="$M,PCM off=featloc::PcmFeatureMatcher{$FB=$OFF},PCM on=featloc::PcmFeatureMatcher{$FB=$ON}"
+M="$M,IDC off=$IDC{$KEY=$OFF},IDC on=$IDC{$KEY=$ON}"
+M="$M,CF-IDC off=$CF{$KEY=$OFF;$FB=$OFF},CF-IDC on=$CF{$KEY=$ON;$FB=$ON}"
 COMMON="--seed 1 -q --paired-with none"
 HEADER=--header
 PB=(--perturb-xy 0.3 --perturb-yaw-deg 10)
@@ -63,14 +71,16 @@ bench_held_out_radish_logs
 
 sim_corridor_seeds
 for est in matcher ekf; do
-  for m in IdcMatcher CfIdcMatcher; do
+  for m in PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
     echo
     echo "### Whole runs, $m, estimator = $est: ATE rmse [mm] / failed matches / fallback matches, $KEY $OFF | $ON"
     echo
     echo "| log | estimator | off | on | on against off: mean RPE difference [mm] (95%); steps off only on / only off, McNemar |"
     echo "|---|---|---|---|---|"
-    whole_runs_two_ways "$est" "1 2 3" "$m-$KEY-$OFF" "ScanMatcher.$m:$KEY=$OFF" \
-      "$m-$KEY-$ON" "ScanMatcher.$m:$KEY=$ON" --set "ScanMatcher:class=featloc::$m"
+    own_off="ScanMatcher.$m:$KEY=$OFF" own_on="ScanMatcher.$m:$KEY=$ON"
+    [ "$m" = PcmFeatureMatcher ] && own_off="" own_on=""
+    whole_runs_two_ways "$est" "1 2 3" "$m-$KEY-$OFF" "$own_off $FB=$OFF" \
+      "$m-$KEY-$ON" "$own_on $FB=$ON" --set "ScanMatcher:class=featloc::$m"
   done
 done
 echo

@@ -87,7 +87,11 @@ class CfIdcMatcher : public ScanMatcher
 	 * segments gave heading errors of 0.4-0.6 deg at the corridor's turn
 	 * and a matcher chain 3.5 times IDC's (doc/benchmarks.md, "Issue 15,
 	 * fourteenth session"). */
-	CfIdcMatcher() : ScanMatcher("featloc::IdcMatcher", false) {}
+	// The confirmation probe ungated, as IdcMatcher's.
+	CfIdcMatcher() : ScanMatcher("featloc::IdcMatcher", false)
+	{
+		coarseSearchOptions().confirmProbeSigma = 0;
+	}
 
 	struct Parameters : public mrpt::config::CLoadableOptions
 	{
