@@ -14,7 +14,7 @@
 #include "featloc/io/RawlogFileSource.h"
 #include "featloc/pipeline/Pipeline.h"
 #include "featloc/registerClasses.h"
-#include "support/EveryOtherFailingIdcMatcher.h"
+#include "support/ForcedFailureIdcMatcher.h"
 #include "support/LabLoopLog.h"
 #include "support/TempDir.h"
 
@@ -177,7 +177,7 @@ TEST(EkfEstimator, FollowsTheTruthWithinItsCovarianceWhenHalfTheMatchesFail)
 		po.estimator = "ekf";
 		po.keyframe_distance = 1.0;
 		po.keyframe_angle = mrpt::DEG2RAD(20.0);
-		auto matcher = std::make_shared<EveryOtherFailingIdcMatcher>();
+		auto matcher = ForcedFailureIdcMatcher::everyOther();
 		PoseEstimator::Ptr ekf = std::make_unique<EkfEstimator>(EkfOptions{});
 		PoseCollector collector;
 		Pipeline pipeline(InputOptions{}, OdometryOptions{}, po, std::move(ekf), matcher);

@@ -12,8 +12,7 @@
 #include "featloc/output/RunOutput.h"
 #include "featloc/pipeline/Pipeline.h"
 #include "featloc/eval/Trajectory.h"
-#include "support/EveryOtherFailingIdcMatcher.h"
-#include "support/StreakFailingIdcMatcher.h"
+#include "support/ForcedFailureIdcMatcher.h"
 #include "support/LabLoopLog.h"
 #include "support/TempDir.h"
 
@@ -81,8 +80,8 @@ TEST(PipelineKeyframe, AFailedMatchKeepsTheKeyframeSoTheNextMatchCorrectsTheFail
 
 		// Every other match failing, keyframe kept or replaced; then no
 		// failures at all.
-		const ChainRun k = runChain(rawlog, gt, true, std::make_shared<EveryOtherFailingIdcMatcher>());
-		const ChainRun r = runChain(rawlog, gt, false, std::make_shared<EveryOtherFailingIdcMatcher>());
+		const ChainRun k = runChain(rawlog, gt, true, ForcedFailureIdcMatcher::everyOther());
+		const ChainRun r = runChain(rawlog, gt, false, ForcedFailureIdcMatcher::everyOther());
 		const ChainRun n = runChain(rawlog, gt, true, std::make_shared<IdcMatcher>());
 		for (const ChainRun* run : {&k, &r})
 			EXPECT_GE(run->stats.matchFailures, run->stats.matchesAttempted / 2 - 1);
@@ -124,7 +123,7 @@ TEST(PipelineKeyframe, AStreakOfFailuresTakesKeyframesAtTheUsualThresholds)
 	for (const size_t firstFailing : {size_t(0), size_t(20)})
 	{
 		const ChainRun failing = runChain(log.rawlog, log.groundTruth, true,
-			std::make_shared<StreakFailingIdcMatcher>(firstFailing));
+			ForcedFailureIdcMatcher::from(firstFailing));
 		EXPECT_EQ(failing.stats.matchFailures, failing.stats.matchesAttempted - firstFailing);
 		EXPECT_GE(failing.stats.keyframes + 2, none.stats.keyframes) << "failing from " << firstFailing;
 		EXPECT_LE(failing.stats.keyframes, none.stats.keyframes + 2) << "failing from " << firstFailing;
