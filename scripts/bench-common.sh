@@ -166,9 +166,13 @@ sim_corridor_seeds() {
 # Runs in $OUT/LOG-EST-A and $OUT/LOG-EST-B; further arguments go to both.
 # A "--set of" may hold several Section:key=value, separated by spaces.
 whole_runs_two_ways() { # est, seeds, label A, --set of A, label B, --set of B, featloc-run args...
-  local est="$1" seeds="$2" a="$3" b="$5" cases=() c name input gt ref s f kv set_a=() set_b=()
-  for kv in $4; do set_a+=(--set "$kv"); done
-  for kv in $6; do set_b+=(--set "$kv"); done
+  local est="$1" seeds="$2" a="$3" b="$5" cases=() c name input gt ref s f kv words set_a=() set_b=()
+  # Split at spaces with read, not by an unquoted expansion: a value with
+  # [ ] or * would be matched against the files of the working directory.
+  read -r -a words <<< "$4"
+  for kv in "${words[@]}"; do set_a+=(--set "$kv"); done
+  read -r -a words <<< "$6"
+  for kv in "${words[@]}"; do set_b+=(--set "$kv"); done
   shift 6
   cases=("bundled::$ROOT/rawlogs/mrpt-simul/simul.gt.txt")
   for s in $seeds; do cases+=("corridor-seed$s:$OUT/corridor-people-seed$s.rawlog:$OUT/corridor-people-seed$s.gt.txt"); done
