@@ -4,6 +4,7 @@
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "featloc/config/TrackedConfig.h"
 #include "featloc/core/ConfigError.h"
@@ -254,6 +255,7 @@ TEST(CorrelativeScanSearch, ParametersRoundTripAndBadValuesNameTheKey)
 	o.maxWindowYaw = mrpt::DEG2RAD(30);
 	o.confirmShare = 0.9;
 	o.confirmDistance = 0.04;
+	o.overruleObjectSpan = 0.5;
 	mrpt::config::CConfigFileMemory saved;
 	o.saveToConfigFile(saved, "S");
 	TrackedConfig cfg;
@@ -266,7 +268,8 @@ TEST(CorrelativeScanSearch, ParametersRoundTripAndBadValuesNameTheKey)
 	EXPECT_NEAR(back.maxWindowYaw, mrpt::DEG2RAD(30), 1e-12);
 	EXPECT_DOUBLE_EQ(back.confirmShare, 0.9);
 	EXPECT_DOUBLE_EQ(back.confirmDistance, 0.04);
-	for (const char* bad : {"coarse_resolution = 0", "coarse_max_window_xy = 0.01",
+	EXPECT_DOUBLE_EQ(back.overruleObjectSpan, 0.5);
+	for (const char* bad : {"coarse_overrule_object_span = -1", "coarse_resolution = 0", "coarse_max_window_xy = 0.01",
 			 "coarse_ambiguity_z = -1", "coarse_min_score = 2", "coarse_confirm_share = 1.5",
 			 "coarse_confirm_distance = 0"})
 	{
@@ -287,6 +290,56 @@ TEST(CorrelativeScanSearch, ParametersRoundTripAndBadValuesNameTheKey)
 			},
 			ConfigError)
 			<< bad;
+	}
+}
+
+// The guess-gate arbiter's evidence counts objects: 30 points of one
+// person favouring pose a by 1 each outvote 9 points of three wall
+// stretches favouring b, point by point (z = 21 / sqrt(39) = 3.4), but not
+// as four witnesses (z = 21 / sqrt(30^2 + 3 x 3^2) = 0.69). Each point its
+// own object is the point-by-point z.
+TEST(CorrelativeScanSearch, TheArbitersEvidenceCountsObjectsNotPoints)
+{
+	std::vector<double> a(39, 0.0), b(39, 0.0);
+	std::vector<uint32_t> objects(39), points(39);
+	for (uint32_t i = 0; i < 39; i++)
+	{
+		(i < 30 ? a : b)[i] = 1.0;
+		objects[i] = i < 30 ? 0 : 30 + 3 * ((i - 30) / 3);
+		points[i] = i;
+	}
+	EXPECT_NEAR(CorrelativeScanSearch::evidence(a, b, points), 21 / std::sqrt(39.0), 1e-12);
+	EXPECT_NEAR(CorrelativeScanSearch::evidence(a, b, objects), 21 / std::sqrt(927.0), 1e-12);
+
+	// The objects of a real scan: runs of consecutive points within the
+	// span of their first point; a run ends at the first point beyond it.
+	const SyntheticRoom room = SyntheticRoom::office();
+	const CPose2D p0(0.3, -0.4, 0.2), motion(0.2, 0.1, mrpt::DEG2RAD(5.0));
+	const auto ref = ScanPoints::fromScan(*noisy(room.scan(p0), 1));
+	const auto cur = ScanPoints::fromScan(*noisy(room.scan(p0 + motion), 2));
+	CorrelativeScanSearch search;
+	ASSERT_TRUE(search.search(ref, cur, diagonalPoseGaussian(motion, 0.05, 0.05)).success);
+	for (const double span : {0.3, 1.0})
+	{
+		const std::vector<uint32_t> g = search.objectGroups(span);
+		ASSERT_EQ(g.size(), cur.size());
+		size_t runs = 0;
+		for (size_t i = 0; i < g.size(); i++)
+		{
+			const auto& first = cur[g[i]];
+			EXPECT_LE(std::hypot(cur[i].x - first.x, cur[i].y - first.y), span) << i;
+			if (g[i] != i) continue;
+			runs++;
+			if (i > 0)
+			{
+				const auto& previous = cur[g[i - 1]];
+				EXPECT_GT(std::hypot(cur[i].x - previous.x, cur[i].y - previous.y), span) << i;
+			}
+		}
+		std::printf("span %.1f m: %zu objects of %zu points\n", span, runs, cur.size());
+		// The room's walls, a few metres around, cut into stretches.
+		EXPECT_GE(runs, span < 0.5 ? 30u : 10u) << span;
+		EXPECT_LT(runs, cur.size() / 4) << span;
 	}
 }
 

@@ -74,6 +74,7 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	read(c, s, "coarse_contender_ratio", contenderRatio);
 	read(c, s, "coarse_ambiguity_z", ambiguityZ);
 	read(c, s, "coarse_overrule_guess_z", overruleGuessZ);
+	read(c, s, "coarse_overrule_object_span", overruleObjectSpan);
 	read(c, s, "coarse_sharp_sigma", sharpSigma);
 	readChoice(c, s, "coarse_on_ambiguity", onAmbiguity, {"inflate", "fail"});
 	read(c, s, "coarse_distinct_xy", distinctXY);
@@ -97,6 +98,8 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	require(ambiguityZ >= 0, c, s, "coarse_ambiguity_z", ">= 0 (0 disables the check)");
 	require(contenderRatio > 0 && contenderRatio <= 1, c, s, "coarse_contender_ratio", "in (0, 1]");
 	require(overruleGuessZ >= 0, c, s, "coarse_overrule_guess_z", ">= 0 (0 disables it)");
+	require(overruleObjectSpan >= 0 && overruleObjectSpan <= 10, c, s,
+		"coarse_overrule_object_span", "in [0, 10] (0: every point is a witness)");
 	require(sharpSigma > 0, c, s, "coarse_sharp_sigma", "> 0");
 	require(distinctXY > 0, c, s, "coarse_distinct_xy", "> 0");
 	require(distinctYaw > 0, c, s, "coarse_distinct_yaw_DEG", "> 0");
@@ -138,8 +141,11 @@ void CorrelativeScanSearch::Options::saveToConfigFile(
 		"fail (the match fails)");
 	write(c, s, "coarse_overrule_guess_z", overruleGuessZ,
 		"a guess-gate rejection stands unless a search of the widest window around the guess finds "
-		"the estimate, unambiguous, and the points favour it over the guess by this z "
+		"the estimate, unambiguous, and the scan's objects favour it over the guess by this z "
 		"(0: the gate always decides)");
+	write(c, s, "coarse_overrule_object_span", overruleObjectSpan,
+		"[m] for that z the current points are grouped into runs within this span, each run one "
+		"witness (a person's points are one; 0: every point is one)");
 	write(c, s, "coarse_sharp_sigma", sharpSigma,
 		"[m] width of the sharp score that compares the estimate with the contenders");
 	write(c, s, "coarse_distinct_xy", distinctXY,
@@ -442,13 +448,41 @@ CorrelativeScanSearch::Ambiguity CorrelativeScanSearch::ambiguity(const Result& 
 	return out;
 }
 
+double CorrelativeScanSearch::evidence(const std::vector<double>& a,
+	const std::vector<double>& b, const std::vector<uint32_t>& group)
+{
+	double sum = 0, sum2 = 0, object = 0;
+	for (size_t i = 0; i < a.size(); i++)
+	{
+		object += a[i] - b[i];
+		if (i + 1 < a.size() && group[i + 1] == group[i]) continue;
+		sum += object;
+		sum2 += object * object;
+		object = 0;
+	}
+	return sum2 > 0 ? sum / std::sqrt(sum2) : 0.0;
+}
+
+std::vector<uint32_t> CorrelativeScanSearch::objectGroups(double span) const
+{
+	std::vector<uint32_t> group(m_allX.size(), 0);
+	size_t first = 0;
+	for (size_t i = 1; i < m_allX.size(); i++)
+	{
+		if (std::hypot(m_allX[i] - m_allX[first], m_allY[i] - m_allY[first]) > span)
+			first = i;
+		group[i] = static_cast<uint32_t>(first);
+	}
+	return group;
+}
+
 double CorrelativeScanSearch::evidenceFor(
-	const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const
+	const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b, double objectSpan) const
 {
 	std::vector<double> atA, atB;
 	sharpScores(a, atA);
 	sharpScores(b, atB);
-	return evidence(atA, atB);
+	return objectSpan > 0 ? evidence(atA, atB, objectGroups(objectSpan)) : evidence(atA, atB);
 }
 
 bool CorrelativeScanSearch::distinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const

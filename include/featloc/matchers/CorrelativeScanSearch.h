@@ -76,6 +76,11 @@ class CorrelativeScanSearch
 		 * (ScanMatcher::arbitrateGuessGate; 0: off; needs ambiguityZ > 0).
 		 * Runs whether or not `enabled`. */
 		double overruleGuessZ = 3.0;
+		/** [m] The arbiter's evidence counts objects, not points: the
+		 * current points are grouped into runs within this span
+		 * (objectGroups()), and each run is one witness (0: every point
+		 * is one, as before the twenty-third session). */
+		double overruleObjectSpan = 0.3;
 		double sharpSigma = 0.02;  //!< [m] width of the sharp score, at least (else 2x the scan's scatter)
 		/** Solutions further apart than this in translation or rotation are
 		 * distinct: the silent-gross-error thresholds of featloc-bench. */
@@ -157,8 +162,24 @@ class CorrelativeScanSearch
 
 	/** The paired evidence for pose a over pose b of the last search's
 	 * current scan (evidence() of their sharp scores; both poses as given,
-	 * no grid neighbour). */
-	double evidenceFor(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const;
+	 * no grid neighbour). With objectSpan > 0 the points are first grouped
+	 * into objects (objectGroups()) and each object is one witness. */
+	double evidenceFor(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b,
+		double objectSpan = 0) const;
+
+	/** The paired evidence of evidence() with the points' differences
+	 * summed per object first (group[i]: point i's object, consecutive
+	 * points sharing one): z = sum_c(D_c) / sqrt(sum_c(D_c^2)), D_c the sum
+	 * of d_i over object c. The points of one object (a person, a stretch of
+	 * wall) are right or wrong together under a pose, so they are one
+	 * witness, not many: the cluster-robust form of the variance. */
+	static double evidence(const std::vector<double>& a, const std::vector<double>& b,
+		const std::vector<uint32_t>& group);
+	/** The object of each current point of the last search: runs of
+	 * consecutive points (in bearing order) within `span` of the run's first
+	 * point. A person is one object; a wall is cut into stretches of
+	 * `span`; a jump to a farther surface starts a new one. */
+	std::vector<uint32_t> objectGroups(double span) const;
 
 	/** Whether two poses are distinct solutions (distinctXY, distinctYaw). */
 	bool distinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const;
