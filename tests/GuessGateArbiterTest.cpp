@@ -3,7 +3,6 @@
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/random/RandomGenerators.h>
 
-#include <Eigen/Dense>
 #include <cmath>
 #include <cstdio>
 
@@ -139,11 +138,9 @@ TEST(GuessGateArbiter, APersonWalkingWithTheRobotDoesNotOverruleTheGate)
 	mrpt::obs::CObservation2DRangeScan ref, cur;
 	test::readScanPair("corridor-people-seed3-scans-71.4-73.8.rawlog", ref, cur);
 	const CPose2D truth(0.949279, 0.088147, 0.106825);	// worlds/corridor-people.ini, seed 3
-	Eigen::Matrix3d P;
-	P << 1.814340e-04, -1.730576e-06, -2.438159e-06, -1.730576e-06, 1.976448e-04, 2.237937e-05,
-		-2.438159e-06, 2.237937e-05, 3.794597e-05;	// the odometry's, from the run's matches.txt
-	const mrpt::poses::CPosePDFGaussian guess(
-		CPose2D(0.955023, 0.088712, 0.106919461), mrpt::math::CMatrixDouble33(P));
+	// The odometry's, from the run's matches.txt.
+	const auto guess = test::guessFromMatchTable(CPose2D(0.955023, 0.088712, 0.106919461),
+		{1.814340e-04, -1.730576e-06, -2.438159e-06, 1.976448e-04, 2.237937e-05, 3.794597e-05});
 
 	const MatchResult byPoints =
 		test::configuredMatcher("featloc::CfIdcMatcher", "fallback_class=\ncoarse_overrule_object_span=0")

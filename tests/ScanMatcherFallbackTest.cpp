@@ -429,11 +429,9 @@ TEST(ScanMatcherFallback, CfIdcsFreeDirectionIsLeftToIdcOnTheWholeScans)
 	mrpt::obs::CObservation2DRangeScan ref, cur;
 	test::readScanPair("corridor-people-seed2-scans-71.4-74.0.rawlog", ref, cur);
 	const CPose2D truth(1.028823, 0.096678, 0.106859);	// worlds/corridor-people.ini, seed 2
-	Eigen::Matrix3d P;
-	P << 1.920595e-04, -1.848432e-06, -2.442760e-06, -1.848432e-06, 2.111086e-04, 2.478590e-05,
-		-2.442760e-06, 2.478590e-05, 3.995288e-05;	// the odometry's, from the run's matches.txt
-	const mrpt::poses::CPosePDFGaussian guess(
-		CPose2D(1.020149, 0.100896, 0.100919), mrpt::math::CMatrixDouble33(P));
+	// The odometry's, from the run's matches.txt.
+	const auto guess = test::guessFromMatchTable(CPose2D(1.020149, 0.100896, 0.100919),
+		{1.920595e-04, -1.848432e-06, -2.442760e-06, 2.111086e-04, 2.478590e-05, 3.995288e-05});
 
 	const MatchResult own =
 		fromIni("featloc::CfIdcMatcher", "[ScanMatcher.CfIdcMatcher]\nfree_direction_from_guess = true\n")

@@ -1,6 +1,9 @@
 #pragma once
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/random/RandomGenerators.h>
+
+#include <array>
 
 #include <string>
 
@@ -21,4 +24,9 @@ mrpt::obs::CObservation2DRangeScan::Ptr withRangeNoise(
  * (`file` is the name there). */
 void readScanPair(const std::string& file, mrpt::obs::CObservation2DRangeScan& reference,
 	mrpt::obs::CObservation2DRangeScan& current);
+
+/** A match's initial guess as a run's matches.txt prints it: guess_x
+ * guess_y guess_yaw, and g_xx g_xy g_xyaw g_yy g_yyaw g_yawyaw. */
+mrpt::poses::CPosePDFGaussian guessFromMatchTable(
+	const mrpt::poses::CPose2D& mean, const std::array<double, 6>& g);
 }  // namespace featloc::test
