@@ -23,21 +23,7 @@ KEY=coarse_overrule_object_span OFF=0 ON=0.3
 SEEDS="1 2 3 4 5 6"
 machine_line
 sim_corridor_seeds
-for est in matcher ekf; do
-  for m in PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
-    echo
-    echo "### Whole runs, $m, estimator = $est: ATE rmse [mm] / failed matches / fallback matches, $KEY $OFF | $ON"
-    echo
-    echo "| log | estimator | points | objects | objects against points: mean RPE difference [mm] (95%); steps off only objects / only points, McNemar |"
-    echo "|---|---|---|---|---|"
-    off="ScanMatcher.$m:$KEY=$OFF" on="ScanMatcher.$m:$KEY=$ON"
-    if [ "$m" != IdcMatcher ]; then
-      off="$off ScanMatcher.IdcMatcher:$KEY=$OFF" on="$on ScanMatcher.IdcMatcher:$KEY=$ON"
-    fi
-    whole_runs_two_ways "$est" "$SEEDS" "$m-points" "$off" "$m-objects" "$on" \
-      --set "ScanMatcher:class=featloc::$m"
-  done
-done
+featloc_matchers_two_ways "$KEY" "$OFF" points "$ON" objects "$SEEDS" yes
 
 # "overruled / within 5 cm and 1 deg / gross where the guess was not" of
 # the run $OUT/NAME against the ground truth GT.

@@ -189,6 +189,32 @@ whole_runs_two_ways() { # est, seeds, label A, --set of A, label B, --set of B, 
     echo "| $name | $est | $(run_counts "$name-$est-$a") | $(run_counts "$name-$est-$b") | $(runs_paired "$ref" "$OUT/$name-$est-$b" "$OUT/$name-$est-$a") |"
   done
 }
+# whole_runs_two_ways for PCM, IDC and CF-IDC, each as the matcher, with
+# estimator = matcher and then ekf: KEY = A against KEY = B, set in the
+# matcher's own section and in [ScanMatcher.IdcMatcher], which PCM's and
+# CF-IDC's fallback reads (PCM_OWN = no: not in PCM's own section, whose
+# matching has no such key). One table per matcher and estimator, headed
+# with the labels; runs in $OUT/LOG-EST-MATCHER-LABEL.
+featloc_matchers_two_ways() { # key, value A, label A, value B, label B, seeds, PCM_OWN (yes|no)
+  local key="$1" va="$2" la="$3" vb="$4" lb="$5" seeds="$6" pcm_own="$7" est m own_a own_b
+  for est in matcher ekf; do
+    for m in PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
+      echo
+      echo "### Whole runs, $m, estimator = $est: ATE rmse [mm] / failed matches / fallback matches, $key $va | $vb"
+      echo
+      echo "| log | estimator | $la | $lb | $lb against $la: mean RPE difference [mm] (95%); steps off only $lb / only $la, McNemar |"
+      echo "|---|---|---|---|---|"
+      own_a="ScanMatcher.$m:$key=$va" own_b="ScanMatcher.$m:$key=$vb"
+      if [ "$m" = PcmFeatureMatcher ] && [ "$pcm_own" = no ]; then own_a="" own_b=""; fi
+      # IDC's own section is the fallback's: set once.
+      if [ "$m" != IdcMatcher ]; then
+        own_a="$own_a ScanMatcher.IdcMatcher:$key=$va" own_b="$own_b ScanMatcher.IdcMatcher:$key=$vb"
+      fi
+      whole_runs_two_ways "$est" "$seeds" "$m-$la" "$own_a" "$m-$lb" "$own_b" \
+        --set "ScanMatcher:class=featloc::$m"
+    done
+  done
+}
 # "ATE [mm] / failed matches / fallback matches" of the run $OUT/NAME.
 run_counts() { jq -r '"\((.evaluation.ate_m.rmse // -0.001) * 1000 | round) / \(.counts.match_failures) / \(.counts.fallback_matcher_matches)"' "$OUT/$1/summary.json"; }
 # Run B against run A step by step (featloc-eval REFERENCE B --paired-with A).

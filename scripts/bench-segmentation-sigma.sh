@@ -70,18 +70,6 @@ bench "warehouse, lattice" "$OUT/warehouse-lattice.rawlog" -g "$OUT/warehouse-la
 bench_held_out_radish_logs
 
 sim_corridor_seeds
-for est in matcher ekf; do
-  for m in PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
-    echo
-    echo "### Whole runs, $m, estimator = $est: ATE rmse [mm] / failed matches / fallback matches, $KEY $OFF | $ON"
-    echo
-    echo "| log | estimator | off | on | on against off: mean RPE difference [mm] (95%); steps off only on / only off, McNemar |"
-    echo "|---|---|---|---|---|"
-    own_off="ScanMatcher.$m:$KEY=$OFF" own_on="ScanMatcher.$m:$KEY=$ON"
-    [ "$m" = PcmFeatureMatcher ] && own_off="" own_on=""
-    whole_runs_two_ways "$est" "1 2 3" "$m-$KEY-$OFF" "$own_off $FB=$OFF" \
-      "$m-$KEY-$ON" "$own_on $FB=$ON" --set "ScanMatcher:class=featloc::$m"
-  done
-done
+featloc_matchers_two_ways "$KEY" "$OFF" off "$ON" on "1 2 3" no
 echo
 echo "(raw outputs in $OUT)"
