@@ -655,7 +655,7 @@ TEST(FeatlocRun, OverruledGuessGatesAreMarkedAndCounted)
 		rows++;
 		if (firstOverruled < 0) firstOverruled = row.t;
 		EXPECT_NE(row.reason.find("guess_gate_chi2"), std::string::npos) << row.reason;
-		EXPECT_NE(row.reason.find("the points favour it over the guess by z ="), std::string::npos)
+		EXPECT_NE(row.reason.find("the scan's objects favour it over the guess by z ="), std::string::npos)
 			<< row.reason;
 	}
 	EXPECT_GT(counted, 0u);

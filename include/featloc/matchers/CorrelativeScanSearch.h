@@ -72,8 +72,9 @@ class CorrelativeScanSearch
 		std::string onAmbiguity = "inflate";
 		/** A guess-gate rejection is overruled when a search of the widest
 		 * window around the guess finds the estimate, unambiguous, and the
-		 * points favour it over the guess by this z
-		 * (ScanMatcher::arbitrateGuessGate; 0: off; needs ambiguityZ > 0).
+		 * scan's objects (overruleObjectSpan) favour it over the guess by
+		 * this z (ScanMatcher::arbitrateGuessGate; 0: off; needs
+		 * ambiguityZ > 0).
 		 * Runs whether or not `enabled`. */
 		double overruleGuessZ = 3.0;
 		/** [m] The arbiter's evidence counts objects, not points: the
