@@ -5,6 +5,7 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include "featloc/matchers/ScanMatcherFactory.h"
+#include "featloc/math/CovarianceFromUpperTriangle.h"
 #include "featloc/registerClasses.h"
 
 namespace featloc::test
@@ -40,13 +41,6 @@ void readScanPair(const std::string& file, mrpt::obs::CObservation2DRangeScan& r
 mrpt::poses::CPosePDFGaussian guessFromMatchTable(
 	const mrpt::poses::CPose2D& mean, const std::array<double, 6>& g)
 {
-	mrpt::math::CMatrixDouble33 P;
-	P(0, 0) = g[0];
-	P(0, 1) = P(1, 0) = g[1];
-	P(0, 2) = P(2, 0) = g[2];
-	P(1, 1) = g[3];
-	P(1, 2) = P(2, 1) = g[4];
-	P(2, 2) = g[5];
-	return mrpt::poses::CPosePDFGaussian(mean, P);
+	return mrpt::poses::CPosePDFGaussian(mean, covarianceFromUpperTriangle(g.data()));
 }
 }  // namespace featloc::test
