@@ -14,7 +14,7 @@
 #    Radish logs: their corrected poses): how many, how many within
 #    5 cm / 1 deg, how many off by more than 10 cm or 2 deg where the
 #    odometry's guess was not (scripts/match-errors.py --all).
-# Usage: scripts/bench-arbiter-objects.sh [OUTDIR]   (about 8 min on 2 cores)
+# Usage: scripts/bench-arbiter-objects.sh [OUTDIR]   (about 5 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-arbiter-objects "$@"

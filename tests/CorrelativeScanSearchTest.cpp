@@ -269,9 +269,9 @@ TEST(CorrelativeScanSearch, ParametersRoundTripAndBadValuesNameTheKey)
 	EXPECT_DOUBLE_EQ(back.confirmShare, 0.9);
 	EXPECT_DOUBLE_EQ(back.confirmDistance, 0.04);
 	EXPECT_DOUBLE_EQ(back.overruleObjectSpan, 0.5);
-	for (const char* bad : {"coarse_overrule_object_span = -1", "coarse_resolution = 0", "coarse_max_window_xy = 0.01",
+	for (const char* bad : {"coarse_resolution = 0", "coarse_max_window_xy = 0.01",
 			 "coarse_ambiguity_z = -1", "coarse_min_score = 2", "coarse_confirm_share = 1.5",
-			 "coarse_confirm_distance = 0"})
+			 "coarse_confirm_distance = 0", "coarse_overrule_object_span = -1"})
 	{
 		mrpt::config::CConfigFileMemory c;
 		c.setContent(std::string("[S]\n") + bad + "\n");
@@ -309,6 +309,7 @@ TEST(CorrelativeScanSearch, TheArbitersEvidenceCountsObjectsNotPoints)
 		points[i] = i;
 	}
 	EXPECT_NEAR(CorrelativeScanSearch::evidence(a, b, points), 21 / std::sqrt(39.0), 1e-12);
+	EXPECT_EQ(CorrelativeScanSearch::evidence(a, b), CorrelativeScanSearch::evidence(a, b, points));
 	EXPECT_NEAR(CorrelativeScanSearch::evidence(a, b, objects), 21 / std::sqrt(927.0), 1e-12);
 
 	// The objects of a real scan: runs of consecutive points within the

@@ -371,18 +371,6 @@ void CorrelativeScanSearch::sharpScores(
 	}
 }
 
-double CorrelativeScanSearch::evidence(const std::vector<double>& a, const std::vector<double>& b)
-{
-	double sum = 0, sum2 = 0;
-	for (size_t i = 0; i < a.size(); i++)
-	{
-		const double d = a[i] - b[i];
-		sum += d;
-		sum2 += d * d;
-	}
-	return sum2 > 0 ? sum / std::sqrt(sum2) : 0.0;
-}
-
 mrpt::poses::CPose2D CorrelativeScanSearch::bestGridNeighbour(
 	const Result& r, const mrpt::poses::CPose2D& o, std::vector<double>& scores) const
 {
@@ -455,7 +443,7 @@ double CorrelativeScanSearch::evidence(const std::vector<double>& a,
 	for (size_t i = 0; i < a.size(); i++)
 	{
 		object += a[i] - b[i];
-		if (i + 1 < a.size() && group[i + 1] == group[i]) continue;
+		if (!group.empty() && i + 1 < a.size() && group[i + 1] == group[i]) continue;
 		sum += object;
 		sum2 += object * object;
 		object = 0;
@@ -482,7 +470,7 @@ double CorrelativeScanSearch::evidenceFor(
 	std::vector<double> atA, atB;
 	sharpScores(a, atA);
 	sharpScores(b, atB);
-	return objectSpan > 0 ? evidence(atA, atB, objectGroups(objectSpan)) : evidence(atA, atB);
+	return evidence(atA, atB, objectSpan > 0 ? objectGroups(objectSpan) : std::vector<uint32_t>{});
 }
 
 bool CorrelativeScanSearch::distinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const

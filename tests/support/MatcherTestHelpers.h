@@ -4,7 +4,6 @@
 #include <mrpt/random/RandomGenerators.h>
 
 #include <array>
-
 #include <string>
 
 #include "featloc/matchers/ScanMatcher.h"

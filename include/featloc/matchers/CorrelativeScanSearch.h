@@ -168,14 +168,18 @@ class CorrelativeScanSearch
 	double evidenceFor(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b,
 		double objectSpan = 0) const;
 
-	/** The paired evidence of evidence() with the points' differences
-	 * summed per object first (group[i]: point i's object, consecutive
-	 * points sharing one): z = sum_c(D_c) / sqrt(sum_c(D_c^2)), D_c the sum
-	 * of d_i over object c. The points of one object (a person, a stretch of
-	 * wall) are right or wrong together under a pose, so they are one
-	 * witness, not many: the cluster-robust form of the variance. */
+	/** The paired evidence for a over b from their points' sharp scores:
+	 * z = sum(d_i) / sqrt(sum(d_i^2)), d_i = a_i - b_i (0 when they score
+	 * alike). Points on a corridor's walls score alike under both and do
+	 * not count; a door frame that only a explains does.
+	 * With `group` (group[i]: point i's object, consecutive points sharing
+	 * one) the differences are summed per object first:
+	 * z = sum_c(D_c) / sqrt(sum_c(D_c^2)), D_c the sum of d_i over object c.
+	 * The points of one object (a person, a stretch of wall) are right or
+	 * wrong together under a pose, so they are one witness, not many: the
+	 * cluster-robust form of the variance. Empty: every point is one. */
 	static double evidence(const std::vector<double>& a, const std::vector<double>& b,
-		const std::vector<uint32_t>& group);
+		const std::vector<uint32_t>& group = {});
 	/** The object of each current point of the last search: runs of
 	 * consecutive points (in bearing order) within `span` of the run's first
 	 * point. A person is one object; a wall is cut into stretches of
@@ -198,11 +202,6 @@ class CorrelativeScanSearch
 	 * sharp score; its points' sharp scores in `scores`. */
 	mrpt::poses::CPose2D bestGridNeighbour(
 		const Result& r, const mrpt::poses::CPose2D& o, std::vector<double>& scores) const;
-	/** The paired evidence for a over b from their points' sharp scores:
-	 * z = sum(d_i) / sqrt(sum(d_i^2)), d_i = a_i - b_i (0 when they score
-	 * alike). Points on a corridor's walls score alike under both and do
-	 * not count; a door frame that only a explains does. */
-	static double evidence(const std::vector<double>& a, const std::vector<double>& b);
 	/** Every current point's sharp score at `pose`: exp(-d^2 / 2 sigma^2),
 	 * d its distance to the reference surface, sigma the larger of
 	 * sharp_sigma and twice the reference's point scatter. */
