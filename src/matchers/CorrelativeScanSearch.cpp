@@ -82,6 +82,7 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	read(c, s, "coarse_confirm_share", confirmShare);
 	read(c, s, "coarse_confirm_distance", confirmDistance);
 	read(c, s, "coarse_confirm_probe", confirmProbe);
+	read(c, s, "coarse_confirm_probe_window", confirmProbeWindow);
 	read(c, s, "coarse_confirm_probe_sigma", confirmProbeSigma);
 	require(windowSigmas > 0, c, s, "coarse_window_sigmas", "> 0");
 	require(minWindowXY >= 0, c, s, "coarse_min_window_xy", ">= 0");
@@ -161,6 +162,8 @@ void CorrelativeScanSearch::Options::saveToConfigFile(
 	write(c, s, "coarse_confirm_probe", confirmProbe,
 		"the search runs also where a pose slid by 2 or 4 x coarse_confirm_distance along the "
 		"estimate's least certain translation puts as large a share within it");
+	write(c, s, "coarse_confirm_probe_window", confirmProbeWindow,
+		"the probe also slides every coarse_confirm_distance out to the search window's edges");
 	write(c, s, "coarse_confirm_probe_sigma", confirmProbeSigma,
 		"[m] the probe runs where the estimate's largest translation sigma reaches this "
 		"(0: wherever the share confirms)");
@@ -261,6 +264,21 @@ void CorrelativeScanSearch::buildTables(const ScanPoints& reference, double half
 	m_builtOptions = tableOptions;
 }
 
+CorrelativeScanSearch::HalfWindow CorrelativeScanSearch::halfWindow(
+	const mrpt::poses::CPosePDFGaussian& guess) const
+{
+	const auto& P = guess.cov;
+	auto half = [&](double var, double lo, double hi) {
+		const double h = options.windowSigmas * std::sqrt(std::max(var, 0.0));
+		return std::isfinite(h) ? std::clamp(h, lo, hi) : hi;
+	};
+	HalfWindow h;
+	h.xy[0] = half(P(0, 0), options.minWindowXY, options.maxWindowXY);
+	h.xy[1] = half(P(1, 1), options.minWindowXY, options.maxWindowXY);
+	h.yaw = half(P(2, 2), options.minWindowYaw, options.maxWindowYaw);
+	return h;
+}
+
 CorrelativeScanSearch::Result CorrelativeScanSearch::search(
 	const ScanPoints& reference, const ScanPoints& current,
 	const mrpt::poses::CPosePDFGaussian& guess)
@@ -272,16 +290,10 @@ CorrelativeScanSearch::Result CorrelativeScanSearch::search(
 		r.failureReason = "coarse search: an empty scan";
 		return r;
 	}
-	// The window: windowSigmas of the guess, clamped (the widest for a
-	// covariance that is not finite).
-	const auto& P = guess.cov;
-	auto half = [&](double var, double lo, double hi) {
-		const double h = options.windowSigmas * std::sqrt(std::max(var, 0.0));
-		return std::isfinite(h) ? std::clamp(h, lo, hi) : hi;
-	};
-	r.windowXY[0] = half(P(0, 0), options.minWindowXY, options.maxWindowXY);
-	r.windowXY[1] = half(P(1, 1), options.minWindowXY, options.maxWindowXY);
-	r.windowYaw = half(P(2, 2), options.minWindowYaw, options.maxWindowYaw);
+	const HalfWindow h = halfWindow(guess);
+	r.windowXY[0] = h.xy[0];
+	r.windowXY[1] = h.xy[1];
+	r.windowYaw = h.yaw;
 	buildTables(reference, std::max(r.windowXY[0], r.windowXY[1]));
 	pickPoints(current);
 	r.resolution = m_tables.resolution();

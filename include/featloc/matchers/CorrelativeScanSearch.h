@@ -95,12 +95,16 @@ class CorrelativeScanSearch
 		double confirmShare = 0.85;
 		double confirmDistance = 0.05;	//!< [m]
 		/** The confirmation must also find the estimate where the points
-		 * peak along its least certain translation: if a pose slid by 2 or
-		 * 4 x confirmDistance either way along it puts as large a share of
-		 * the points within confirmDistance, the search runs (an aisle or a
-		 * corridor on a range lattice, where the iterations can stop along
-		 * it with the walls' points all on the reference). */
+		 * peak along its least certain translation: if a pose slid along it
+		 * puts as large a share of the points within confirmDistance, the
+		 * search runs (an aisle or a corridor on a range lattice, where the
+		 * iterations can stop along it with the walls' points all on the
+		 * reference; an aisle's uprights, where they stop a bay off). The
+		 * slid poses: 2 and 4 x confirmDistance either way, then, with
+		 * confirmProbeWindow, every confirmDistance out to the edges of the
+		 * window the search would cover (halfWindow). */
 		bool confirmProbe = true;
+		bool confirmProbeWindow = true;
 		/** The probe runs only where the estimate's largest translation
 		 * sigma reaches this: a match that fixes every direction to a 25th
 		 * of the probe's shorter step (2 x 5 cm) has no weak direction to
@@ -138,6 +142,15 @@ class CorrelativeScanSearch
 	};
 
 	Options options;
+
+	/** The half-widths search() covers around a guess: windowSigmas of its
+	 * sigmas, clamped to [min, max] windows (the widest for a covariance
+	 * that is not finite). */
+	struct HalfWindow
+	{
+		double xy[2] = {0, 0}, yaw = 0;
+	};
+	HalfWindow halfWindow(const mrpt::poses::CPosePDFGaussian& guess) const;
 
 	/** Searches the window around `guess` (its mean, 3 sigma of its
 	 * covariance clamped to [min, max] windows). `reference` and `current`

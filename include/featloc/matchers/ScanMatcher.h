@@ -212,9 +212,12 @@ class ScanMatcher : public mrpt::rtti::CObject
 		const mrpt::poses::CPosePDFGaussian& window);
 	/** With coarse_confirm_share > 0: the iterations from the guess, kept
 	 * in `r` (true) when they succeed at a pose the reference confirms
-	 * (ReferenceOverlap); false leaves `r` as it was, for the search. */
+	 * (ReferenceOverlap) and no pose slid within the search's `window`
+	 * fits as well (coarse_confirm_probe); false leaves `r` as it was, for
+	 * the search. */
 	bool matchConfirmedFromGuess(const ScanPoints& reference, const ScanPoints& current,
-		const mrpt::poses::CPosePDFGaussian& initialGuess, MatchResult& r);
+		const mrpt::poses::CPosePDFGaussian& initialGuess,
+		const mrpt::poses::CPosePDFGaussian& window, MatchResult& r);
 	/** The iterations from the coarse search's solution, and the check that
 	 * they stay on it. */
 	void matchFromCoarseSearch(const ScanPoints& reference, const ScanPoints& current,
