@@ -1,5 +1,6 @@
 // Borges & Aldon feature extraction and the quartic solver.
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -7,9 +8,11 @@
 #include <cmath>
 #include <functional>
 
+#include "featloc/core/ConfigError.h"
 #include "featloc/features/LineEllipseExtractor.h"
 #include "featloc/features/LineFit.h"
 #include "featloc/math/PolynomialRoots.h"
+#include "support/ErrorMessage.h"
 #include "support/SyntheticRoom.h"
 
 using namespace featloc;
@@ -303,4 +306,57 @@ TEST(LineEllipseExtractor, AWallSeenGrazinglyKeepsItsFarPoints)
 		EXPECT_FALSE(near && far) << "a line spans the step at x = 3 m";
 	}
 	EXPECT_EQ(lines, 2u);
+}
+
+// A rack's upright standing 5 cm out of the pallets' face, 10 cm wide, seen
+// 1.3 m away at 1 cm noise with 0.25 deg beams (a Hokuyo UTM-30LX in an
+// aisle of worlds/warehouse-aisles.ini): the split test cuts the face at
+// it, and the RMS merge test alone (merge_step_points = 0) puts the face
+// back together with the upright's points inside, a "line" whose offset
+// and direction then depend on how many beams the upright takes from each
+// viewpoint. With merge_step_points = 3 (the default), 3 consecutive
+// points beyond the split threshold on one side keep the runs apart: no
+// line holds the upright, and the face's lines are where the face is. (2
+// split the plain wall of WeightedFitUsesTheGrazingPointsAndItsCovariance-
+// Holds: its near points' noise is twice the cluster's estimate there.)
+TEST(LineEllipseExtractor, AnUprightStandingOutOfAWallIsNotMergedIntoIt)
+{
+	mrpt::random::CRandomGenerator rng(5);
+	auto onUpright = [](const ScanPoint& p) { return p.x > 1.5 && p.x < 1.6; };
+	size_t uprightInLine[2] = {0, 0};
+	double worstRho[2] = {0, 0};
+	for (int trial = 0; trial < 20; trial++)
+	{
+		const ScanPoints s = wallScan(std::atan2(1.3, 6.0), std::atan2(1.3, -1.0), mrpt::DEG2RAD(0.25),
+			0.01, rng, [](double b) {
+				const double x = 1.3 / std::tan(b);
+				return x > 1.5 && x < 1.6 ? 1.25 : 1.3;
+			});
+		for (int steps = 0; steps < 2; steps++)
+		{
+			LineEllipseExtractor ex;
+			if (!steps) ex.params.merge_step_points = 0;
+			std::vector<ScanFeature> fs;
+			ex.extract(s, fs);
+			for (const auto& f : fs)
+			{
+				if (f.kind != ScanFeature::Kind::Line) continue;
+				size_t upright = 0;
+				for (uint32_t q = f.firstPoint; q <= f.lastPoint; q++) upright += onUpright(s.points[q]);
+				if (upright >= 2) uprightInLine[steps]++;
+				if (f.lastPoint - f.firstPoint > 50 && upright < 2)
+					worstRho[steps] = std::max(worstRho[steps], std::abs(f.rho - 1.3));
+			}
+		}
+	}
+	EXPECT_EQ(uprightInLine[0], 20u) << "the RMS test alone no longer merges the upright: the test says nothing";
+	EXPECT_EQ(uprightInLine[1], 0u);
+	EXPECT_LT(worstRho[1], 0.003);
+
+	// One point beyond the threshold is a noise spike, not a step.
+	mrpt::config::CConfigFileMemory c;
+	c.setContent("[S]\nmerge_step_points = 1\n");
+	const std::string message = test::errorMessageOf<ConfigError>(
+		[&] { LineEllipseExtractor().params.loadFromConfigFile(c, "S"); });
+	EXPECT_NE(message.find("merge_step_points"), std::string::npos) << message;
 }

@@ -65,6 +65,7 @@ void LineEllipseExtractor::Parameters::loadFromConfigFile(
 	read(c, s, "split_sigmas", split_sigmas);
 	read(c, s, "trim_sigmas", trim_sigmas);
 	read(c, s, "merge_sigmas", merge_sigmas);
+	read(c, s, "merge_step_points", merge_step_points);
 	read(c, s, "max_line_sigma", max_line_sigma);
 	read(c, s, "min_points", min_points);
 	read(c, s, "min_length", min_length);
@@ -80,6 +81,8 @@ void LineEllipseExtractor::Parameters::loadFromConfigFile(
 	require(split_sigmas >= 0, c, s, "split_sigmas", ">= 0");
 	require(trim_sigmas > 0, c, s, "trim_sigmas", "> 0");
 	require(merge_sigmas > 0, c, s, "merge_sigmas", "> 0");
+	require(merge_step_points != 1, c, s, "merge_step_points",
+		"0 (off) or at least 2 (one point beyond the threshold is a noise spike)");
 	require(max_line_sigma > 0, c, s, "max_line_sigma", "> 0");
 	require(min_points >= 3, c, s, "min_points", ">= 3");
 	require(min_length >= 0, c, s, "min_length", ">= 0");
@@ -104,6 +107,9 @@ void LineEllipseExtractor::Parameters::saveToConfigFile(
 		"features: drop line end points farther than this many noise sigmas");
 	write(c, s, "merge_sigmas", merge_sigmas,
 		"features: merge neighbouring runs whose joint RMS residual is below this many noise sigmas");
+	write(c, s, "merge_step_points", merge_step_points,
+		"features: ... unless this many consecutive points of the joint line lie beyond the split "
+		"threshold on one side (a step, not a spike; 0: off)");
 	write(c, s, "max_line_sigma", max_line_sigma,
 		"[m] features: max RMS residual of a line, eq. (8)");
 	write(c, s, "min_points", min_points, "features: min points of a line");
@@ -132,10 +138,32 @@ bool LineEllipseExtractor::clusterBreak(const ScanPoint& a, const ScanPoint& b) 
 	return AdaptiveBreakpointSegmenter(abd).isBreakpoint(a, b);
 }
 
+double LineEllipseExtractor::splitThreshold(double noise) const
+{
+	return std::max(params.split_distance_min, params.split_sigmas * noise);
+}
+
+bool LineEllipseExtractor::hasStep(const ScanPoints& s, size_t first, size_t last,
+	const LineFit& fit, double threshold) const
+{
+	if (params.merge_step_points == 0) return false;
+	unsigned int run = 0;
+	int side = 0;
+	for (size_t k = first; k <= last; k++)
+	{
+		const double r = fit.residual(s.points[k].x, s.points[k].y);
+		const int here = r > threshold ? 1 : (r < -threshold ? -1 : 0);
+		run = here == 0 ? 0 : (here == side ? run + 1 : 1);
+		side = here;
+		if (run >= params.merge_step_points) return true;
+	}
+	return false;
+}
+
 void LineEllipseExtractor::split(
 	const ScanPoints& s, size_t first, size_t last, double noise)
 {
-	const double threshold = std::max(params.split_distance_min, params.split_sigmas * noise);
+	const double threshold = splitThreshold(noise);
 	// Iterative end-point fit with an explicit stack (no recursion).
 	m_stack.clear();
 	m_stack.emplace_back(first, last);
@@ -197,7 +225,8 @@ void LineEllipseExtractor::mergeRuns(const ScanPoints& s)
 			// keep a straight wall in pieces.
 			const LineFit f = fitRun(s, A.first, B.second);
 			const double noise = std::max(m_runNoise[r], params.min_point_sigma);
-			if (f.sigma <= params.merge_sigmas * noise && f.sigma <= params.max_line_sigma)
+			if (f.sigma <= params.merge_sigmas * noise && f.sigma <= params.max_line_sigma &&
+				!hasStep(s, A.first, B.second, f, splitThreshold(m_runNoise[r])))
 			{
 				A.second = B.second;
 				m_runs.erase(m_runs.begin() + static_cast<long>(r) + 1);
@@ -277,7 +306,7 @@ bool LineEllipseExtractor::Parameters::operator==(const Parameters& o) const
 {
 	auto fields = [](const Parameters& p) {
 		return std::tie(p.max_point_gap, p.grazing_incidence, p.split_distance_min, p.split_sigmas,
-			p.trim_sigmas, p.merge_sigmas, p.max_line_sigma, p.min_points, p.min_length,
+			p.trim_sigmas, p.merge_sigmas, p.merge_step_points, p.max_line_sigma, p.min_points, p.min_length,
 			p.ellipse_max_length, p.refine_iterations, p.min_point_sigma,
 			p.ellipse_shape_sigma_ratio, p.line_fit);
 	};

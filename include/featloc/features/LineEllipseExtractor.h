@@ -40,7 +40,12 @@ namespace featloc
  *     below merge_sigmas times the cluster's noise estimate (and below
  *     max_line_sigma) are merged, so a single noise spike that caused a
  *     split does not keep a straight wall in pieces (pieces split at an
- *     extreme point are biased beyond their covariance);
+ *     extreme point are biased beyond their covariance); but not where
+ *     merge_step_points consecutive points of the joint line lie beyond
+ *     the split threshold on one side of it: that is a step or a bump in
+ *     the surface (a rack's upright standing out of the pallets' face),
+ *     which a spike is not, and the merged line would take it in with a
+ *     weight that changes from one viewpoint to the next;
  *  4. refinement (hard c-lines clustering along the scan): each point at a
  *     boundary between two neighbouring runs goes to the line it is closer
  *     to, lines are refitted, until nothing moves (refine_iterations at
@@ -92,6 +97,10 @@ class LineEllipseExtractor
 		double split_sigmas = 4;  //!< threshold in estimated noise sigmas
 		double trim_sigmas = 3;	 //!< end trimming, in estimated noise sigmas
 		double merge_sigmas = 3;	//!< merge test, in estimated noise sigmas
+		/** Runs stay apart where this many consecutive points of their joint
+		 * line lie beyond the split threshold on one side (0: the RMS test
+		 * alone). */
+		unsigned int merge_step_points = 3;
 		double max_line_sigma = 0.05;  //!< [m] sigma of eq. (8)
 		unsigned int min_points = 5;
 		double min_length = 0.2;  //!< [m]
@@ -130,6 +139,12 @@ class LineEllipseExtractor
 	using Run = std::pair<size_t, size_t>;	//!< [first, last] point indices
 	/** Step 1's test: consecutive points a, b belong to different clusters. */
 	bool clusterBreak(const ScanPoint& a, const ScanPoint& b) const;
+	/** The split test's distance for a cluster of point noise `noise`. */
+	double splitThreshold(double noise) const;
+	/** Whether merge_step_points consecutive points of first..last lie
+	 * beyond `threshold` on one side of `fit`. */
+	bool hasStep(const ScanPoints& s, size_t first, size_t last, const LineFit& fit,
+		double threshold) const;
 	void split(const ScanPoints& s, size_t first, size_t last, double noise);
 	void mergeRuns(const ScanPoints& s);
 	void setCovariances(const ScanPoints& s, std::vector<ScanFeature>& features) const;
