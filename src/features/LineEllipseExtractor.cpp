@@ -146,7 +146,10 @@ double LineEllipseExtractor::splitThreshold(double noise) const
 bool LineEllipseExtractor::hasStep(const ScanPoints& s, size_t first, size_t last,
 	const LineFit& fit, double threshold) const
 {
-	if (params.merge_step_points == 0) return false;
+	// On a range lattice (rangeNoiseFloor: its cell's sigma) the readings'
+	// errors come in runs of equal range, so consecutive points off the line
+	// on one side are the lattice's, not a step's: the test is off there.
+	if (params.merge_step_points == 0 || rangeNoiseFloor > 0) return false;
 	unsigned int run = 0;
 	int side = 0;
 	for (size_t k = first; k <= last; k++)

@@ -45,7 +45,8 @@ namespace featloc
  *     the split threshold on one side of it: that is a step or a bump in
  *     the surface (a rack's upright standing out of the pallets' face),
  *     which a spike is not, and the merged line would take it in with a
- *     weight that changes from one viewpoint to the next;
+ *     weight that changes from one viewpoint to the next (not on a range
+ *     lattice, rangeNoiseFloor > 0, whose readings are off in runs);
  *  4. refinement (hard c-lines clustering along the scan): each point at a
  *     boundary between two neighbouring runs goes to the line it is closer
  *     to, lines are refitted, until nothing moves (refine_iterations at
