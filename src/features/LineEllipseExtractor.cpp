@@ -309,8 +309,8 @@ bool LineEllipseExtractor::Parameters::operator==(const Parameters& o) const
 {
 	auto fields = [](const Parameters& p) {
 		return std::tie(p.max_point_gap, p.grazing_incidence, p.split_distance_min, p.split_sigmas,
-			p.trim_sigmas, p.merge_sigmas, p.merge_step_points, p.max_line_sigma, p.min_points, p.min_length,
-			p.ellipse_max_length, p.refine_iterations, p.min_point_sigma,
+			p.trim_sigmas, p.merge_sigmas, p.merge_step_points, p.max_line_sigma, p.min_points,
+			p.min_length, p.ellipse_max_length, p.refine_iterations, p.min_point_sigma,
 			p.ellipse_shape_sigma_ratio, p.line_fit);
 	};
 	return fields(*this) == fields(o);
