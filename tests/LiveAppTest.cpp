@@ -268,9 +268,13 @@ TEST(Live, EmulatedHokuyoAndOdometryRunAndReplayToTheSamePoses)
 #endif
 	EXPECT_NEAR(lidar["rate_hz"].get<double>(), 40.0, 40.0 * tolerance);
 	EXPECT_NEAR(base["rate_hz"].get<double>(), 100.0, 100.0 * tolerance);
-	EXPECT_EQ(lidar["received"], lidar["passed_on"]);
 	// A reading may come late when ctest's other tests load both cores (one
-	// odometry reading in 402 was seen once): at most 1% of them.
+	// odometry reading in 402 was seen once, one scan in 162 another time):
+	// at most 1% of them, and every reading is passed on or counted late.
+	EXPECT_EQ(lidar["received"].get<size_t>(),
+		lidar["passed_on"].get<size_t>() + lidar["late"].get<size_t>());
+	EXPECT_EQ(base["received"].get<size_t>(),
+		base["passed_on"].get<size_t>() + base["late"].get<size_t>());
 	const size_t late = s["live"]["late_observations"].get<size_t>();
 	EXPECT_LE(100 * late, lidar["received"].get<size_t>() + base["received"].get<size_t>()) << late << " late";
 	// Against the emulator's truth: the office at 0.6 m/s, 4 s.
