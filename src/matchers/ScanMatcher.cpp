@@ -422,11 +422,12 @@ namespace
  *    with 87% of the points within 5 cm, and the pose 0.2 m towards the
  *    truth put 90% there.
  *  - With confirmProbeWindow, every confirmDistance out to the edges of
- *    the window the search would cover (`window`, CorrelativeScanSearch::halfWindow). Found on
- *    the same aisle with 1 cm noise and nothing on a lattice (twenty-fourth
- *    session): CF-IDC's iterations from a guess 0.5 m off stopped one
- *    upright's bay, 0.74 m, along the aisle with 90% of the points within
- *    5 cm and a plateau of 88-90% on either side; the truth put 96% there.
+ *    the window the search would cover (`window`,
+ *    CorrelativeScanSearch::halfWindow). Found on the same aisle with 1 cm
+ *    noise and nothing on a lattice (twenty-fourth session): CF-IDC's
+ *    iterations from a guess 0.5 m off stopped one upright's bay, 0.74 m,
+ *    along the aisle with 90% of the points within 5 cm and a plateau of
+ *    88-90% on either side; the truth put 96% there.
  * At a right estimate the few points that fix the position along an aisle
  * (its uprights, its ends) leave the reference when it slides, and the
  * share drops. */
