@@ -873,3 +873,20 @@ TEST(CfIdcMatcher, ARangeLatticeNoLongerHoldsTheMatchAtZeroMotion)
 		EXPECT_LT(std::abs(r.estimate.mean.x() - truth.x()), 3 * std::sqrt(r.estimate.cov(0, 0)));
 	}
 }
+
+// dequantize_extremum_chord is a length: a negative one is refused, naming
+// the key (every [ScanMatcher.*] section reads it).
+TEST(IdcMatcher, ANegativeExtremumChordIsRefused)
+{
+	registerClasses();
+	for (const std::string cls : {"featloc::IdcMatcher", "featloc::PcmFeatureMatcher"})
+	{
+		auto m = ScanMatcherFactory::create(cls);
+		const std::string section = ScanMatcherFactory::paramsSection(cls);
+		mrpt::config::CConfigFileMemory cfg;
+		cfg.setContent("[" + section + "]\ndequantize_extremum_chord = -0.5\n");
+		const std::string msg = test::errorMessageOf<ConfigError>([&] { m->loadParams(cfg, section); });
+		EXPECT_NE(msg.find("dequantize_extremum_chord"), std::string::npos) << msg;
+		EXPECT_NE(msg.find(section), std::string::npos) << msg;
+	}
+}

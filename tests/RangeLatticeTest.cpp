@@ -243,3 +243,73 @@ TEST(RangeLattice, ReadingsKeptOnTheirLevelShareOneError)
 	EXPECT_GT(moved, 10 * kept / 10);
 	EXPECT_GT(groups, 5u);
 }
+
+// dequantize_extremum_chord: a surface's nearest run of readings on one
+// level lies between two anchors on the same level boundary. On a flat wall
+// seen head on the chord through them is the wall, and the anchors beyond
+// lie on its line: the run goes on it either way. On a round thing (the
+// simulated office's plant pot, 0.25 m, seen from 0.65 m) the anchors
+// beyond are missing (its silhouette jumps to the wall behind) and the
+// chord is a different line from each viewpoint: with the key the run is
+// kept on its level, one shared rounding error, as a run without anchors.
+TEST(RangeLattice, ARoundThingsNearestRunStaysOnItsLevelAFlatWallsGoesOnItsChord)
+{
+	const double q = 0.16;
+	SyntheticRoom room;
+	// A flat wall 0.7 m ahead, head on; a pot to the left; the rest far.
+	room.add(0.7, -1.5, 0.7, 0.6);
+	room.addCircle(0.5, 0.75, 0.25);
+	room.add(-4, 4, 4, 4);
+	room.add(-4, -4, 4, -4);
+	auto scan = room.scan(CPose2D(0, 0, 0));
+	for (size_t i = 0; i < scan->getScanSize(); i++)
+		if (scan->getScanRangeValidity(i))
+			scan->setScanRange(i, static_cast<float>(q * std::round(scan->getScanRange(i) / q)));
+	const ScanPoints raw = ScanPoints::fromScan(*scan);
+	auto dequantized = [&](double maxChord) {
+		RangeLattice lattice;
+		lattice.maxExtremumChord = maxChord;
+		ScanPoints p = raw;
+		lattice.dequantize(p, q);
+		return p;
+	};
+	const ScanPoints chord = dequantized(0), kept = dequantized(0.5);
+	ASSERT_EQ(chord.size(), raw.size());
+	ASSERT_EQ(kept.size(), raw.size());
+	// The pot's nearest run: level 4 (0.56-0.72 m) towards it, 0.56 m of
+	// the pot's surface within 0.72 m; the wall's: level 4 within 13 deg
+	// of straight ahead (the anchors beyond, at 0.88 m, 37 deg out).
+	const double potBearing = std::atan2(0.75, 0.5);
+	size_t potRun = 0, wallRun = 0;
+	for (size_t i = 0; i < raw.size(); i++)
+	{
+		if (std::lround(raw[i].range / q) != 4) continue;
+		const bool towardsPot = std::abs(raw[i].bearing - potBearing) < mrpt::DEG2RAD(15);
+		const bool towardsWall = std::abs(raw[i].bearing) < mrpt::DEG2RAD(12);
+		if (towardsPot)
+		{
+			potRun++;
+			// On the chord without the key...
+			EXPECT_NE(chord[i].range, raw[i].range) << i;
+			EXPECT_EQ(chord[i].sharedErrorGroup, 0u) << i;
+			// ...kept on its level with it, sharing one error.
+			EXPECT_EQ(kept[i].range, raw[i].range) << i;
+			EXPECT_NE(kept[i].sharedErrorGroup, 0u) << i;
+			EXPECT_NEAR(kept[i].sharedRangeSigma, q / std::sqrt(12.0), 1e-6);
+		}
+		else if (towardsWall)
+		{
+			wallRun++;
+			// The wall's run goes on its chord either way: the wall.
+			EXPECT_EQ(kept[i].range, chord[i].range) << i;
+			EXPECT_EQ(kept[i].sharedErrorGroup, 0u) << i;
+			EXPECT_NEAR(kept[i].x, 0.7, 0.01) << i;
+		}
+	}
+	EXPECT_GE(potRun, 5u);
+	EXPECT_GE(wallRun, 5u);
+	// Everything else is as without the key.
+	size_t differ = 0;
+	for (size_t i = 0; i < raw.size(); i++) differ += kept[i].range != chord[i].range;
+	EXPECT_EQ(differ, potRun);
+}

@@ -52,6 +52,9 @@ void ScanMatcher::loadParams(
 			"must be a sigma in metres, >= 0 (0: off)");
 	config::read(cfg, section, "free_direction_from_guess", m_freeDirectionFromGuess);
 	config::read(cfg, section, "dequantize_ranges", m_dequantizeRanges);
+	config::read(cfg, section, "dequantize_extremum_chord", m_lattice.maxExtremumChord);
+	if (!(m_lattice.maxExtremumChord >= 0))
+		config::fail(cfg, section, "dequantize_extremum_chord", "must be a length in metres, >= 0 (0: off)");
 	m_fallback.reset();
 	m_followFallback = followFallback;
 	if (followFallback && !m_fallbackClass.empty())
@@ -94,6 +97,12 @@ void ScanMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::stri
 		"readings on a range lattice (RangeLattice: MRPT's simulated log, 0.16 m; some real "
 		"logs, 2.5-5 cm) are put back on their surfaces from the lattice's level crossings "
 		"before matching, and the covariance takes the lattice's cell as its least range noise");
+	config::write(cfg, section, "dequantize_extremum_chord", m_lattice.maxExtremumChord,
+		"[m] dequantize_ranges: a surface's nearest (or farthest) run of readings on one level, "
+		"between two anchors on the same level boundary, is kept on its level where its chord "
+		"is at most this long and the anchors beyond do not confirm a flat surface: on a round "
+		"thing the chord differs from each viewpoint (0: on the chord; off by default: it "
+		"helped the simulated office and hurt edmonton, doc/benchmarks.md)");
 	saveOwnParams(cfg, section);
 }
 

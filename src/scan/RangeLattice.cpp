@@ -180,6 +180,22 @@ size_t RangeLattice::dequantize(ScanPoints& scan, double q, double offset)
 	};
 	size_t moved = 0;
 	const size_t runs = m_runs.size();
+	// A flat surface puts the anchors beyond run j's (the next level
+	// boundary out, either side) on the line through its two anchors, to
+	// within a quarter of a step.
+	auto anchorsBeyondOnChord = [&](size_t j, double ax, double ay, double dx, double dy) {
+		if (j == 0 || j + 2 >= runs || m_runs[j - 1].first == 0) return false;
+		const size_t outerLeft = m_runs[j - 1].first - 1, outerRight = m_runs[j + 1].second;
+		if (!isAnchor(outerLeft) || !isAnchor(outerRight)) return false;
+		const double length = std::hypot(dx, dy);
+		if (!(length > 0)) return false;
+		auto offChord = [&](size_t i) {
+			double x, y;
+			anchor(i, x, y);
+			return std::abs((x - ax) * dy - (y - ay) * dx) / length;
+		};
+		return offChord(outerLeft) <= 0.25 * q && offChord(outerRight) <= 0.25 * q;
+	};
 	for (size_t j = 0; j < runs; j++)
 	{
 		const auto [s, e] = m_runs[j];
@@ -203,6 +219,17 @@ size_t RangeLattice::dequantize(ScanPoints& scan, double q, double offset)
 		anchor(a, ax, ay);
 		anchor(b, bx, by);
 		const double dx = bx - ax, dy = by - ay;
+		if (left && right && maxExtremumChord > 0 &&
+			(m_levels[s - 1] > m_levels[s]) == (m_levels[e + 1] > m_levels[s]) &&
+			std::hypot(dx, dy) <= maxExtremumChord && !anchorsBeyondOnChord(j, ax, ay, dx, dy))
+		{
+			// The nearest (or farthest) stretch of a surface: both anchors
+			// on one level boundary. The chord through them is the surface
+			// only where it is flat; on a round thing (a plant pot, a bin,
+			// a leg) it is a different line from each viewpoint. Kept.
+			keepOnLevel(s, e, s);
+			continue;
+		}
 		const double level = offset + q * static_cast<double>(m_levels[s]);
 		for (size_t i = s; i <= e; i++)
 		{

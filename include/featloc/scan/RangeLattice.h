@@ -73,6 +73,14 @@ class RangeLattice
 	 * the number of points moved. */
 	size_t dequantize(ScanPoints& scan, double q, double offset = 0);
 
+	/** [m] dequantize(): a run between two anchors on the same level
+	 * boundary (its neighbours both one level nearer, or both farther: the
+	 * nearest or farthest stretch of a surface) whose chord is at most
+	 * this long is kept on its level, as a run without anchors is, unless
+	 * the anchors beyond it lie on the chord's line (a flat surface seen
+	 * head on). 0: every such run goes on its chord. */
+	double maxExtremumChord = 0;
+
    private:
 	/** OpenCV's plan for the histogram's DFT (a cv::hal::DFT2D), made on
 	 * first use and kept: cv::dft makes one per call, a third of its 20 us.
