@@ -11,7 +11,7 @@
 #    > 2 deg, not flagged): their median error along the robot's x (the
 #    direction of travel) and y, and how many of them put the estimated
 #    forward motion within 5 cm of zero (the truth moved 8-15 cm).
-# Usage: scripts/bench-lattice-silent.sh [OUTDIR]   (about 4 min on 2 cores)
+# Usage: scripts/bench-lattice-silent.sh [OUTDIR]   (about 1 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-lattice-silent "$@"

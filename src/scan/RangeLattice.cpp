@@ -180,15 +180,24 @@ size_t RangeLattice::dequantize(ScanPoints& scan, double q, double offset)
 	};
 	size_t moved = 0;
 	const size_t runs = m_runs.size();
-	// A flat surface puts the anchors beyond run j's (the next level
-	// boundary out, either side) on the line through its two anchors, to
-	// within a quarter of a step.
-	auto anchorsBeyondOnChord = [&](size_t j, double ax, double ay, double dx, double dy) {
-		if (j == 0 || j + 2 >= runs || m_runs[j - 1].first == 0) return false;
-		const size_t outerLeft = m_runs[j - 1].first - 1, outerRight = m_runs[j + 1].second;
-		if (!isAnchor(outerLeft) || !isAnchor(outerRight)) return false;
-		const double length = std::hypot(dx, dy);
-		if (!(length > 0)) return false;
+	// The anchor beyond run j on its left (between run j - 1 and the run
+	// before it) and on its right (between runs j + 1 and j + 2); kNone
+	// where there is none.
+	constexpr size_t kNone = static_cast<size_t>(-1);
+	auto anchorBeyondLeft = [&](size_t j) {
+		return j > 0 && m_runs[j - 1].first > 0 && isAnchor(m_runs[j - 1].first - 1)
+			? m_runs[j - 1].first - 1
+			: kNone;
+	};
+	auto anchorBeyondRight = [&](size_t j) {
+		return j + 2 < runs && isAnchor(m_runs[j + 1].second) ? m_runs[j + 1].second : kNone;
+	};
+	// A flat surface puts the anchors beyond run j (the next level
+	// boundary out, either side) on the line through its two anchors A and
+	// A + (dx, dy), of that length, to within a quarter of a step.
+	auto anchorsBeyondOnChord = [&](size_t j, double ax, double ay, double dx, double dy, double length) {
+		const size_t outerLeft = anchorBeyondLeft(j), outerRight = anchorBeyondRight(j);
+		if (outerLeft == kNone || outerRight == kNone || !(length > 0)) return false;
 		auto offChord = [&](size_t i) {
 			double x, y;
 			anchor(i, x, y);
@@ -206,10 +215,10 @@ size_t RangeLattice::dequantize(ScanPoints& scan, double q, double offset)
 		size_t a, b;
 		if (left && right)
 			a = s - 1, b = e;
-		else if (left && m_runs[j - 1].first > 0 && isAnchor(m_runs[j - 1].first - 1))
-			a = m_runs[j - 1].first - 1, b = s - 1;
-		else if (right && j + 2 < runs && isAnchor(m_runs[j + 1].second))
-			a = e, b = m_runs[j + 1].second;
+		else if (left && anchorBeyondLeft(j) != kNone)
+			a = anchorBeyondLeft(j), b = s - 1;
+		else if (right && anchorBeyondRight(j) != kNone)
+			a = e, b = anchorBeyondRight(j);
 		else
 		{
 			keepOnLevel(s, e, s);
@@ -218,10 +227,10 @@ size_t RangeLattice::dequantize(ScanPoints& scan, double q, double offset)
 		double ax, ay, bx, by;
 		anchor(a, ax, ay);
 		anchor(b, bx, by);
-		const double dx = bx - ax, dy = by - ay;
+		const double dx = bx - ax, dy = by - ay, chord = std::hypot(dx, dy);
 		if (left && right && maxExtremumChord > 0 &&
 			(m_levels[s - 1] > m_levels[s]) == (m_levels[e + 1] > m_levels[s]) &&
-			std::hypot(dx, dy) <= maxExtremumChord && !anchorsBeyondOnChord(j, ax, ay, dx, dy))
+			chord <= maxExtremumChord && !anchorsBeyondOnChord(j, ax, ay, dx, dy, chord))
 		{
 			// The nearest (or farthest) stretch of a surface: both anchors
 			// on one level boundary. The chord through them is the surface
