@@ -21,7 +21,7 @@ bench_init bench-pcm "$@"
 # addition switched off, doc/pcm-matcher.md), PCM with them (config.ini),
 # IcpMatcher.
 PROTOCOL="--set ScanMatcher.PcmFeatureMatcher:initial_bounds_source=config --perturb-xy 0.3 --perturb-yaw-deg 10 --seed 1"
-PAPER_PCM="coarse_search=false;dequantize_ranges=false;fallback_class=;refinement=none;pair_gate_chi2=0;guess_gate_chi2=0;dmax_corners=published;line_fit=tls;grazing_incidence_DEG=0;motion_window_bounds=0;min_matched_features=1;max_translation_sigma=1e9;max_rotation_sigma_DEG=1e9"
+PAPER_PCM="coarse_search=false;dequantize_ranges=false;fallback_class=;refinement=none;pair_gate_chi2=0;guess_gate_chi2=0;dmax_corners=published;line_fit=tls;grazing_incidence_DEG=0;merge_step_points=0;line_outlier_sigmas=0;collinear_fusion_chi2=0;motion_window_bounds=0;min_matched_features=1;max_translation_sigma=1e9;max_rotation_sigma_DEG=1e9"
 MATCHERS="PCM as published=featloc::PcmFeatureMatcher{$PAPER_PCM},PCM + featloc additions=featloc::PcmFeatureMatcher,IcpMatcher=featloc::IcpMatcher"
 HEADER=--header
 

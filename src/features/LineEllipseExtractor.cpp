@@ -66,6 +66,8 @@ void LineEllipseExtractor::Parameters::loadFromConfigFile(
 	read(c, s, "trim_sigmas", trim_sigmas);
 	read(c, s, "merge_sigmas", merge_sigmas);
 	read(c, s, "merge_step_points", merge_step_points);
+	read(c, s, "line_outlier_sigmas", line_outlier_sigmas);
+	read(c, s, "collinear_fusion_chi2", collinear_fusion_chi2);
 	read(c, s, "max_line_sigma", max_line_sigma);
 	read(c, s, "min_points", min_points);
 	read(c, s, "min_length", min_length);
@@ -83,6 +85,9 @@ void LineEllipseExtractor::Parameters::loadFromConfigFile(
 	require(merge_sigmas > 0, c, s, "merge_sigmas", "> 0");
 	require(merge_step_points != 1, c, s, "merge_step_points",
 		"0 (off) or at least 2 (one point beyond the threshold is a noise spike)");
+	require(line_outlier_sigmas >= 0, c, s, "line_outlier_sigmas", ">= 0 (0: off)");
+	require(collinear_fusion_chi2 >= 0, c, s, "collinear_fusion_chi2",
+		">= 0 (a chi-square value for 2 degrees of freedom; 0: off)");
 	require(max_line_sigma > 0, c, s, "max_line_sigma", "> 0");
 	require(min_points >= 3, c, s, "min_points", ">= 3");
 	require(min_length >= 0, c, s, "min_length", ">= 0");
@@ -110,6 +115,12 @@ void LineEllipseExtractor::Parameters::saveToConfigFile(
 	write(c, s, "merge_step_points", merge_step_points,
 		"features: ... unless this many consecutive points of the joint line lie beyond the split "
 		"threshold on one side (a step, not a spike; 0: off)");
+	write(c, s, "line_outlier_sigmas", line_outlier_sigmas,
+		"features: drop a line's points farther than this many of their sigmas (range noise at "
+		"their incidence) from it, and refit (0: off)");
+	write(c, s, "collinear_fusion_chi2", collinear_fusion_chi2,
+		"features: consecutive lines whose (rho, alpha) differ by less than this chi-square "
+		"(2 dof) become one line fitted to their points (0: off)");
 	write(c, s, "max_line_sigma", max_line_sigma,
 		"[m] features: max RMS residual of a line, eq. (8)");
 	write(c, s, "min_points", min_points, "features: min points of a line");
@@ -309,8 +320,9 @@ bool LineEllipseExtractor::Parameters::operator==(const Parameters& o) const
 {
 	auto fields = [](const Parameters& p) {
 		return std::tie(p.max_point_gap, p.grazing_incidence, p.split_distance_min, p.split_sigmas,
-			p.trim_sigmas, p.merge_sigmas, p.merge_step_points, p.max_line_sigma, p.min_points,
-			p.min_length, p.ellipse_max_length, p.refine_iterations, p.min_point_sigma,
+			p.trim_sigmas, p.merge_sigmas, p.merge_step_points, p.line_outlier_sigmas,
+			p.collinear_fusion_chi2, p.max_line_sigma, p.min_points, p.min_length,
+			p.ellipse_max_length, p.refine_iterations, p.min_point_sigma,
 			p.ellipse_shape_sigma_ratio, p.line_fit);
 	};
 	return fields(*this) == fields(o);
@@ -393,11 +405,13 @@ void LineEllipseExtractor::extractAnew(const ScanPoints& s, std::vector<ScanFeat
 		}
 		out.push_back(feat);
 	}
-	setCovariances(s, out);
+	const double pooled2 = pooledRangeVariance(s, out);
+	setCovariances(s, out, pooled2);
+	cleanAndFuseLines(s, out, pooled2);	 // 7., 8.
 }
 
-void LineEllipseExtractor::setCovariances(
-	const ScanPoints& s, std::vector<ScanFeature>& features) const
+double LineEllipseExtractor::pooledRangeVariance(
+	const ScanPoints& s, const std::vector<ScanFeature>& features) const
 {
 	// Range noise of the scan, pooled over every feature's points: a point
 	// at incidence theta to its line (theta between the beam and the
@@ -421,85 +435,198 @@ void LineEllipseExtractor::setCovariances(
 		points += f.lastPoint - f.firstPoint + 1;
 	}
 	const size_t dof = points > 2 * features.size() ? points - 2 * features.size() : 0;
-	const double pooled2 = std::max(rangeNoiseFloor * rangeNoiseFloor,
+	return std::max(rangeNoiseFloor * rangeNoiseFloor,
 		dof > 0 && sumC2 > 0 ? sumR2 / sumC2 * static_cast<double>(points) / static_cast<double>(dof)
 							 : 0.0);
-	const double floor2 = params.min_point_sigma * params.min_point_sigma;
-
-	for (auto& f : features)
-	{
-		const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
-		const size_t n = f.lastPoint - f.firstPoint + 1;
-		const double dn = static_cast<double>(n);
-		// Per-point perpendicular variances v_k; a feature fitting much worse
-		// than the scan's noise predicts (a curved or cluttered surface)
-		// keeps its own, larger residual variance.
-		double predicted = 0;
-		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
-		{
-			const auto& p = s.points[k];
-			const double cosT = (p.x * ca + p.y * sa) / p.range;
-			predicted += std::max(floor2, pooled2 * cosT * cosT);
-		}
-		predicted /= dn;
-		const double own = f.sigma * f.sigma * dn / (dn - 2);
-		const double inflate = own > 2 * predicted ? own / predicted : 1.0;
-		if (f.kind == ScanFeature::Kind::Ellipse)
-		{
-			// Centroid: the points' noise (along their beams, taken
-			// isotropic here) averaged, plus the shift of the visible part
-			// of an object between viewpoints.
-			const double shape = params.ellipse_shape_sigma_ratio * f.length;
-			const double var = inflate * std::max(floor2, pooled2) / dn + shape * shape;
-			f.cxx = f.cyy = var;
-			f.cxy = 0;
-			continue;
-		}
-		if (params.line_fit == "weighted")
-		{
-			weightedRefit(s, f, inflate, pooled2, floor2);
-			continue;
-		}
-		double cxm = 0, cym = 0;
-		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
-		{
-			cxm += s.points[k].x;
-			cym += s.points[k].y;
-		}
-		cxm /= dn;
-		cym /= dn;
-		double sumV = 0, sumS2 = 0, sumSV = 0, sumS2V = 0;
-		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
-		{
-			const auto& p = s.points[k];
-			const double cosT = (p.x * ca + p.y * sa) / p.range;
-			const double v = inflate * std::max(floor2, pooled2 * cosT * cosT);
-			const double sk = -(p.x - cxm) * sa + (p.y - cym) * ca;
-			sumV += v;
-			sumS2 += sk * sk;
-			sumSV += sk * v;
-			sumS2V += sk * sk * v;
-		}
-		// Unweighted TLS with perpendicular errors e_k of variances v_k: a
-		// point at s_k along the line (from the centroid) is off the fitted
-		// line by e_k + (s_c + s_k) d(alpha) - d(rho), so the fit gives
-		// d(alpha) = -sum s_k e_k / sum s_k^2 and d(rho) = mean(e) + s_c d(alpha)
-		// (s_c = centroid . u, u = (-sin alpha, cos alpha)). The mean error
-		// and the tilt are correlated when v_k varies along the line.
-		const double sc = -cxm * sa + cym * ca;
-		const double vA = sumS2V / (sumS2 * sumS2);
-		const double cEA = -sumSV / (dn * sumS2);
-		const double vR = sumV / (dn * dn) + 2 * sc * cEA + sc * sc * vA;
-		const double cRA = cEA + sc * vA;
-		f.varRho = vR;
-		f.varAlpha = vA;
-		f.covRhoAlpha = cRA;
-		setFootPointCovariance(f);
-	}
 }
 
-void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, double inflate,
-	double pooled2, double floor2)
+void LineEllipseExtractor::setCovariances(
+	const ScanPoints& s, std::vector<ScanFeature>& features, double pooled2) const
+{
+	for (auto& f : features)
+		setCovariance(&s.points[f.firstPoint], f.lastPoint - f.firstPoint + 1, f, pooled2);
+}
+
+void LineEllipseExtractor::setCovariance(
+	const ScanPoint* pts, size_t n, ScanFeature& f, double pooled2) const
+{
+	const double floor2 = params.min_point_sigma * params.min_point_sigma;
+	const double ca = std::cos(f.alpha), sa = std::sin(f.alpha);
+	const double dn = static_cast<double>(n);
+	// Per-point perpendicular variances v_k; a feature fitting much worse
+	// than the scan's noise predicts (a curved or cluttered surface)
+	// keeps its own, larger residual variance.
+	double predicted = 0;
+	for (size_t k = 0; k < n; k++)
+	{
+		const auto& p = pts[k];
+		const double cosT = (p.x * ca + p.y * sa) / p.range;
+		predicted += std::max(floor2, pooled2 * cosT * cosT);
+	}
+	predicted /= dn;
+	const double own = f.sigma * f.sigma * dn / (dn - 2);
+	const double inflate = own > 2 * predicted ? own / predicted : 1.0;
+	if (f.kind == ScanFeature::Kind::Ellipse)
+	{
+		// Centroid: the points' noise (along their beams, taken
+		// isotropic here) averaged, plus the shift of the visible part
+		// of an object between viewpoints.
+		const double shape = params.ellipse_shape_sigma_ratio * f.length;
+		const double var = inflate * std::max(floor2, pooled2) / dn + shape * shape;
+		f.cxx = f.cyy = var;
+		f.cxy = 0;
+		return;
+	}
+	if (params.line_fit == "weighted")
+	{
+		weightedRefit(pts, n, f, inflate, pooled2, floor2);
+		return;
+	}
+	double cxm = 0, cym = 0;
+	for (size_t k = 0; k < n; k++)
+	{
+		cxm += pts[k].x;
+		cym += pts[k].y;
+	}
+	cxm /= dn;
+	cym /= dn;
+	double sumV = 0, sumS2 = 0, sumSV = 0, sumS2V = 0;
+	for (size_t k = 0; k < n; k++)
+	{
+		const auto& p = pts[k];
+		const double cosT = (p.x * ca + p.y * sa) / p.range;
+		const double v = inflate * std::max(floor2, pooled2 * cosT * cosT);
+		const double sk = -(p.x - cxm) * sa + (p.y - cym) * ca;
+		sumV += v;
+		sumS2 += sk * sk;
+		sumSV += sk * v;
+		sumS2V += sk * sk * v;
+	}
+	// Unweighted TLS with perpendicular errors e_k of variances v_k: a
+	// point at s_k along the line (from the centroid) is off the fitted
+	// line by e_k + (s_c + s_k) d(alpha) - d(rho), so the fit gives
+	// d(alpha) = -sum s_k e_k / sum s_k^2 and d(rho) = mean(e) + s_c d(alpha)
+	// (s_c = centroid . u, u = (-sin alpha, cos alpha)). The mean error
+	// and the tilt are correlated when v_k varies along the line.
+	const double sc = -cxm * sa + cym * ca;
+	const double vA = sumS2V / (sumS2 * sumS2);
+	const double cEA = -sumSV / (dn * sumS2);
+	const double vR = sumV / (dn * dn) + 2 * sc * cEA + sc * sc * vA;
+	const double cRA = cEA + sc * vA;
+	f.varRho = vR;
+	f.varAlpha = vA;
+	f.covRhoAlpha = cRA;
+	setFootPointCovariance(f);
+}
+
+bool LineEllipseExtractor::sameLine(const ScanFeature& a, const ScanFeature& b) const
+{
+	// The two lines' (rho, alpha) are independent estimates (disjoint
+	// points); their difference against the sum of their covariances is
+	// chi-square with 2 degrees of freedom if they are one line. A line
+	// through the sensor's side of the origin may come out with alpha
+	// turned by pi and rho negated: compare it so.
+	double dAlpha = mrpt::math::wrapToPi(a.alpha - b.alpha);
+	double rhoB = b.rho, covB = b.covRhoAlpha;
+	if (std::abs(dAlpha) > M_PI / 2)
+	{
+		dAlpha = mrpt::math::wrapToPi(dAlpha - M_PI);
+		rhoB = -rhoB;
+		covB = -covB;
+	}
+	const double dRho = a.rho - rhoB;
+	const double sRR = a.varRho + b.varRho, sAA = a.varAlpha + b.varAlpha,
+				 sRA = a.covRhoAlpha + covB;
+	const double det = sRR * sAA - sRA * sRA;
+	if (!(det > 0)) return false;
+	const double d2 = (sAA * dRho * dRho - 2 * sRA * dRho * dAlpha + sRR * dAlpha * dAlpha) / det;
+	return d2 <= params.collinear_fusion_chi2;
+}
+
+bool LineEllipseExtractor::dropOutliers(LineFit& fit, double pooled2)
+{
+	// A point's perpendicular sigma under range noise at its incidence, as
+	// the covariance takes it; points beyond line_outlier_sigmas of it are
+	// not on the line (a rack's upright, its side seen obliquely, the
+	// corner of an adjoining wall), refitted until none is (3 passes at
+	// most). Never below min_points: then the line keeps its points.
+	std::vector<ScanPoint>& pts = m_linePoints;
+	const double k2 = params.line_outlier_sigmas * params.line_outlier_sigmas;
+	const double floor2 = params.min_point_sigma * params.min_point_sigma;
+	bool dropped = false;
+	for (int pass = 0; pass < 3 && k2 > 0; pass++)
+	{
+		const double ca = std::cos(fit.alpha), sa = std::sin(fit.alpha);
+		auto outlier = [&](const ScanPoint& p) {
+			const double cosT = (p.x * ca + p.y * sa) / p.range;
+			const double r = fit.residual(p.x, p.y);
+			return r * r > k2 * std::max(floor2, pooled2 * cosT * cosT);
+		};
+		const size_t kept =
+			pts.size() - static_cast<size_t>(std::count_if(pts.begin(), pts.end(), outlier));
+		if (kept == pts.size() || kept < params.min_points) break;
+		pts.erase(std::remove_if(pts.begin(), pts.end(), outlier), pts.end());
+		fit = LineFit::fit(pts.data(), pts.size());
+		dropped = true;
+	}
+	return dropped;
+}
+
+void LineEllipseExtractor::refitLine(ScanFeature& f, const LineFit& fit, double pooled2) const
+{
+	f.rho = fit.rho;
+	f.alpha = fit.alpha;
+	f.sigma = fit.sigma;
+	f.length = fit.length;
+	setLineParameters(f);
+	setCovariance(m_linePoints.data(), m_linePoints.size(), f, pooled2);
+}
+
+void LineEllipseExtractor::cleanAndFuseLines(
+	const ScanPoints& s, std::vector<ScanFeature>& features, double pooled2)
+{
+	// Steps 7 and 8, one line at a time in bearing order: m_linePoints
+	// holds the points of the last line kept, which the next line may join.
+	const bool fuse = params.collinear_fusion_chi2 > 0;
+	if (!fuse && !(params.line_outlier_sigmas > 0)) return;
+	std::vector<ScanPoint>& pts = m_linePoints;
+	size_t out = 0;
+	long lastLine = -1;	 // index in the compacted list of the last line kept
+	for (size_t i = 0; i < features.size(); i++)
+	{
+		const ScanFeature f = features[i];
+		const auto first = s.points.begin() + f.firstPoint, last = s.points.begin() + f.lastPoint + 1;
+		if (f.kind == ScanFeature::Kind::Line && fuse && lastLine >= 0 &&
+			sameLine(features[static_cast<size_t>(lastLine)], f))
+		{
+			// 8. One line with the last: fitted to both lines' points (the
+			// last's kept points and f's), not to what lies between.
+			ScanFeature& g = features[static_cast<size_t>(lastLine)];
+			pts.insert(pts.end(), first, last);
+			LineFit fit = LineFit::fit(pts.data(), pts.size());
+			dropOutliers(fit, pooled2);
+			g.firstPoint = std::min(g.firstPoint, f.firstPoint);
+			g.lastPoint = std::max(g.lastPoint, f.lastPoint);
+			refitLine(g, fit, pooled2);
+			continue;
+		}
+		features[out] = f;
+		if (f.kind == ScanFeature::Kind::Line)
+		{
+			// 7. The line's outliers; a line that has none keeps the fit
+			// and covariance it has.
+			lastLine = static_cast<long>(out);
+			pts.assign(first, last);
+			LineFit fit = LineFit::fit(pts.data(), pts.size());
+			if (dropOutliers(fit, pooled2)) refitLine(features[out], fit, pooled2);
+		}
+		out++;
+	}
+	features.resize(out);
+}
+
+void LineEllipseExtractor::weightedRefit(const ScanPoint* pts, size_t n, ScanFeature& f,
+	double inflate, double pooled2, double floor2)
 {
 	// Weighted TLS, w_k = 1 / v_k with v_k the point's perpendicular
 	// variance at the incidence the previous fit gives; twice (the second
@@ -514,8 +641,7 @@ void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, do
 		// The normal: the weighted scatter's direction of least spread
 		// (eq. 4 on weighted sums), through the weighted centroid.
 		PointScatter scatter;
-		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
-			scatter.add(s.points[k].x, s.points[k].y, weight(s.points[k], ca, sa));
+		for (size_t k = 0; k < n; k++) scatter.add(pts[k].x, pts[k].y, weight(pts[k], ca, sa));
 		const double sw = scatter.weight(), mx = scatter.cx(), my = scatter.cy();
 		const PointScatter::Line line = scatter.line();
 		double alpha = std::atan2(line.ny, line.nx);
@@ -532,9 +658,9 @@ void LineEllipseExtractor::weightedRefit(const ScanPoints& s, ScanFeature& f, do
 		// centroid from sum w, uncorrelated there; rho = offset + s_c alpha.
 		const double na = std::cos(f.alpha), nb = std::sin(f.alpha);
 		double sumWS2 = 0;
-		for (uint32_t k = f.firstPoint; k <= f.lastPoint; k++)
+		for (size_t k = 0; k < n; k++)
 		{
-			const auto& p = s.points[k];
+			const auto& p = pts[k];
 			const double w = weight(p, na, nb);
 			const double sk = -(p.x - mx) * nb + (p.y - my) * na;
 			sumWS2 += w * sk * sk;

@@ -58,7 +58,22 @@ namespace featloc
  *  6. selection, as in the paper: lines with sigma <= max_line_sigma, at
  *     least min_points points and min_length long; those up to
  *     ellipse_max_length long become ellipsoidal clusters (centre of
- *     gravity), longer ones linear clusters.
+ *     gravity), longer ones linear clusters;
+ *  7. outliers (featloc's, off by default; line_outlier_sigmas): a line's points
+ *     farther from it than line_outlier_sigmas of their own sigma (the
+ *     scan's range noise at their incidence, as the covariance takes it)
+ *     are dropped and the line refitted: the end trimming of step 5 does
+ *     not reach a rack's upright or its side inside a run, or a few
+ *     points of it at the run's grazing end;
+ *  8. collinear fusion (featloc's, off by default; collinear_fusion_chi2):
+ *     consecutive lines (an ellipse between them does not part them) whose
+ *     (rho, alpha) agree within their covariances (chi-square, 2 dof) are
+ *     fitted as one line to their points, leaving out what lies between: a
+ *     wall seen through a door, a rack's face between its uprights, which
+ *     step 3 keeps apart. A direction's information grows with the square
+ *     of the line's length, so the pieces of one face hold far less about
+ *     the rotation than the face does. The fused line's firstPoint and
+ *     lastPoint span its pieces (and what lies between).
  *
  * Feature covariances: the scan's range noise s_r is estimated once,
  * pooled over every feature's points (a point at incidence theta lies
@@ -102,6 +117,17 @@ class LineEllipseExtractor
 		 * line lie beyond the split threshold on one side (0: the RMS test
 		 * alone). */
 		unsigned int merge_step_points = 3;
+		/** Step 7: a line's points farther from it than this many of their
+		 * sigmas (range noise at their incidence) are dropped and the line
+		 * refitted; 0: off (the default: it cost on the real calibration
+		 * log, doc/benchmarks.md, "Issue 15, twenty-sixth session"; 3 was
+		 * measured). */
+		double line_outlier_sigmas = 0;
+		/** Step 8: consecutive lines whose (rho, alpha) differ by at most
+		 * this chi-square (2 dof; 9.21: 99%) become one line fitted to their
+		 * points; 0: off (the default, as step 7; 9.21 was measured, with
+		 * step 7 at 3: alone it makes a line of pieces with outliers). */
+		double collinear_fusion_chi2 = 0;
 		double max_line_sigma = 0.05;  //!< [m] sigma of eq. (8)
 		unsigned int min_points = 5;
 		double min_length = 0.2;  //!< [m]
@@ -148,12 +174,29 @@ class LineEllipseExtractor
 		double threshold) const;
 	void split(const ScanPoints& s, size_t first, size_t last, double noise);
 	void mergeRuns(const ScanPoints& s);
-	void setCovariances(const ScanPoints& s, std::vector<ScanFeature>& features) const;
+	/** The scan's range noise variance, pooled over the features' points
+	 * (at least rangeNoiseFloor^2). */
+	double pooledRangeVariance(const ScanPoints& s, const std::vector<ScanFeature>& features) const;
+	void setCovariances(
+		const ScanPoints& s, std::vector<ScanFeature>& features, double pooled2) const;
+	/** One feature's covariance (and, line_fit = weighted, its refit) from
+	 * its n points pts[0..n). */
+	void setCovariance(const ScanPoint* pts, size_t n, ScanFeature& f, double pooled2) const;
 	/** line_fit = weighted: `f` refitted by weighted TLS with each point's
 	 * perpendicular variance inflate * max(floor2, pooled2 cos^2 theta) as
 	 * its inverse weight, and its covariances set from that fit. */
-	static void weightedRefit(const ScanPoints& s, ScanFeature& f, double inflate, double pooled2,
-		double floor2);
+	static void weightedRefit(const ScanPoint* pts, size_t n, ScanFeature& f, double inflate,
+		double pooled2, double floor2);
+	/** Whether lines a and b (disjoint points) are one line: their (rho,
+	 * alpha) differ by at most collinear_fusion_chi2 (step 8). */
+	bool sameLine(const ScanFeature& a, const ScanFeature& b) const;
+	/** Step 7 on m_linePoints, fitted as `fit`: drops the outliers and
+	 * refits `fit`; whether any was dropped. */
+	bool dropOutliers(LineFit& fit, double pooled2);
+	/** `f` set from `fit` of m_linePoints, its covariance with them. */
+	void refitLine(ScanFeature& f, const LineFit& fit, double pooled2) const;
+	/** Steps 7 and 8. */
+	void cleanAndFuseLines(const ScanPoints& s, std::vector<ScanFeature>& features, double pooled2);
 	void refine(const ScanPoints& s);
 
 	void extractAnew(const ScanPoints& scan, std::vector<ScanFeature>& out);
@@ -174,5 +217,6 @@ class LineEllipseExtractor
 	std::vector<std::pair<Run, LineFit>> m_runFits;	 //!< refine(): per run, its last fit
 	std::vector<Run> m_stack;
 	PointNoiseEstimator m_noise;  //!< robust point noise of a cluster (step 2)
+	std::vector<ScanPoint> m_linePoints;	//!< steps 7, 8: the last line's kept points
 };
 }  // namespace featloc

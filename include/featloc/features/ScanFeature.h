@@ -28,7 +28,11 @@ struct ScanFeature
 	double rho = 0, alpha = 0;	//!< line parameters (lines only)
 	double length = 0;	//!< [m]
 	double sigma = 0;  //!< [m] RMS residual of the fit, eq. (8)
-	uint32_t firstPoint = 0, lastPoint = 0;	 //!< indices in the ScanPoints
+	/** Indices in the ScanPoints of its first and last point: the span of
+	 * its points (a line fitted over several pieces, LineEllipseExtractor's
+	 * step 8, spans what lies between them too; its outliers, step 7, are
+	 * inside). */
+	uint32_t firstPoint = 0, lastPoint = 0;
 	double cxx = 0, cxy = 0, cyy = 0;  //!< covariance of f [m^2]
 	/** Lines: covariance of (rho, alpha) from the TLS fit. */
 	double varRho = 0, varAlpha = 0, covRhoAlpha = 0;
