@@ -376,7 +376,7 @@ MatchResult ScanMatcher::matchInSensorFrames(
 			matchFromCoarseSearch(reference, current, window, r);
 	}
 	else
-		matchPoints(reference, current, initialGuess, r);
+		matchPointsFinite(reference, current, initialGuess, r);
 	// Every failure has a kind; the matcher's own reasons are "matcher".
 	if (!r.success && r.failureKind.empty()) r.failureKind = "matcher";
 	if (!r.success && r.failureKind == "matcher" && m_freeDirectionFromGuess &&
@@ -469,6 +469,7 @@ bool aSlidPoseFitsAsWell(const ScanPoints& reference, const ScanPoints& current,
 		lo = std::max(lo, std::min(a, b));
 		hi = std::min(hi, std::max(a, b));
 	}
+	if (!std::isfinite(lo) || !std::isfinite(hi)) return false;  // no window to slide in
 	// At most kMaxSteps slid poses each way, whatever confirmDistance is.
 	constexpr double kMaxSteps = 64;
 	const double step = std::max(d, std::max(std::abs(lo), std::abs(hi)) / kMaxSteps);
@@ -477,6 +478,24 @@ bool aSlidPoseFitsAsWell(const ScanPoints& reference, const ScanPoints& current,
 	return false;
 }
 }  // namespace
+
+void ScanMatcher::matchPointsFinite(const ScanPoints& reference, const ScanPoints& current,
+	const mrpt::poses::CPosePDFGaussian& initialGuess, MatchResult& r)
+{
+	matchPoints(reference, current, initialGuess, r);
+	if (!r.success) return;
+	// A success whose estimate or covariance is not finite is no match:
+	// what follows (the confirmation probe's slides, the EKF's update) would
+	// take it as one, and the probe's slides along a NaN direction never end.
+	const auto& m = r.estimate.mean;
+	bool finite = std::isfinite(m.x()) && std::isfinite(m.y()) && std::isfinite(m.phi());
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++) finite = finite && std::isfinite(r.estimate.cov(i, j));
+	if (finite) return;
+	r.success = false;
+	r.failureKind = "non_finite";
+	r.failureReason = "the matcher's estimate or its covariance is not finite (NaN or infinite)";
+}
 
 bool ScanMatcher::matchConfirmedFromGuess(const ScanPoints& reference,
 	const ScanPoints& current, const mrpt::poses::CPosePDFGaussian& initialGuess,
@@ -501,7 +520,7 @@ bool ScanMatcher::matchConfirmedFromGuess(const ScanPoints& reference,
 	// points fix that direction only weakly, the confirmation must also
 	// fail at slid poses (coarse_confirm_probe).
 	MatchResult local = r;
-	matchPoints(reference, current, initialGuess, local);
+	matchPointsFinite(reference, current, initialGuess, local);
 	if (!local.success) return false;
 	const double share = ReferenceOverlap::share(
 		reference, current, local.estimate.mean, m_coarse.options.confirmDistance, minShare);
@@ -529,7 +548,7 @@ void ScanMatcher::matchFromCoarseSearch(const ScanPoints& reference, const ScanP
 		r.failureReason = coarse.failureReason;
 		return;
 	}
-	matchPoints(reference, current,
+	matchPointsFinite(reference, current,
 		mrpt::poses::CPosePDFGaussian(coarse.best, coarse.gridCovariance()), r);
 	if (!r.success) return;
 	// The estimate against the search's other solutions (and its own best,

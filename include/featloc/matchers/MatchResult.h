@@ -34,8 +34,9 @@ struct MatchResult
 	 * coarse search), "left_window" (the iterations converged outside the
 	 * window the coarse search scored, to an estimate not clearly better than
 	 * a solution inside it), "ambiguous" (another solution explains the scan about
-	 * as well as the estimate), "guess_gate", or "matcher" (the matcher's
-	 * own reasons). */
+	 * as well as the estimate), "guess_gate", "non_finite" (the matcher
+	 * reported success with a NaN or infinite estimate or covariance), or
+	 * "matcher" (the matcher's own reasons). */
 	std::string failureKind;
 	/** A success that the coarse search found ambiguous (coarse_on_ambiguity
 	 * = inflate): the estimate's covariance was grown to cover every

@@ -177,6 +177,10 @@ class ScanMatcher : public mrpt::rtti::CObject
 	double m_fallbackAboveSigmaXY = 0;
 
    private:
+	/** matchPoints(), its success turned into a failure of kind
+	 * "non_finite" where the estimate or its covariance is not finite. */
+	void matchPointsFinite(const ScanPoints& reference, const ScanPoints& current,
+		const mrpt::poses::CPosePDFGaussian& initialGuess, MatchResult& result);
 	/** The lattice of `scan`'s readings (the scan before it too, the
 	 * previous call's, is remembered: in a sequence each scan is matched
 	 * as current and then as reference), undone if dequantize_ranges.
