@@ -39,6 +39,26 @@ bench_calibration_scenes() {
     bench "orebro" "$LASER2D/orebro-corrected.log.gz" --perturb-xy 0.3 --perturb-yaw-deg 10
   fi
 }
+# The calibration scenes on MRPT's 0.16 m range lattice: the simulated
+# office and lab at 1 cm noise, as $OUT/{office,lab}-1cm-lattice.rawlog
+# (+ .gt.txt), made once per OUT.
+sim_calibration_lattices() {
+  local scene
+  for scene in office lab; do
+    sim_lattice "$scene" "$scene-1cm-lattice" --set Laser:range_noise=0.01
+  done
+}
+# Those two through the caller's `bench NAME DATA ARGS...` as "sim SCENE
+# (1 cm)LABEL", further arguments to each (the protocol's).
+bench_calibration_lattices() { # label, bench args...
+  local scene label="$1"
+  shift
+  sim_calibration_lattices
+  for scene in office lab; do
+    bench "sim $scene (1 cm)$label" "$OUT/$scene-1cm-lattice.rawlog" \
+      -g "$OUT/$scene-1cm-lattice.gt.txt" "$@"
+  done
+}
 # Issue 15's two per-pair tables: the calibration scenes, then the held-out
 # ones, each through the caller's `bench` (HEADER set again for the second
 # table), under "### [PREFIX]Calibration scenes" and "### [PREFIX]Held out".

@@ -48,10 +48,7 @@ echo "### Calibration scenes of the other choices"
 echo
 HEADER=--header
 bench_calibration_scenes
-for w in office lab; do
-  sim_lattice "$w" "$w-1cm-lattice" --set Laser:range_noise=0.01
-  bench "sim $w (1 cm), lattice" "$OUT/$w-1cm-lattice.rawlog" -g "$OUT/$w-1cm-lattice.gt.txt" "${PB[@]}"
-done
+bench_calibration_lattices ", lattice" "${PB[@]}"
 echo
 echo "### Held out"
 echo

@@ -40,10 +40,7 @@ machine_line
 echo
 echo "### Calibration scenes"
 echo
-for w in office lab; do
-  sim_lattice "$w" "$w-1cm-lattice" --set Laser:range_noise=0.01
-  bench "sim $w (1 cm), lattice" "$OUT/$w-1cm-lattice.rawlog" -g "$OUT/$w-1cm-lattice.gt.txt" "${PB[@]}"
-done
+bench_calibration_lattices ", lattice" "${PB[@]}"
 [ -d "$LASER2D" ] && bench orebro "$LASER2D/orebro-corrected.log.gz" "${PB[@]}"
 echo
 echo "### Held out"

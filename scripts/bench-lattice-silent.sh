@@ -56,9 +56,7 @@ silent_pairs() { # name, pairs.tsv, gt
 }
 
 machine_line
-for w in office lab; do
-  sim_lattice "$w" "$w-1cm-lattice" --set Laser:range_noise=0.01
-done
+sim_calibration_lattices
 sim_lattice corridor-people corridor-people-lattice
 sim_lattice corridor-people corridor-people-lattice-frozen --frozen
 DATA=("office-1cm-lattice:sim office (1 cm), lattice" "lab-1cm-lattice:sim lab (1 cm), lattice"

@@ -39,11 +39,7 @@ bench() { # name, data, extra args...
 
 machine_line
 bench_calibration_and_held_out
-for w in office lab; do
-  sim_lattice "$w" "$w-1cm-lattice" --set Laser:range_noise=0.01
-  bench "sim $w (1 cm, 0.16 m lattice)" "$OUT/$w-1cm-lattice.rawlog" -g "$OUT/$w-1cm-lattice.gt.txt" \
-    --perturb-xy 0.3 --perturb-yaw-deg 10
-done
+bench_calibration_lattices ", 0.16 m lattice" --perturb-xy 0.3 --perturb-yaw-deg 10
 for w in corridor-people room-moving-objects; do
   sim_lattice "$w" "$w-lattice" --seed 1
   bench "$w (0.16 m lattice)" "$OUT/$w-lattice.rawlog" -g "$OUT/$w-lattice.gt.txt" \

@@ -24,10 +24,8 @@ source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-range-lattice "$@"
 
 HELD_OUT="corridor-people hall-people room-moving-objects"
-for w in office lab; do
-  sim_1cm "$w"
-  sim_lattice "$w" "$w-1cm-lattice" --set Laser:range_noise=0.01
-done
+for w in office lab; do sim_1cm "$w"; done
+sim_calibration_lattices
 for w in $HELD_OUT; do
   [ -f "$OUT/$w.rawlog" ] || "$BIN/featloc-sim" "$ROOT/worlds/$w.ini" --out "$OUT/$w" -q > /dev/null
   for seed in 1 2 3; do sim_lattice "$w" "$w-lattice-seed$seed" --seed "$seed"; done
