@@ -59,6 +59,49 @@ bench_calibration_lattices() { # label, bench args...
       -g "$OUT/$scene-1cm-lattice.gt.txt" "$@"
   done
 }
+# The data sets of the benches of PCM's line extraction, through the
+# caller's `bench NAME DATA ARGS...` (its main table and, with --world, the
+# Cramer-Rao table; HEADER set before each table): the static scenes at 1 cm
+# against the bound (the office and lab, calibration; the three held-out
+# worlds frozen), then the held-out ones (the people and the room, the three
+# held-out worlds as written and on MRPT's 0.16 m lattice, the corridor with
+# people on the lattice, the bundled log, orebro and the other Radish
+# logs); then the corridor seeds the whole runs use.
+bench_extraction_scenes() {
+  local w f
+  echo
+  echo "### Static, 1 cm noise, against the Cramer-Rao bound"
+  echo
+  HEADER=--header
+  for w in office lab; do
+    sim_1cm "$w"
+    bench "sim $w (1 cm)" "$OUT/$w-1cm.rawlog" -g "$OUT/$w-1cm.gt.txt" --world "$ROOT/worlds/$w.ini"
+  done
+  for w in apartment warehouse-aisles parking-garage; do
+    sim_world "$w" "$w-frozen-1cm" --frozen --set Laser:range_noise=0.01
+    bench "$w frozen (1 cm)" "$OUT/$w-frozen-1cm.rawlog" -g "$OUT/$w-frozen-1cm.gt.txt" \
+      --world "$ROOT/worlds/$w.ini" --frozen
+  done
+  echo
+  echo "### Held out: people, carts, lattices, real logs"
+  echo
+  HEADER=--header
+  for w in corridor-people hall-people room-moving-objects apartment warehouse-aisles parking-garage; do
+    sim_world "$w" "$w"
+    bench "$w" "$OUT/$w.rawlog" -g "$OUT/$w.gt.txt"
+  done
+  for w in apartment warehouse-aisles parking-garage corridor-people; do
+    sim_lattice "$w" "$w-lattice"
+    bench "$w, lattice" "$OUT/$w-lattice.rawlog" -g "$OUT/$w-lattice.gt.txt"
+  done
+  bench "bundled (MRPT's simulator, lattice)" "$ROOT/rawlogs/mrpt-simul/simul.rawlog" \
+    -g "$ROOT/rawlogs/mrpt-simul/simul.gt.txt"
+  if [ -d "$LASER2D" ]; then
+    bench orebro "$LASER2D/orebro-corrected.log.gz"
+    for f in $(held_out_radish_logs); do bench "$(basename "$f" -corrected.log.gz)" "$f"; done
+  fi
+  sim_corridor_seeds
+}
 # Issue 15's two per-pair tables: the calibration scenes, then the held-out
 # ones, each through the caller's `bench` (HEADER set again for the second
 # table), under "### [PREFIX]Calibration scenes" and "### [PREFIX]Held out".

@@ -40,40 +40,7 @@ bench() { # name, data, extra args...
 }
 
 machine_line
-echo
-echo "### Static, 1 cm noise, against the Cramer-Rao bound"
-echo
-HEADER=--header
-for w in office lab; do
-  sim_1cm "$w"
-  bench "sim $w (1 cm)" "$OUT/$w-1cm.rawlog" -g "$OUT/$w-1cm.gt.txt" --world "$ROOT/worlds/$w.ini"
-done
-for w in apartment warehouse-aisles parking-garage; do
-  sim_world "$w" "$w-frozen-1cm" --frozen --set Laser:range_noise=0.01
-  bench "$w frozen (1 cm)" "$OUT/$w-frozen-1cm.rawlog" -g "$OUT/$w-frozen-1cm.gt.txt" \
-    --world "$ROOT/worlds/$w.ini" --frozen
-done
-echo
-echo "### Held out: people, carts, lattices, real logs"
-echo
-HEADER=--header
-for w in corridor-people hall-people room-moving-objects apartment warehouse-aisles parking-garage; do
-  sim_world "$w" "$w"
-  bench "$w" "$OUT/$w.rawlog" -g "$OUT/$w.gt.txt"
-done
-for w in apartment warehouse-aisles parking-garage; do
-  sim_lattice "$w" "$w-lattice"
-  bench "$w, lattice" "$OUT/$w-lattice.rawlog" -g "$OUT/$w-lattice.gt.txt"
-done
-sim_lattice corridor-people corridor-people-lattice
-bench "corridor-people, lattice" "$OUT/corridor-people-lattice.rawlog" -g "$OUT/corridor-people-lattice.gt.txt"
-bench "bundled (MRPT's simulator, lattice)" "$ROOT/rawlogs/mrpt-simul/simul.rawlog" \
-  -g "$ROOT/rawlogs/mrpt-simul/simul.gt.txt"
-if [ -d "$LASER2D" ]; then
-  bench orebro "$LASER2D/orebro-corrected.log.gz"
-  for f in $(held_out_radish_logs); do bench "$(basename "$f" -corrected.log.gz)" "$f"; done
-fi
-sim_corridor_seeds
+bench_extraction_scenes
 for est in matcher ekf; do
   echo
   echo "### Whole runs, PcmFeatureMatcher, estimator = $est: ATE rmse [mm] / failed matches / fallback matches, neither | both"

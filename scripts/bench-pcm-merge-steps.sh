@@ -13,8 +13,10 @@
 #    found) and the parking garage (held out, --frozen).
 #  - Held out: the corridor and the hall with people, the room with doors
 #    and a cart, the three held-out worlds as written and on MRPT's 0.16 m
-#    lattice, the bundled log (MRPT's simulator, 0.16 m lattice), the six
-#    Radish logs.
+#    lattice, the corridor with people on that lattice (since the
+#    twenty-sixth session: the data sets are bench-common's
+#    bench_extraction_scenes), the bundled log (MRPT's simulator, 0.16 m
+#    lattice), the six Radish logs.
 #  - Whole runs (featloc-run, PCM as the matcher, estimator = matcher and
 #    ekf): the bundled log, the corridor with people (seeds 1-6) and the
 #    held-out Radish logs; "steps" against "RMS" step by step.
@@ -35,38 +37,7 @@ bench() { # name, data, extra args...
 }
 
 machine_line
-echo
-echo "### Static, 1 cm noise, against the Cramer-Rao bound"
-echo
-HEADER=--header
-for w in office lab; do
-  sim_1cm "$w"
-  bench "sim $w (1 cm)" "$OUT/$w-1cm.rawlog" -g "$OUT/$w-1cm.gt.txt" --world "$ROOT/worlds/$w.ini"
-done
-for w in apartment warehouse-aisles parking-garage; do
-  sim_world "$w" "$w-frozen-1cm" --frozen --set Laser:range_noise=0.01
-  bench "$w frozen (1 cm)" "$OUT/$w-frozen-1cm.rawlog" -g "$OUT/$w-frozen-1cm.gt.txt" \
-    --world "$ROOT/worlds/$w.ini" --frozen
-done
-echo
-echo "### Held out: people, carts, lattices, real logs"
-echo
-HEADER=--header
-for w in corridor-people hall-people room-moving-objects apartment warehouse-aisles parking-garage; do
-  sim_world "$w" "$w"
-  bench "$w" "$OUT/$w.rawlog" -g "$OUT/$w.gt.txt"
-done
-for w in apartment warehouse-aisles parking-garage; do
-  sim_lattice "$w" "$w-lattice"
-  bench "$w, lattice" "$OUT/$w-lattice.rawlog" -g "$OUT/$w-lattice.gt.txt"
-done
-bench "bundled (MRPT's simulator, lattice)" "$ROOT/rawlogs/mrpt-simul/simul.rawlog" \
-  -g "$ROOT/rawlogs/mrpt-simul/simul.gt.txt"
-if [ -d "$LASER2D" ]; then
-  bench orebro "$LASER2D/orebro-corrected.log.gz"
-  for f in $(held_out_radish_logs); do bench "$(basename "$f" -corrected.log.gz)" "$f"; done
-fi
-sim_corridor_seeds
+bench_extraction_scenes
 for est in matcher ekf; do
   echo
   echo "### Whole runs, PcmFeatureMatcher, estimator = $est: ATE rmse [mm] / failed matches / fallback matches, $KEY 0 | 3"
