@@ -617,8 +617,11 @@ void LineEllipseExtractor::cleanAndFuseLines(
 			// and covariance it has.
 			lastLine = static_cast<long>(out);
 			pts.assign(first, last);
-			LineFit fit = LineFit::fit(pts.data(), pts.size());
-			if (dropOutliers(fit, pooled2)) refitLine(features[out], fit, pooled2);
+			if (params.line_outlier_sigmas > 0)
+			{
+				LineFit fit = LineFit::fit(pts.data(), pts.size());
+				if (dropOutliers(fit, pooled2)) refitLine(features[out], fit, pooled2);
+			}
 		}
 		out++;
 	}

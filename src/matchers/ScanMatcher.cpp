@@ -488,10 +488,9 @@ void ScanMatcher::matchPointsFinite(const ScanPoints& reference, const ScanPoint
 	// what follows (the confirmation probe's slides, the EKF's update) would
 	// take it as one, and the probe's slides along a NaN direction never end.
 	const auto& m = r.estimate.mean;
-	bool finite = std::isfinite(m.x()) && std::isfinite(m.y()) && std::isfinite(m.phi());
-	for (int i = 0; i < 3; i++)
-		for (int j = 0; j < 3; j++) finite = finite && std::isfinite(r.estimate.cov(i, j));
-	if (finite) return;
+	if (std::isfinite(m.x()) && std::isfinite(m.y()) && std::isfinite(m.phi()) &&
+		r.estimate.cov.asEigen().allFinite())
+		return;
 	r.success = false;
 	r.failureKind = "non_finite";
 	r.failureReason = "the matcher's estimate or its covariance is not finite (NaN or infinite)";
