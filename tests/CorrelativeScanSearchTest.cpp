@@ -126,6 +126,58 @@ TEST(CorrelativeScanSearch, KeptTablesAnswerAsFreshOnes)
 		}
 }
 
+// A matcher and its fallback share their tables: each finds the other's
+// tables of the same reference (and its last branch and bound), and a search
+// of another reference builds its own instead of rebuilding the tables the
+// other is still using (its later scores would be of the wrong reference).
+TEST(CorrelativeScanSearch, SharedTablesAnswerAsOwnOnesAndAreNotRebuiltUnderTheOther)
+{
+	const SyntheticRoom room = SyntheticRoom::office();
+	const CPose2D p0(0.3, -0.4, 0.2), p1(1.1, 0.2, -0.3), motion(0.2, 0.1, mrpt::DEG2RAD(5.0));
+	const auto ref0 = ScanPoints::fromScan(*room.scan(p0));
+	const auto ref1 = ScanPoints::fromScan(*room.scan(p1));
+	const auto cur0 = ScanPoints::fromScan(*room.scan(p0 + motion));
+	const auto cur1 = ScanPoints::fromScan(*room.scan(p1 + motion));
+	const auto g = diagonalPoseGaussian(
+		CPose2D(motion.x() + 0.05, motion.y(), motion.phi()), 0.1, mrpt::DEG2RAD(10) / 3);
+	CorrelativeScanSearch a, b, fresh0, fresh1;
+	b.shareTablesWith(a);
+	const auto ra = a.search(ref0, cur0, g);
+	const auto rb1 = b.search(ref1, cur1, g);  // another reference: its own tables
+	const auto f0 = fresh0.search(ref0, cur0, g);
+	const auto f1 = fresh1.search(ref1, cur1, g);
+	ASSERT_TRUE(ra.success && rb1.success && f0.success && f1.success);
+	EXPECT_EQ(ra.best, f0.best);
+	EXPECT_EQ(rb1.best, f1.best);
+	EXPECT_EQ(rb1.bestScore, f1.bestScore);
+	// a's tables are still ref0's after b's search of ref1.
+	const CPose2D off(motion.x() + 0.1, motion.y() - 0.05, motion.phi());
+	EXPECT_EQ(a.evidenceFor(motion, off), fresh0.evidenceFor(motion, off));
+	EXPECT_EQ(b.evidenceFor(motion, off), fresh1.evidenceFor(motion, off));
+	// b on a's pair: a's tables and branch and bound, the same answer.
+	const auto rb0 = b.search(ref0, cur0, g);
+	EXPECT_EQ(rb0.best, f0.best);
+	EXPECT_EQ(rb0.bestScore, f0.bestScore);
+	ASSERT_EQ(rb0.contenders.size(), f0.contenders.size());
+	for (size_t i = 0; i < f0.contenders.size(); i++)
+		EXPECT_EQ(rb0.contenders[i].pose, f0.contenders[i].pose);
+	EXPECT_EQ(b.evidenceFor(motion, off), fresh0.evidenceFor(motion, off));
+	// Both now use ref0's tables; b's search of a third reference must not
+	// rebuild them under a (ref1's, which nobody uses now, are rebuilt).
+	const CPose2D p2(-0.6, 0.5, 1.0);
+	const auto ref2 = ScanPoints::fromScan(*room.scan(p2));
+	const auto cur2 = ScanPoints::fromScan(*room.scan(p2 + motion));
+	CorrelativeScanSearch fresh2;
+	const auto rb2 = b.search(ref2, cur2, g), f2 = fresh2.search(ref2, cur2, g);
+	ASSERT_TRUE(rb2.success && f2.success);
+	EXPECT_EQ(rb2.best, f2.best);
+	EXPECT_EQ(a.evidenceFor(motion, off), fresh0.evidenceFor(motion, off));
+	EXPECT_EQ(b.evidenceFor(motion, off), fresh2.evidenceFor(motion, off));
+	const auto ra1 = a.search(ref1, cur1, g);
+	EXPECT_EQ(ra1.best, f1.best);
+	EXPECT_EQ(a.evidenceFor(motion, off), fresh1.evidenceFor(motion, off));
+}
+
 // Every featloc matcher, with its defaults, from +-0.5 m / +-20 deg (the
 // issue's target basin) in the simulated office's corridor (1 cm noise):
 // all converge to the truth.

@@ -218,11 +218,11 @@ void CorrelativeScanSearch::buildTables(const ScanPoints& reference, double half
 	const int top = CorrelationTables::topLevelFor(halfWindowXY, res);
 	// A keyframe is the reference of every scan until the next one: its
 	// tables (about half the search's time on a 361-beam office scan) are
-	// built once for all of them.
-	const std::array<double, 3> tableOptions{options.resolution, options.hitSigma, options.sharpSigma};
-	if (m_builtTop == top && m_builtOptions == tableOptions &&
-		m_builtReference.samePointsAs(reference))
-		return;
+	// built once for all of them, and once for a matcher and its fallback.
+	const ReferenceTables::BuildOptions tableOptions{
+		options.resolution, options.hitSigma, options.sharpSigma};
+	ReferenceTables& built = tablesFor(reference, top, tableOptions);
+	if (built.builtFor(reference, top, tableOptions)) return;
 	// The low side also holds one top-level block: a block's bound reads up
 	// to its side - 1 cells beyond the point's own cell.
 	const double lowMargin = margin + static_cast<double>(1 << top) * res;
@@ -239,17 +239,18 @@ void CorrelativeScanSearch::buildTables(const ScanPoints& reference, double half
 	AdaptiveBreakpointSegmenter::Parameters join;
 	join.lambda = kJoinLambda;
 	join.sigma_r = kJoinSigmaR;
-	AdaptiveBreakpointSegmenter(join).segment(reference, m_segments);
+	AdaptiveBreakpointSegmenter(join).segment(reference, built.segments);
 	// The sharp score's width follows the scan's own scatter about its
 	// surfaces: a current point and the (noisy) reference surface are
 	// sqrt(2) s apart on average, and a score narrower than that would
 	// judge solutions by their noise.
-	m_sharpSigma = std::max(options.sharpSigma, kSharpNoiseFactor * m_noise.estimate(reference.points, m_segments));
+	built.sharpSigma = std::max(
+		options.sharpSigma, kSharpNoiseFactor * m_noise.estimate(reference.points, built.segments));
 	auto draw = [&](cv::Mat& surface) {
 		auto pixel = [&](const ScanPoint& p) {
 			return cv::Point(static_cast<int>((p.x - x0) / res), static_cast<int>((p.y - y0) / res));
 		};
-		for (const auto& seg : m_segments)
+		for (const auto& seg : built.segments)
 			for (uint32_t i = seg.first + 1; i <= seg.last; i++)
 				cv::line(surface, pixel(reference.points[i - 1]), pixel(reference.points[i]),
 					cv::Scalar(0), 1, cv::LINE_8);
@@ -257,11 +258,47 @@ void CorrelativeScanSearch::buildTables(const ScanPoints& reference, double half
 	// Distances beyond kNearSigmas of both scores' widths change neither
 	// score (exp(-12.5) = 4e-6 of a hit) but cost an exact transform of
 	// the whole table: a real log's scan spans millions of cells.
-	m_tables.buildNear(width, height, x0, y0, res, options.hitSigma, top,
-		kNearSigmas * std::max(options.hitSigma, m_sharpSigma), draw);
-	m_builtReference = reference;
-	m_builtTop = top;
-	m_builtOptions = tableOptions;
+	built.tables.buildNear(width, height, x0, y0, res, options.hitSigma, top,
+		kNearSigmas * std::max(options.hitSigma, built.sharpSigma), draw);
+	built.setBuiltFor(reference, top, tableOptions);
+}
+
+ReferenceTables& CorrelativeScanSearch::tablesFor(
+	const ScanPoints& reference, int top, const ReferenceTables::BuildOptions& options)
+{
+	if (m_ref && m_ref->builtFor(reference, top, options)) return *m_ref;
+	for (const auto& t : *m_pool)
+		if (t->builtFor(reference, top, options))
+		{
+			m_ref = t;
+			return *m_ref;
+		}
+	// To be built: this search's own tables unless another search holds
+	// them too, else tables nobody holds, else new ones.
+	if (!m_ref || m_ref.use_count() > 2)
+	{
+		m_ref.reset();
+		for (const auto& t : *m_pool)
+			if (t.use_count() == 1)
+			{
+				m_ref = t;
+				break;
+			}
+		if (!m_ref)
+		{
+			m_ref = std::make_shared<ReferenceTables>();
+			m_pool->push_back(m_ref);
+		}
+	}
+	return *m_ref;
+}
+
+void CorrelativeScanSearch::shareTablesWith(CorrelativeScanSearch& other)
+{
+	if (other.m_pool == m_pool) return;
+	// This search's tables join the other's pool.
+	if (m_ref) other.m_pool->push_back(m_ref);
+	m_pool = other.m_pool;
 }
 
 CorrelativeScanSearch::HalfWindow CorrelativeScanSearch::halfWindow(
@@ -296,7 +333,7 @@ CorrelativeScanSearch::Result CorrelativeScanSearch::search(
 	r.windowYaw = h.yaw;
 	buildTables(reference, std::max(r.windowXY[0], r.windowXY[1]));
 	pickPoints(current);
-	r.resolution = m_tables.resolution();
+	r.resolution = m_ref->tables.resolution();
 
 	r.yawStep = CorrelationTables::rotationStep(m_px, m_py, r.resolution);
 	const size_t n = m_px.size();
@@ -363,8 +400,19 @@ std::vector<CorrelativeScanSearch::Result::Contender> CorrelativeScanSearch::bra
 	w.ny = static_cast<int>(std::ceil(r.windowXY[1] / r.resolution));
 	// Go on below the best to find the contenders too.
 	const double keepGoing = options.ambiguityZ > 0 ? options.contenderRatio : 1.0;
+	// The same points, window and ratio on the same tables give the same
+	// poses: a fallback's search of its matcher's pair is not run twice.
+	const std::vector<CorrelationTables::Candidate>* kept =
+		m_ref->lastSearch(m_px, m_py, w, keepGoing);
+	std::vector<CorrelationTables::Candidate> fresh;
+	if (!kept)
+	{
+		fresh = m_ref->tables.search(m_px, m_py, w, keepGoing);
+		m_ref->rememberSearch(m_px, m_py, w, keepGoing, fresh);
+		kept = &fresh;
+	}
 	std::vector<Result::Contender> found;
-	for (const auto& c : m_tables.search(m_px, m_py, w, keepGoing)) found.push_back({c.pose, c.score});
+	for (const auto& c : *kept) found.push_back({c.pose, c.score});
 	return found;
 }
 
@@ -372,12 +420,12 @@ void CorrelativeScanSearch::sharpScores(
 	const mrpt::poses::CPose2D& pose, std::vector<double>& out) const
 {
 	out.assign(m_allX.size(), 0.0);
-	if (m_tables.empty()) return;
+	if (!m_ref || m_ref->tables.empty()) return;
 	const double c = std::cos(pose.phi()), s = std::sin(pose.phi());
-	const double k = -0.5 / (m_sharpSigma * m_sharpSigma);
+	const double k = -0.5 / (m_ref->sharpSigma * m_ref->sharpSigma);
 	for (size_t i = 0; i < m_allX.size(); i++)
 	{
-		const double d = m_tables.distanceAt(c * m_allX[i] - s * m_allY[i] + pose.x(),
+		const double d = m_ref->tables.distanceAt(c * m_allX[i] - s * m_allY[i] + pose.x(),
 			s * m_allX[i] + c * m_allY[i] + pose.y());
 		if (d >= 0) out[i] = std::exp(k * d * d);
 	}

@@ -46,6 +46,7 @@ void ScanMatcher::loadParams(
 	config::read(cfg, section, "fallback_class", m_fallbackClass);
 	m_fallbackClass = mrpt::system::trim(m_fallbackClass);
 	config::read(cfg, section, "fallback_on_ambiguity", m_fallbackOnAmbiguity);
+	config::read(cfg, section, "fallback_shares_tables", m_fallbackSharesTables);
 	config::read(cfg, section, "fallback_above_sigma_xy", m_fallbackAboveSigmaXY);
 	if (!(m_fallbackAboveSigmaXY >= 0))
 		config::fail(cfg, section, "fallback_above_sigma_xy",
@@ -73,6 +74,7 @@ void ScanMatcher::loadParams(
 					"); a fallback must be another class");
 		m_fallback->loadParams(
 			cfg, ScanMatcherFactory::paramsSection(m_fallback->className()), false);
+		if (m_fallbackSharesTables) m_fallback->m_coarse.shareTablesWith(m_coarse);
 	}
 	loadOwnParams(cfg, section);
 }
@@ -86,6 +88,10 @@ void ScanMatcher::saveParams(mrpt::config::CConfigFileBase& cfg, const std::stri
 	config::write(cfg, section, "fallback_on_ambiguity", m_fallbackOnAmbiguity,
 		"an ambiguous match (flagged) goes to the fallback too; the fallback's result "
 		"replaces it when it is a success that is not ambiguous");
+	config::write(cfg, section, "fallback_shares_tables", m_fallbackSharesTables,
+		"the fallback uses this matcher's coarse-search tables of the reference and its last "
+		"branch and bound where its own would be the same (the same results, faster; false: "
+		"each builds and searches its own)");
 	config::write(cfg, section, "fallback_above_sigma_xy", m_fallbackAboveSigmaXY,
 		"[m] a successful, unflagged match whose covariance leaves a translation sigma above "
 		"this (and above a range lattice's cell) goes to the fallback too; the fallback's "
@@ -132,6 +138,7 @@ MatchResult ScanMatcher::tryFallback(MatchResult r, Run&& run)
 	{
 		m_fallback = ScanMatcherFactory::create(m_fallbackClass);
 		m_fallback->m_followFallback = false;
+		if (m_fallbackSharesTables) m_fallback->m_coarse.shareTablesWith(m_coarse);
 	}
 	if (!m_fallback) return r;
 	m_fallback->m_guessGateEnabled = m_guessGateEnabled;

@@ -2,11 +2,12 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
 
-#include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "featloc/matchers/CorrelationTables.h"
+#include "featloc/matchers/ReferenceTables.h"
 #include "featloc/scan/PointNoiseEstimator.h"
 #include "featloc/scan/ScanPoints.h"
 #include "featloc/scan/ScanSegment.h"
@@ -202,6 +203,13 @@ class CorrelativeScanSearch
 	/** Whether two poses are distinct solutions (distinctXY, distinctYaw). */
 	bool distinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b) const;
 
+	/** From now on this search and `other` keep what they build for a
+	 * reference (ReferenceTables) in one pool: a search finds the other's
+	 * tables of the same reference there (and its last branch and bound,
+	 * when its points, window and ratio are the same), and never rebuilds
+	 * tables the other is using. A matcher shares with its fallback. */
+	void shareTablesWith(CorrelativeScanSearch& other);
+
    private:
 	/** The tables of `reference`, with levels up to blocks as wide as a
 	 * window of +-halfWindowXY. */
@@ -220,15 +228,17 @@ class CorrelativeScanSearch
 	 * sharp_sigma and twice the reference's point scatter. */
 	void sharpScores(const mrpt::poses::CPose2D& pose, std::vector<double>& out) const;
 
-	CorrelationTables m_tables;	 // of the reference's surfaces
-	// The reference, top level and options (resolution, hitSigma,
-	// sharpSigma) the tables were built for (top -1: none yet).
-	ScanPoints m_builtReference;
-	int m_builtTop = -1;
-	std::array<double, 3> m_builtOptions{};
-	std::vector<ScanSegment> m_segments;  // the reference's surfaces
+	/** The pool's tables of `reference` at `top` with `options`, made this
+	 * search's: found there, or built into tables no other search uses. */
+	ReferenceTables& tablesFor(
+		const ScanPoints& reference, int top, const ReferenceTables::BuildOptions& options);
+
+	using TablesPool = std::vector<std::shared_ptr<ReferenceTables>>;
+	std::shared_ptr<TablesPool> m_pool = std::make_shared<TablesPool>();
+	// The tables this search uses, one of the pool's (null before the
+	// first search). Held here, no other search rebuilds them.
+	std::shared_ptr<ReferenceTables> m_ref;
 	PointNoiseEstimator m_noise;
-	double m_sharpSigma = 0;  // [m] the sharp score's width for this reference
 	std::vector<double> m_px, m_py;	 // the scored current points
 	std::vector<double> m_allX, m_allY;	 // every current point (sharp score)
 };

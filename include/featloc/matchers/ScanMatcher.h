@@ -252,6 +252,7 @@ class ScanMatcher : public mrpt::rtti::CObject
 	std::shared_ptr<ScanMatcher> m_fallback;
 	bool m_followFallback = true;  //!< false for a fallback itself
 	bool m_fallbackOnAmbiguity = true;	//!< `fallback_on_ambiguity`
+	bool m_fallbackSharesTables = true;	 //!< `fallback_shares_tables`
 	bool m_freeDirectionFromGuess;	//!< `free_direction_from_guess`
 	bool m_lastMatchByFallback = false;	 //!< for inspectLastMatch()
 	RangeLattice m_lattice;
