@@ -221,8 +221,8 @@ void CorrelativeScanSearch::buildTables(const ScanPoints& reference, double half
 	// built once for all of them, and once for a matcher and its fallback.
 	const ReferenceTables::BuildOptions tableOptions{
 		options.resolution, options.hitSigma, options.sharpSigma};
-	ReferenceTables& built = tablesFor(reference, top, tableOptions);
-	if (built.builtFor(reference, top, tableOptions)) return;
+	if (useTablesOf(reference, top, tableOptions)) return;
+	ReferenceTables& built = *m_ref;
 	// The low side also holds one top-level block: a block's bound reads up
 	// to its side - 1 cells beyond the point's own cell.
 	const double lowMargin = margin + static_cast<double>(1 << top) * res;
@@ -263,15 +263,14 @@ void CorrelativeScanSearch::buildTables(const ScanPoints& reference, double half
 	built.setBuiltFor(reference, top, tableOptions);
 }
 
-ReferenceTables& CorrelativeScanSearch::tablesFor(
+bool CorrelativeScanSearch::useTablesOf(
 	const ScanPoints& reference, int top, const ReferenceTables::BuildOptions& options)
 {
-	if (m_ref && m_ref->builtFor(reference, top, options)) return *m_ref;
-	for (const auto& t : *m_pool)
+	for (const auto& t : *m_pool)  // this search's own among them
 		if (t->builtFor(reference, top, options))
 		{
 			m_ref = t;
-			return *m_ref;
+			return true;
 		}
 	// To be built: this search's own tables unless another search holds
 	// them too, else tables nobody holds, else new ones.
@@ -290,7 +289,7 @@ ReferenceTables& CorrelativeScanSearch::tablesFor(
 			m_pool->push_back(m_ref);
 		}
 	}
-	return *m_ref;
+	return false;
 }
 
 void CorrelativeScanSearch::shareTablesWith(CorrelativeScanSearch& other)
@@ -390,7 +389,7 @@ CorrelativeScanSearch::Result CorrelativeScanSearch::search(
 }
 
 std::vector<CorrelativeScanSearch::Result::Contender> CorrelativeScanSearch::branchAndBound(
-	const mrpt::poses::CPosePDFGaussian& guess, Result& r) const
+	const mrpt::poses::CPosePDFGaussian& guess, Result& r)
 {
 	CorrelationTables::Window w;
 	w.centre = guess.mean;

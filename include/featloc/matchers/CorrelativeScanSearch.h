@@ -216,9 +216,11 @@ class CorrelativeScanSearch
 	void buildTables(const ScanPoints& reference, double halfWindowXY);
 	void pickPoints(const ScanPoints& current);
 	/** Every grid pose of r's window whose score reaches contenderRatio x
-	 * the best (only the best when the ambiguity test is off), best first. */
+	 * the best (only the best when the ambiguity test is off), best first;
+	 * the tables' last branch and bound's when its input was the same (it
+	 * keeps this one's for the next). */
 	std::vector<Result::Contender> branchAndBound(
-		const mrpt::poses::CPosePDFGaussian& guess, Result& r) const;
+		const mrpt::poses::CPosePDFGaussian& guess, Result& r);
 	/** The grid neighbour of `o` (one step in x, y, yaw) with the best
 	 * sharp score; its points' sharp scores in `scores`. */
 	mrpt::poses::CPose2D bestGridNeighbour(
@@ -228,9 +230,10 @@ class CorrelativeScanSearch
 	 * sharp_sigma and twice the reference's point scatter. */
 	void sharpScores(const mrpt::poses::CPose2D& pose, std::vector<double>& out) const;
 
-	/** The pool's tables of `reference` at `top` with `options`, made this
-	 * search's: found there, or built into tables no other search uses. */
-	ReferenceTables& tablesFor(
+	/** Makes m_ref the pool's tables of `reference` at `top` with
+	 * `options` and returns true; where the pool has none, makes it tables
+	 * no other search uses, to be built, and returns false. */
+	bool useTablesOf(
 		const ScanPoints& reference, int top, const ReferenceTables::BuildOptions& options);
 
 	using TablesPool = std::vector<std::shared_ptr<ReferenceTables>>;
