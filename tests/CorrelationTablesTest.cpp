@@ -1,7 +1,9 @@
 // CorrelationTables::buildNear against build (OpenCV's exact distance
 // transform): the same distances and table values within the distance it
-// keeps (the table's exponential to float rounding), none beyond, and the
-// same branch and bound.
+// keeps (the table's exponential to float rounding), none beyond, also
+// where the table's edges cut the discs, and the same branch and bound;
+// the branch and bound (its bounds rounded up to bytes) against every pose
+// of its window.
 #include <gtest/gtest.h>
 #include <mrpt/core/bits_math.h>
 
@@ -28,15 +30,21 @@ void draw(cv::Mat& s)
 	cv::line(s, {140, 141}, {205, 139}, cv::Scalar(0));
 	cv::line(s, {100, 70}, {104, 75}, cv::Scalar(0));
 }
-}  // namespace
 
-TEST(CorrelationTables, NearTablesAreTheExactOnesWithinTheirDistance)
+// Walls on the table's edges and one corner.
+void drawAtEdges(cv::Mat& s)
 {
-	const double maxDistance = 0.25;
-	CorrelationTables exact, near;
-	exact.build(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, draw);
-	near.buildNear(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, maxDistance, draw);
-	size_t inside = 0, beyond = 0;
+	cv::line(s, {0, 3}, {0, kHeight - 10}, cv::Scalar(0));
+	cv::line(s, {2, kHeight - 1}, {kWidth - 1, kHeight - 1}, cv::Scalar(0));
+	cv::line(s, {kWidth - 3, 0}, {kWidth - 1, 2}, cv::Scalar(0));
+	cv::line(s, {50, 1}, {90, 1}, cv::Scalar(0));
+}
+
+// Distances and values of `near` against `exact` over the whole table.
+void expectNearIsExact(const CorrelationTables& exact, const CorrelationTables& near,
+	double maxDistance, size_t& inside, size_t& beyond)
+{
+	inside = beyond = 0;
 	for (int v = 0; v < kHeight; v++)
 		for (int u = 0; u < kWidth; u++)
 		{
@@ -62,6 +70,17 @@ TEST(CorrelationTables, NearTablesAreTheExactOnesWithinTheirDistance)
 				ASSERT_LT(exact.score(px, py, origin), std::exp(-0.5 * std::pow(maxDistance / kHit, 2)));
 			}
 		}
+}
+}  // namespace
+
+TEST(CorrelationTables, NearTablesAreTheExactOnesWithinTheirDistance)
+{
+	const double maxDistance = 0.25;
+	CorrelationTables exact, near;
+	exact.build(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, draw);
+	near.buildNear(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, maxDistance, draw);
+	size_t inside = 0, beyond = 0;
+	expectNearIsExact(exact, near, maxDistance, inside, beyond);
 	EXPECT_GT(inside, 2000u);
 	EXPECT_GT(beyond, 10000u);
 	// Outside the table: no distance either way.
@@ -103,4 +122,72 @@ TEST(CorrelationTables, NearTablesGiveTheSameBranchAndBound)
 	}
 	EXPECT_NEAR(a[0].pose.x(), truth.x(), kRes);
 	EXPECT_NEAR(a[0].pose.y(), truth.y(), kRes);
+}
+
+TEST(CorrelationTables, NearTablesAreExactWhereTheEdgesCutTheirDiscs)
+{
+	const double maxDistance = 0.25;
+	CorrelationTables exact, near;
+	exact.build(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, drawAtEdges);
+	near.buildNear(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, maxDistance, drawAtEdges);
+	size_t inside = 0, beyond = 0;
+	expectNearIsExact(exact, near, maxDistance, inside, beyond);
+	EXPECT_GT(inside, 2000u);
+	EXPECT_GT(beyond, 10000u);
+}
+
+TEST(CorrelationTables, BranchAndBoundFindsEveryPoseAtOrAboveTheRatio)
+{
+	CorrelationTables t;
+	t.buildNear(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, 5 * kHit, draw);
+	// The corner's walls and the stub from 8 cm, -5 cm, 2 deg, and points
+	// that some of the window's poses put off the table (left of its low
+	// edge, above its high one).
+	const mrpt::poses::CPose2D truth(0.08, -0.05, mrpt::DEG2RAD(2.0));
+	std::vector<double> px, py;
+	auto add = [&](double x, double y)
+	{
+		double lx = 0, ly = 0;
+		truth.inverseComposePoint(x, y, lx, ly);
+		px.push_back(lx);
+		py.push_back(ly);
+	};
+	auto cell = [&](int u, int v) { add(kX0 + (u + 0.5) * kRes, kY0 + (v + 0.5) * kRes); };
+	for (int u = 30; u < 190; u += 8) cell(u, 20);
+	for (int v = 30; v < 130; v += 8) cell(20, v);
+	for (int u = 62; u < 120; u += 9) cell(u, 140);
+	cell(102, 72);
+	add(kX0 + 0.1, 0.0);
+	add(0.0, kY0 + kHeight * kRes - 0.1);
+	CorrelationTables::Window w;
+	w.nx = 12;
+	w.ny = 9;
+	w.nYaw = 3;
+	w.yawStep = CorrelationTables::rotationStep(px, py, kRes);
+	// Every pose that puts a point on a surface, with its score (a ratio
+	// no pose falls below): the branch and bound must find those at or
+	// above the ratio, and only those, with the same scores, in the same
+	// order, whatever its bounds prune.
+	const auto all = t.search(px, py, w, 1e-12);
+	ASSERT_GT(all.size(), 1000u);
+	for (double ratio : {1.0, 0.999, 0.995, 0.99, 0.98, 0.95, 0.9, 0.8, 0.5})
+	{
+		const auto kept = t.search(px, py, w, ratio);
+		std::vector<CorrelationTables::Candidate> expected;
+		for (const auto& c : all)
+			if (c.score >= ratio * all[0].score) expected.push_back(c);
+		ASSERT_EQ(kept.size(), expected.size()) << ratio;
+		for (size_t i = 0; i < kept.size(); i++)
+		{
+			ASSERT_EQ(kept[i].score, expected[i].score) << ratio << ", " << i;
+			ASSERT_EQ(kept[i].pose.x(), expected[i].pose.x()) << ratio << ", " << i;
+			ASSERT_EQ(kept[i].pose.y(), expected[i].pose.y()) << ratio << ", " << i;
+			ASSERT_EQ(kept[i].pose.phi(), expected[i].pose.phi()) << ratio << ", " << i;
+			// The score is the pose's own, as score() computes it, to the
+			// rounding of the cell a point falls in.
+			ASSERT_NEAR(t.score(px, py, kept[i].pose), kept[i].score, 0.05) << ratio << ", " << i;
+		}
+	}
+	EXPECT_NEAR(all[0].pose.x(), truth.x(), kRes);
+	EXPECT_NEAR(all[0].pose.y(), truth.y(), kRes);
 }

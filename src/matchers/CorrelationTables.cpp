@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <opencv2/imgproc.hpp>
 #include <limits>
 #include <queue>
@@ -35,7 +36,7 @@ void CorrelationTables::build(int width, int height, double x0, double y0, doubl
 	cv::distanceTransform(surface, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
 	cv::Mat metres(m_height, m_width, CV_32F, m_distance.data());
 	distance.convertTo(metres, CV_32F, res);
-	cv::Mat table(m_height, m_width, CV_32F, m_levels[0].data());
+	cv::Mat table(m_height, m_width, CV_32F, m_table.data());
 	// exp(-d^2 / 2 sigma^2), d in metres.
 	const double k = -0.5 * (res / hitSigma) * (res / hitSigma);
 	cv::multiply(distance, distance, distance, k);
@@ -50,38 +51,64 @@ void CorrelationTables::buildNear(int width, int height, double x0, double y0, d
 	cv::Mat surface = prepare(width, height, x0, y0, res, top, drawSurface);
 	// The cells within maxDistance of a surface pixel, with their distance
 	// in pixels as the exact transform measures it (centre to centre), and
-	// what that distance puts in the tables (the same expressions as build).
+	// what that distance puts in the tables (the same expressions as build):
+	// one run of cells per row of the disc, its distances and values in a
+	// row of their own, so that a pixel's disc is written run by run.
 	const int R = static_cast<int>(std::floor(maxDistance / res));
 	const double k = -0.5 * (res / hitSigma) * (res / hitSigma);
-	struct Offset
+	struct Run
 	{
-		int du, dv;
-		float metres, value;
+		int dv, half;  // cells du = -half..half of row dv
+		size_t first;  // index of du = -half in metres and values
 	};
-	std::vector<Offset> near;
+	std::vector<Run> runs;
+	std::vector<float> metres, values;
 	for (int dv = -R; dv <= R; dv++)
-		for (int du = -R; du <= R; du++)
-			if (du * du + dv * dv <= R * R)
-			{
-				const float d = std::sqrt(static_cast<float>(du * du + dv * dv));
-				near.push_back({du, dv, static_cast<float>(d * res), std::exp(static_cast<float>(d * d * k))});
-			}
+	{
+		int half = 0;
+		while ((half + 1) * (half + 1) + dv * dv <= R * R) half++;
+		runs.push_back({dv, half, metres.size()});
+		for (int du = -half; du <= half; du++)
+		{
+			const float d = std::sqrt(static_cast<float>(du * du + dv * dv));
+			metres.push_back(static_cast<float>(d * res));
+			values.push_back(std::exp(static_cast<float>(d * d * k)));
+		}
+	}
 	std::fill(m_distance.begin(), m_distance.end(), std::numeric_limits<float>::infinity());
-	auto& table = m_levels[0];
-	std::fill(table.begin(), table.end(), 0.0f);
+	std::fill(m_table.begin(), m_table.end(), 0.0f);
+	// Each cell ends with the least distance of the discs over it and that
+	// distance's value, whatever the order the discs are written in (a
+	// distance has one value). The comparisons are selections, not
+	// branches: a run's cells take them in no order one could predict.
+	float* __restrict dist = m_distance.data();
+	float* __restrict table = m_table.data();
+	const size_t W = static_cast<size_t>(m_width);
 	for (int v = 0; v < m_height; v++)
 	{
 		const uint8_t* row = surface.ptr<uint8_t>(v);
-		for (int u = 0; u < m_width; u++)
+		for (const uint8_t* at = row; (at = static_cast<const uint8_t*>(
+										   std::memchr(at, 0, W - static_cast<size_t>(at - row))));
+			 at++)
 		{
-			if (row[u] != 0) continue;
-			for (const auto& o : near)
+			const int u = static_cast<int>(at - row);
+			for (const auto& r : runs)
 			{
-				const long c = cellIndex(u + o.du, v + o.dv);
-				if (c < 0 || o.metres >= m_distance[static_cast<size_t>(c)]) continue;
-				m_distance[static_cast<size_t>(c)] = o.metres;
-				table[static_cast<size_t>(c)] = o.value;
+				const int rv = v + r.dv;
+				if (rv < 0 || rv >= m_height) continue;
+				const int lo = std::max(u - r.half, 0), hi = std::min(u + r.half, m_width - 1);
+				const float* __restrict m = metres.data() + r.first + (lo - (u - r.half));
+				const float* __restrict val = values.data() + r.first + (lo - (u - r.half));
+				float* __restrict d = dist + static_cast<size_t>(rv) * W + static_cast<size_t>(lo);
+				float* __restrict t = table + static_cast<size_t>(rv) * W + static_cast<size_t>(lo);
+				for (int i = 0; i <= hi - lo; i++)
+				{
+					const bool closer = m[i] < d[i];
+					d[i] = closer ? m[i] : d[i];
+					t[i] = closer ? val[i] : t[i];
+				}
 			}
+			if (u + 1 >= m_width) break;
 		}
 	}
 	buildLevels();
@@ -100,13 +127,29 @@ cv::Mat CorrelationTables::prepare(int width, int height, double x0, double y0, 
 	drawSurface(surface);
 	const size_t cells = static_cast<size_t>(m_width) * static_cast<size_t>(m_height);
 	m_distance.resize(cells);
-	m_levels.resize(static_cast<size_t>(m_top) + 1);
-	for (auto& t : m_levels) t.resize(cells);  // every cell is written by the build
+	m_table.resize(cells);  // every cell is written by the build
+	m_bounds.resize(static_cast<size_t>(m_top) + 1);  // [0]: level 0's, level 1's first step
+	for (auto& t : m_bounds) t.resize(cells);
 	return surface;
 }
 
 void CorrelationTables::buildLevels()
 {
+	// Level 0 rounded up to bytes (x 255 (1 + 1e-6): the float product's
+	// two roundings, 2 x 2^-24 relative, cannot take it below 255 v): since
+	// rounding up keeps the order, the maxima of the rounded values are the
+	// rounded maxima, and the levels are built from bytes.
+	const size_t cells = m_table.size();
+	const float* __restrict table = m_table.data();
+	uint8_t* __restrict q0 = m_bounds[0].data();
+	const float up = static_cast<float>(kBoundScale * (1 + 1e-6));
+	for (size_t c = 0; c < cells; c++)
+	{
+		const float t = table[c] * up;	// >= 0
+		float q = static_cast<float>(static_cast<int>(t));
+		q += q < t ? 1.0f : 0.0f;
+		q0[c] = static_cast<uint8_t>(static_cast<int>(std::min(q, 255.0f)));
+	}
 	// Level L + 1 is the maximum of four shifted level-L views: one pass per
 	// level (the tables of a real log's scan are millions of cells, and a
 	// copy and three in-place maxima read and wrote each of them 11 times).
@@ -115,18 +158,18 @@ void CorrelationTables::buildLevels()
 	for (int L = 0; L < m_top; L++)
 	{
 		const size_t sft = size_t{1} << L;
-		const float* src = m_levels[static_cast<size_t>(L)].data();
-		float* dst = m_levels[static_cast<size_t>(L) + 1].data();
+		const uint8_t* src = m_bounds[static_cast<size_t>(L)].data();
+		uint8_t* dst = m_bounds[static_cast<size_t>(L) + 1].data();
 		for (size_t v = 0; v < static_cast<size_t>(m_height); v++)
 		{
-			const float* a = src + v * W;
-			float* out = dst + v * W;
+			const uint8_t* a = src + v * W;
+			uint8_t* out = dst + v * W;
 			if (v + sft >= static_cast<size_t>(m_height) || sft >= W)
 			{
 				std::copy(a, a + W, out);
 				continue;
 			}
-			const float* b = a + sft * W;
+			const uint8_t* b = a + sft * W;
 			const size_t inner = W - sft;
 			for (size_t u = 0; u < inner; u++)
 				out[u] = std::max(std::max(a[u], a[u + sft]), std::max(b[u], b[u + sft]));
@@ -160,17 +203,29 @@ std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 		}
 	}
 	// Mean table value under rotation w's points moved by (dx, dy) cells:
-	// at level L, a bound for the block of 2^L x 2^L translations from there.
+	// at level L, a bound for the block of 2^L x 2^L translations from there
+	// (its bytes summed exactly, and nudged up by more than the division's
+	// rounding, so that it bounds level 0's mean of the same cells).
 	auto score = [&](int level, int w, int dx, int dy) {
-		const auto& t = m_levels[static_cast<size_t>(level)];
-		double sum = 0;
 		const size_t base = static_cast<size_t>(w) * n;
+		if (level == 0)
+		{
+			double sum = 0;
+			for (size_t i = 0; i < n; i++)
+			{
+				const long c = cellIndex(cu[base + i] + dx, cv[base + i] + dy);
+				if (c >= 0) sum += m_table[static_cast<size_t>(c)];
+			}
+			return sum / static_cast<double>(n);
+		}
+		const auto& t = m_bounds[static_cast<size_t>(level)];
+		uint32_t sum = 0;
 		for (size_t i = 0; i < n; i++)
 		{
 			const long c = cellIndex(cu[base + i] + dx, cv[base + i] + dy);
 			if (c >= 0) sum += t[static_cast<size_t>(c)];
 		}
-		return sum / static_cast<double>(n);
+		return sum / (kBoundScale * static_cast<double>(n)) * (1 + 1e-12);
 	};
 
 	struct Node
@@ -207,17 +262,24 @@ std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 			for (int cy = nd.dy; cy < nd.dy + 2 * half && cy <= ny; cy += half)
 				open.push({score(nd.level - 1, nd.yaw, cx, cy), nd.level - 1, nd.yaw, cx, cy});
 	}
-	std::sort(found.begin(), found.end(),
-		[](const Candidate& a, const Candidate& c) { return a.score > c.score; });
+	// Best first; equal scores by rotation, then translation, so that the
+	// order is the poses' own and not the queue's (whose pops follow the
+	// bounds above level 0).
+	std::sort(found.begin(), found.end(), [](const Candidate& a, const Candidate& c) {
+		if (a.score != c.score) return a.score > c.score;
+		if (a.pose.phi() != c.pose.phi()) return a.pose.phi() < c.pose.phi();
+		if (a.pose.x() != c.pose.x()) return a.pose.x() < c.pose.x();
+		return a.pose.y() < c.pose.y();
+	});
 	return found;
 }
 
 double CorrelationTables::score(const std::vector<double>& px, const std::vector<double>& py,
 	const mrpt::poses::CPose2D& pose) const
 {
-	if (px.empty() || m_levels.empty()) return 0;
+	if (px.empty() || m_table.empty()) return 0;
 	const double c = std::cos(pose.phi()), s = std::sin(pose.phi());
-	const auto& t = m_levels[0];
+	const auto& t = m_table;
 	double sum = 0;
 	for (size_t i = 0; i < px.size(); i++)
 	{

@@ -1,6 +1,7 @@
 #pragma once
 #include <mrpt/poses/CPose2D.h>
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -23,7 +24,13 @@ namespace featloc
  * maximum over the 2^L x 2^L cells at and above-right of each cell, so that
  * one lookup bounds every translation of a block of that side. A pose's
  * score is the mean table value under the points it places: the share of
- * the scan on the reference. */
+ * the scan on the reference.
+ *
+ * Levels 1 and up hold that maximum rounded up to a multiple of 1/255 in
+ * one byte, as Cartographer's precomputation grids do: a bound stays a
+ * bound (a little looser), the search finds the same poses, and the tables
+ * it reads at random take a quarter of the memory (a real log's scan spans
+ * near a million cells per level, beyond the core's cache as floats). */
 class CorrelationTables
 {
    public:
@@ -94,7 +101,7 @@ class CorrelationTables
 	 * outside the tables. */
 	double distanceAt(double x, double y) const;
 
-	bool empty() const { return m_levels.empty(); }
+	bool empty() const { return m_table.empty(); }
 	double resolution() const { return m_resolution; }
 	int top() const { return m_top; }
 	double x0() const { return m_x0; }
@@ -108,12 +115,17 @@ class CorrelationTables
 		const std::function<void(cv::Mat& surface)>& drawSurface);
 	/** Levels 1..top from level 0. */
 	void buildLevels();
+	/** A level's cell value, rounded up, as a multiple of this. */
+	static constexpr double kBoundScale = 255.0;
 	/** Index of table cell (u, v) in the row-major tables, -1 outside. */
 	long cellIndex(int u, int v) const;
 
 	// Row-major, m_width x m_height cells of m_resolution from (m_x0, m_y0):
-	// [0] the full-resolution table, [L] the maxima over blocks of 2^L.
-	std::vector<std::vector<float>> m_levels;
+	// the full-resolution table, and [L] the maxima over blocks of 2^L in
+	// units of 1 / kBoundScale, rounded up ([0], the table's own cells,
+	// only builds [1]).
+	std::vector<float> m_table;
+	std::vector<std::vector<uint8_t>> m_bounds;
 	std::vector<float> m_distance;	// [m] to the surface, full resolution
 	int m_width = 0, m_height = 0, m_top = 0;
 	double m_x0 = 0, m_y0 = 0, m_resolution = 0;
