@@ -9,6 +9,23 @@
 
 namespace featloc
 {
+namespace
+{
+/** Cells d[i] farther than m[i] take m[i] and, in t[i], its value val[i].
+ * A value falls with its distance, so the nearest disc's value is the
+ * largest: a minimum and a maximum, vectorized, where comparisons would
+ * branch in an order no predictor follows. */
+void lowerRun(const float* __restrict m, const float* __restrict val, float* __restrict d,
+	float* __restrict t, int len)
+{
+	for (int i = 0; i < len; i++)
+	{
+		d[i] = std::min(d[i], m[i]);
+		t[i] = std::max(t[i], val[i]);
+	}
+}
+}  // namespace
+
 int CorrelationTables::topLevelFor(double halfWindow, double resolution)
 {
 	const int cellsAcross = 2 * static_cast<int>(std::ceil(halfWindow / resolution)) + 1;
@@ -79,10 +96,9 @@ void CorrelationTables::buildNear(int width, int height, double x0, double y0, d
 	std::fill(m_table.begin(), m_table.end(), 0.0f);
 	// Each cell ends with the least distance of the discs over it and that
 	// distance's value, whatever the order the discs are written in (a
-	// distance has one value). The comparisons are selections, not
-	// branches: a run's cells take them in no order one could predict.
-	float* __restrict dist = m_distance.data();
-	float* __restrict table = m_table.data();
+	// distance has one value).
+	float* dist = m_distance.data();
+	float* table = m_table.data();
 	const size_t W = static_cast<size_t>(m_width);
 	for (int v = 0; v < m_height; v++)
 	{
@@ -97,16 +113,10 @@ void CorrelationTables::buildNear(int width, int height, double x0, double y0, d
 				const int rv = v + r.dv;
 				if (rv < 0 || rv >= m_height) continue;
 				const int lo = std::max(u - r.half, 0), hi = std::min(u + r.half, m_width - 1);
-				const float* __restrict m = metres.data() + r.first + (lo - (u - r.half));
-				const float* __restrict val = values.data() + r.first + (lo - (u - r.half));
-				float* __restrict d = dist + static_cast<size_t>(rv) * W + static_cast<size_t>(lo);
-				float* __restrict t = table + static_cast<size_t>(rv) * W + static_cast<size_t>(lo);
-				for (int i = 0; i <= hi - lo; i++)
-				{
-					const bool closer = m[i] < d[i];
-					d[i] = closer ? m[i] : d[i];
-					t[i] = closer ? val[i] : t[i];
-				}
+				const size_t from = r.first + static_cast<size_t>(lo - (u - r.half));
+				const size_t cell = static_cast<size_t>(rv) * W + static_cast<size_t>(lo);
+				lowerRun(metres.data() + from, values.data() + from, dist + cell, table + cell,
+					hi - lo + 1);
 			}
 			if (u + 1 >= m_width) break;
 		}
@@ -202,6 +212,29 @@ std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 			cv[static_cast<size_t>(w) * n + i] = static_cast<int>(std::floor((y - m_y0) / res));
 		}
 	}
+	// For the bounds: each rotation's points that every translation of the
+	// window keeps on the tables, as cell indices at the centre's (read
+	// without checks), and the others (checked). Byte sums are exact in any
+	// order; level 0's float sums keep the points' order.
+	const long W = m_width;
+	std::vector<int32_t> inside(static_cast<size_t>(yaws) * n);
+	std::vector<uint32_t> edge(static_cast<size_t>(yaws) * n);
+	std::vector<size_t> insideCount(static_cast<size_t>(yaws)), edgeCount(static_cast<size_t>(yaws));
+	for (int w = 0; w < yaws; w++)
+	{
+		const size_t base = static_cast<size_t>(w) * n;
+		size_t ni = 0, ne = 0;
+		for (size_t i = 0; i < n; i++)
+		{
+			const int u = cu[base + i], v = cv[base + i];
+			if (u - nx >= 0 && u + nx < m_width && v - ny >= 0 && v + ny < m_height)
+				inside[base + ni++] = static_cast<int32_t>(v * W + u);
+			else
+				edge[base + ne++] = static_cast<uint32_t>(i);
+		}
+		insideCount[static_cast<size_t>(w)] = ni;
+		edgeCount[static_cast<size_t>(w)] = ne;
+	}
 	// Mean table value under rotation w's points moved by (dx, dy) cells:
 	// at level L, a bound for the block of 2^L x 2^L translations from there
 	// (its bytes summed exactly, and nudged up by more than the division's
@@ -218,14 +251,25 @@ std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 			}
 			return sum / static_cast<double>(n);
 		}
-		const auto& t = m_bounds[static_cast<size_t>(level)];
-		uint32_t sum = 0;
-		for (size_t i = 0; i < n; i++)
+		const uint8_t* t = m_bounds[static_cast<size_t>(level)].data();
+		const uint8_t* at = t + (dy * W + dx);
+		const int32_t* in = inside.data() + base;
+		const size_t ni = insideCount[static_cast<size_t>(w)];
+		uint32_t s0 = 0, s1 = 0;
+		size_t j = 0;
+		for (; j + 1 < ni; j += 2)
 		{
-			const long c = cellIndex(cu[base + i] + dx, cv[base + i] + dy);
-			if (c >= 0) sum += t[static_cast<size_t>(c)];
+			s0 += at[in[j]];
+			s1 += at[in[j + 1]];
 		}
-		return sum / (kBoundScale * static_cast<double>(n)) * (1 + 1e-12);
+		if (j < ni) s0 += at[in[j]];
+		const uint32_t* e = edge.data() + base;
+		for (size_t k = 0; k < edgeCount[static_cast<size_t>(w)]; k++)
+		{
+			const long c = cellIndex(cu[base + e[k]] + dx, cv[base + e[k]] + dy);
+			if (c >= 0) s0 += t[static_cast<size_t>(c)];
+		}
+		return (s0 + s1) / (kBoundScale * static_cast<double>(n)) * (1 + 1e-12);
 	};
 
 	struct Node
