@@ -8,6 +8,7 @@
 #include <mrpt/core/bits_math.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <opencv2/imgproc.hpp>
 #include <vector>
@@ -40,11 +41,15 @@ void drawAtEdges(cv::Mat& s)
 	cv::line(s, {50, 1}, {90, 1}, cv::Scalar(0));
 }
 
-// Distances and values of `near` against `exact` over the whole table.
-void expectNearIsExact(const CorrelationTables& exact, const CorrelationTables& near,
-	double maxDistance, size_t& inside, size_t& beyond)
+// Near tables of the surface `drawn` against the exact ones over the whole
+// table: the same distances and values within maxDistance (at least 2000
+// cells), none beyond (at least 10000).
+void expectNearIsExact(const std::function<void(cv::Mat&)>& drawn, double maxDistance)
 {
-	inside = beyond = 0;
+	CorrelationTables exact, near;
+	exact.build(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, drawn);
+	near.buildNear(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, maxDistance, drawn);
+	size_t inside = 0, beyond = 0;
 	for (int v = 0; v < kHeight; v++)
 		for (int u = 0; u < kWidth; u++)
 		{
@@ -70,21 +75,16 @@ void expectNearIsExact(const CorrelationTables& exact, const CorrelationTables& 
 				ASSERT_LT(exact.score(px, py, origin), std::exp(-0.5 * std::pow(maxDistance / kHit, 2)));
 			}
 		}
+	EXPECT_GT(inside, 2000u);
+	EXPECT_GT(beyond, 10000u);
+	// Outside the table: no distance either way.
+	EXPECT_LT(near.distanceAt(kX0 - 1, kY0), 0.0);
 }
 }  // namespace
 
 TEST(CorrelationTables, NearTablesAreTheExactOnesWithinTheirDistance)
 {
-	const double maxDistance = 0.25;
-	CorrelationTables exact, near;
-	exact.build(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, draw);
-	near.buildNear(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, maxDistance, draw);
-	size_t inside = 0, beyond = 0;
-	expectNearIsExact(exact, near, maxDistance, inside, beyond);
-	EXPECT_GT(inside, 2000u);
-	EXPECT_GT(beyond, 10000u);
-	// Outside the table: no distance either way.
-	EXPECT_LT(near.distanceAt(kX0 - 1, kY0), 0.0);
+	expectNearIsExact(draw, 0.25);
 }
 
 TEST(CorrelationTables, NearTablesGiveTheSameBranchAndBound)
@@ -126,14 +126,7 @@ TEST(CorrelationTables, NearTablesGiveTheSameBranchAndBound)
 
 TEST(CorrelationTables, NearTablesAreExactWhereTheEdgesCutTheirDiscs)
 {
-	const double maxDistance = 0.25;
-	CorrelationTables exact, near;
-	exact.build(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, drawAtEdges);
-	near.buildNear(kWidth, kHeight, kX0, kY0, kRes, kHit, kTop, maxDistance, drawAtEdges);
-	size_t inside = 0, beyond = 0;
-	expectNearIsExact(exact, near, maxDistance, inside, beyond);
-	EXPECT_GT(inside, 2000u);
-	EXPECT_GT(beyond, 10000u);
+	expectNearIsExact(drawAtEdges, 0.25);
 }
 
 TEST(CorrelationTables, BranchAndBoundFindsEveryPoseAtOrAboveTheRatio)
