@@ -217,6 +217,8 @@ std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 	// without checks), and the others (checked). Byte sums are exact in any
 	// order; level 0's float sums keep the points' order.
 	const long W = m_width;
+	// (Tables beyond int32's cells, a map of 100 km^2 at 5 cm, are read checked.)
+	const bool indexable = static_cast<long>(m_height) * W <= std::numeric_limits<int32_t>::max();
 	std::vector<int32_t> inside(static_cast<size_t>(yaws) * n);
 	std::vector<uint32_t> edge(static_cast<size_t>(yaws) * n);
 	std::vector<size_t> insideCount(static_cast<size_t>(yaws)), edgeCount(static_cast<size_t>(yaws));
@@ -227,7 +229,7 @@ std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 		for (size_t i = 0; i < n; i++)
 		{
 			const int u = cu[base + i], v = cv[base + i];
-			if (u - nx >= 0 && u + nx < m_width && v - ny >= 0 && v + ny < m_height)
+			if (indexable && u - nx >= 0 && u + nx < m_width && v - ny >= 0 && v + ny < m_height)
 				inside[base + ni++] = static_cast<int32_t>(v * W + u);
 			else
 				edge[base + ne++] = static_cast<uint32_t>(i);
@@ -252,17 +254,17 @@ std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 			return sum / static_cast<double>(n);
 		}
 		const uint8_t* t = m_bounds[static_cast<size_t>(level)].data();
-		const uint8_t* at = t + (dy * W + dx);
+		const long off = dy * W + dx;
 		const int32_t* in = inside.data() + base;
 		const size_t ni = insideCount[static_cast<size_t>(w)];
 		uint32_t s0 = 0, s1 = 0;
 		size_t j = 0;
 		for (; j + 1 < ni; j += 2)
 		{
-			s0 += at[in[j]];
-			s1 += at[in[j + 1]];
+			s0 += t[in[j] + off];
+			s1 += t[in[j + 1] + off];
 		}
-		if (j < ni) s0 += at[in[j]];
+		if (j < ni) s0 += t[in[j] + off];
 		const uint32_t* e = edge.data() + base;
 		for (size_t k = 0; k < edgeCount[static_cast<size_t>(w)]; k++)
 		{
