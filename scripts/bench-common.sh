@@ -278,6 +278,11 @@ featloc_matchers_two_ways() { # key, value A, label A, value B, label B, seeds, 
     done
   done
 }
+# A bench_featloc_run's time per match (mean / median) and ATE rmse, as a
+# table cell: "M / m ms, A mm".
+match_time_and_ate() { # name: of $OUT/NAME
+  jq -r '"\(.match_time_s.mean * 1e5 | round / 100) / \(.match_time_s.median * 1e5 | round / 100) ms, \(.evaluation.ate_m.rmse * 1000 | round) mm"' "$OUT/$1/summary.json"
+}
 # "ATE [mm] / failed matches / fallback matches" of the run $OUT/NAME.
 run_counts() { jq -r '"\((.evaluation.ate_m.rmse // -0.001) * 1000 | round) / \(.counts.match_failures) / \(.counts.fallback_matcher_matches)"' "$OUT/$1/summary.json"; }
 # Run B against run A step by step (featloc-eval REFERENCE B --paired-with A).

@@ -56,16 +56,13 @@ echo "### Whole runs (featloc-run as config.ini has it but the matcher; time per
 echo
 echo "| log | matcher | shared | own tables |"
 echo "|---|---|---|---|"
-whole() { # name: ATE and time per match of $OUT/NAME
-  jq -r '"\(.match_time_s.mean * 1e5 | round / 100) / \(.match_time_s.median * 1e5 | round / 100) ms, \(.evaluation.ate_m.rmse * 1000 | round) mm"' "$OUT/$1/summary.json"
-}
 for f in "$LASER2D/orebro-corrected.log.gz" $(held_out_radish_logs); do
   name="$(basename "$f" -corrected.log.gz)"
   for m in PcmFeatureMatcher CfIdcMatcher; do
     bench_featloc_run "$name-$m-shared" "$f" "" --set "ScanMatcher:class=featloc::$m"
     bench_featloc_run "$name-$m-own" "$f" "" --set "ScanMatcher:class=featloc::$m" \
       --set "ScanMatcher.$m:fallback_shares_tables=false"
-    echo "| $name | $m | $(whole "$name-$m-shared") | $(whole "$name-$m-own") |"
+    echo "| $name | $m | $(match_time_and_ate "$name-$m-shared") | $(match_time_and_ate "$name-$m-own") |"
   done
 done
 echo

@@ -83,9 +83,6 @@ fi
 echo
 echo "### Whole runs (featloc-run as config.ini has it, PCM; time per match mean / median [ms], ATE rmse [mm])"
 echo
-whole() { # name: ATE and time per match of $OUT/NAME
-  jq -r '"\(.match_time_s.mean * 1e5 | round / 100) / \(.match_time_s.median * 1e5 | round / 100) ms, \(.evaluation.ate_m.rmse * 1000 | round) mm"' "$OUT/$1/summary.json"
-}
 if [ -n "$BASE" ]; then
   echo "| log | this build | baseline |"
   echo "|---|---|---|"
@@ -99,9 +96,9 @@ for f in "$LASER2D/orebro-corrected.log.gz" $(held_out_radish_logs); do
   if [ -n "$BASE" ]; then
     (BIN="$BASE" bench_featloc_run "$name-pcm-baseline" "$f" "" \
       --set "ScanMatcher:class=featloc::PcmFeatureMatcher")
-    echo "| $name | $(whole "$name-pcm") | $(whole "$name-pcm-baseline") |"
+    echo "| $name | $(match_time_and_ate "$name-pcm") | $(match_time_and_ate "$name-pcm-baseline") |"
   else
-    echo "| $name | $(whole "$name-pcm") |"
+    echo "| $name | $(match_time_and_ate "$name-pcm") |"
   fi
 done
 echo

@@ -118,7 +118,6 @@ void CorrelationTables::buildNear(int width, int height, double x0, double y0, d
 				lowerRun(metres.data() + from, values.data() + from, dist + cell, table + cell,
 					hi - lo + 1);
 			}
-			if (u + 1 >= m_width) break;
 		}
 	}
 	buildLevels();
@@ -221,7 +220,7 @@ std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 	const bool indexable = static_cast<long>(m_height) * W <= std::numeric_limits<int32_t>::max();
 	std::vector<int32_t> inside(static_cast<size_t>(yaws) * n);
 	std::vector<uint32_t> edge(static_cast<size_t>(yaws) * n);
-	std::vector<size_t> insideCount(static_cast<size_t>(yaws)), edgeCount(static_cast<size_t>(yaws));
+	std::vector<size_t> insideCount(static_cast<size_t>(yaws));	// the rest: n - it
 	for (int w = 0; w < yaws; w++)
 	{
 		const size_t base = static_cast<size_t>(w) * n;
@@ -235,7 +234,6 @@ std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 				edge[base + ne++] = static_cast<uint32_t>(i);
 		}
 		insideCount[static_cast<size_t>(w)] = ni;
-		edgeCount[static_cast<size_t>(w)] = ne;
 	}
 	// Mean table value under rotation w's points moved by (dx, dy) cells:
 	// at level L, a bound for the block of 2^L x 2^L translations from there
@@ -266,7 +264,7 @@ std::vector<CorrelationTables::Candidate> CorrelationTables::search(
 		}
 		if (j < ni) s0 += t[in[j] + off];
 		const uint32_t* e = edge.data() + base;
-		for (size_t k = 0; k < edgeCount[static_cast<size_t>(w)]; k++)
+		for (size_t k = 0; k < n - ni; k++)
 		{
 			const long c = cellIndex(cu[base + e[k]] + dx, cv[base + e[k]] + dy);
 			if (c >= 0) s0 += t[static_cast<size_t>(c)];
