@@ -84,6 +84,7 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	read(c, s, "coarse_confirm_probe", confirmProbe);
 	read(c, s, "coarse_confirm_probe_window", confirmProbeWindow);
 	read(c, s, "coarse_confirm_probe_sigma", confirmProbeSigma);
+	read(c, s, "coarse_confirm_probe_turn", confirmProbeTurn);
 	require(windowSigmas > 0, c, s, "coarse_window_sigmas", "> 0");
 	require(minWindowXY >= 0, c, s, "coarse_min_window_xy", ">= 0");
 	require(minWindowYaw >= 0, c, s, "coarse_min_window_yaw_DEG", ">= 0");
@@ -167,6 +168,10 @@ void CorrelativeScanSearch::Options::saveToConfigFile(
 	write(c, s, "coarse_confirm_probe_sigma", confirmProbeSigma,
 		"[m] the probe runs where the estimate's largest translation sigma reaches this "
 		"(0: wherever the share confirms)");
+	write(c, s, "coarse_confirm_probe_turn", confirmProbeTurn,
+		"the probe follows the estimate's least certain motion with its turn (yaw scaled by the "
+		"points' RMS range), turning the pose about that motion's centre; false: translation "
+		"only");
 }
 
 mrpt::math::CMatrixDouble33 CorrelativeScanSearch::Result::gridCovariance() const

@@ -107,12 +107,23 @@ class CorrelativeScanSearch
 		bool confirmProbe = true;
 		bool confirmProbeWindow = true;
 		/** The probe runs only where the estimate's largest translation
-		 * sigma reaches this: a match that fixes every direction to a 25th
+		 * sigma (with confirmProbeTurn, of its motion with the turn scaled
+		 * by the points' RMS range) reaches this: a match that fixes every direction to a 25th
 		 * of the probe's shorter step (2 x 5 cm) has no weak direction to
 		 * slide along, and the probe's four shares would cost PCM's office
 		 * pairs a seventh of their time (doc/benchmarks.md, "Issue 15,
 		 * nineteenth session"). 0: wherever the share confirms. */
 		double confirmProbeSigma = 0.004;  //!< [m]
+		/** The probe follows the estimate's least certain motion with its
+		 * turn: the largest eigenvector of its covariance with the yaw
+		 * scaled by the current points' RMS range (how far a turn moves
+		 * them), the pose turned about that motion's centre. A round wall
+		 * fixes the position but not a turn about its centre, and a round
+		 * hall's 5-degree facets put a pose turned a facet about it on the
+		 * reference as well as the right one (doc/benchmarks.md, "Issue
+		 * 15, twenty-ninth session"). false: the least certain translation
+		 * only, the heading kept. */
+		bool confirmProbeTurn = true;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& c, const std::string& s) override;
