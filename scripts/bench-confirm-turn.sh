@@ -18,6 +18,8 @@
 #    the five other Radish logs (../shared/data/laser2d or $FEATLOC_LASER2D).
 #  - PCM's time per office pair alone with MRPT's ICP, both ways, three
 #    runs in turn (issue 15's speed target).
+#  - Whole runs in the rotunda, both ways, each featloc matcher as the
+#    matcher chain and in the EKF.
 # Usage: scripts/bench-confirm-turn.sh [OUTDIR]   (about 30 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
@@ -73,34 +75,15 @@ bench "orchard frozen (1 cm)" "$OUT/orchard frozen (1 cm).rawlog" \
 sim_world rotunda "rotunda frozen (1 cm)" --frozen --set Laser:range_noise=0.01
 bench "rotunda frozen (1 cm)" "$OUT/rotunda frozen (1 cm).rawlog" \
   -g "$OUT/rotunda frozen (1 cm).gt.txt" --world "$ROOT/worlds/rotunda.ini" --frozen
-for w in office lab; do
-  sim_1cm "$w"
-  bench "sim $w (1 cm)" "$OUT/$w-1cm.rawlog" -g "$OUT/$w-1cm.gt.txt" --world "$ROOT/worlds/$w.ini"
-done
-for w in apartment warehouse-aisles parking-garage; do
-  sim_world "$w" "$w-frozen-1cm" --frozen --set Laser:range_noise=0.01
-  bench "$w frozen (1 cm)" "$OUT/$w-frozen-1cm.rawlog" -g "$OUT/$w-frozen-1cm.gt.txt" \
-    --world "$ROOT/worlds/$w.ini" --frozen
-done
+# The data sets of PCM's extraction benches (bench-common.sh), then the two
+# they leave out: the workshop, and the calibration scenes on the lattice.
+bench_extraction_scenes
 echo
-echo "### Held out from the change: people, carts, lattices, real logs"
+echo "### Held out from the change: the workshop, the calibration scenes on the lattice"
 echo
 HEADER=--header
-for w in corridor-people hall-people room-moving-objects workshop-moving-objects apartment \
-  warehouse-aisles parking-garage; do
-  world "$w" "$w"
-done
+world workshop-moving-objects workshop-moving-objects
 bench_calibration_lattices ", lattice"
-for w in apartment warehouse-aisles parking-garage corridor-people; do
-  sim_lattice "$w" "$w-lattice"
-  bench "$w, lattice" "$OUT/$w-lattice.rawlog" -g "$OUT/$w-lattice.gt.txt"
-done
-bench "bundled (MRPT's simulator, lattice)" "$ROOT/rawlogs/mrpt-simul/simul.rawlog" \
-  -g "$ROOT/rawlogs/mrpt-simul/simul.gt.txt"
-if [ -d "$LASER2D" ]; then
-  bench orebro "$LASER2D/orebro-corrected.log.gz"
-  for f in $(held_out_radish_logs); do bench "$(basename "$f" -corrected.log.gz)" "$f"; done
-fi
 echo
 echo "### Time per office pair, PCM with MRPT's ICP alone in the run (three runs each way)"
 echo
@@ -114,6 +97,28 @@ for run in 1 2 3; do
       $COMMON -m "PCM ($way)=featloc::PcmFeatureMatcher,IcpMatcher (MRPT)=featloc::IcpMatcher" \
       $HEADER --name "sim office (1 cm), run $run" "${extra[@]}" | main_table
     HEADER=
+  done
+done
+# Whole runs in the rotunda (featloc-run as config.ini has it, each
+# featloc matcher with estimator = matcher and then ekf), the turn against
+# none in the matcher's section and in its IDC fallback's.
+echo
+echo "### Whole runs in the rotunda: ATE rmse [mm] / failed matches / fallback matches, no turn | turn"
+echo
+echo "| log | matcher | estimator | no turn | turn | turn against no turn: mean RPE difference [mm] (95%); steps off only turn / only no turn, McNemar |"
+echo "|---|---|---|---|---|---|"
+for log in rotunda "rotunda frozen"; do
+  for est in matcher ekf; do
+    for m in PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
+      name="whole-${log// /-}-$est-$m"
+      for t in true false; do
+        bench_featloc_run "$name-$t" "$OUT/$log.rawlog" "$OUT/$log.gt.txt" \
+          --set "Pipeline:estimator=$est" --set "ScanMatcher:class=featloc::$m" \
+          --set "ScanMatcher.$m:coarse_confirm_probe_turn=$t" \
+          --set "ScanMatcher.IdcMatcher:coarse_confirm_probe_turn=$t"
+      done
+      echo "| $log | $m | $est | $(run_counts "$name-false") | $(run_counts "$name-true") | $(runs_paired "$OUT/$log.gt.txt" "$OUT/$name-true" "$OUT/$name-false") |"
+    done
   done
 done
 echo
