@@ -689,6 +689,7 @@ TEST(FeatlocBench, ErrorsBesideTheCramerRaoBoundOfTheSimulatedWorld)
 		shellQuote(sim + "office.rawlog") + " --max-pairs 60 -q";
 	const CommandResult r = runCommand(common + " -g " + shellQuote(sim + "office.gt.txt") +
 		" --world " + shellQuote(worlds + "office.ini") + " -j " + shellQuote(dir.file("b.json")) +
+		" --pair-bounds " + shellQuote(dir.file("bounds.tsv")) +
 		" -m featloc::PcmFeatureMatcher,featloc::IcpMatcher");
 	ASSERT_EQ(r.exitCode, 0) << r.output;
 	EXPECT_NE(r.output.find("| office.rawlog | featloc::PcmFeatureMatcher | 60 | "), std::string::npos)
@@ -705,6 +706,39 @@ TEST(FeatlocBench, ErrorsBesideTheCramerRaoBoundOfTheSimulatedWorld)
 		EXPECT_GT(c["trans_ratio"].get<double>(), 1.0) << m["matcher"];
 		EXPECT_GT(c["yaw_ratio"].get<double>(), 1.0) << m["matcher"];
 	}
+	// --pair-bounds: each pair's bound, whose mean is the table's, beside
+	// its true motion (a robot driving forward: scan k - 1 to scan k).
+	std::istringstream rows(readText(dir.file("bounds.tsv")));
+	std::string line;
+	size_t n = 0;
+	double sumMeanT = 0;
+	while (std::getline(rows, line))
+	{
+		if (line.rfind("#", 0) == 0) continue;
+		std::vector<std::string> c;
+		std::istringstream fields(line);
+		for (std::string f; std::getline(fields, f, '\t');) c.push_back(f);
+		ASSERT_EQ(c.size(), 15u) << line;
+		EXPECT_EQ(c[0], "office.rawlog");
+		EXPECT_EQ(std::stoul(c[1]), n);
+		EXPECT_EQ(std::stoul(c[3]), std::stoul(c[2]) + 1) << line;
+		EXPECT_LT(std::abs(std::stod(c[4])), 0.5) << "5 Hz: a step under 0.5 m";
+		const double xx = std::stod(c[7]), yy = std::stod(c[10]), ww = std::stod(c[12]);
+		EXPECT_GT(xx, 0) << line;
+		EXPECT_GT(yy, 0) << line;
+		EXPECT_GT(ww, 0) << line;
+		EXPECT_LT(std::sqrt(xx + yy), 0.005) << line;
+		EXPECT_LE(std::abs(std::stod(c[8])), std::sqrt(xx * yy) * (1 + 1e-9)) << line;
+		sumMeanT += std::stod(c[13]);
+		n++;
+	}
+	EXPECT_EQ(n, 60u);
+	EXPECT_NEAR(sumMeanT / 60, j["results"][0]["cramer_rao"]["bound_mean_trans_m"].get<double>(), 1e-9);
+	const CommandResult boundsWithoutWorld = runCommand(common + " -g " +
+		shellQuote(sim + "office.gt.txt") + " --pair-bounds " + shellQuote(dir.file("x.tsv")));
+	EXPECT_EQ(boundsWithoutWorld.exitCode, 2);
+	EXPECT_NE(boundsWithoutWorld.output.find("--pair-bounds needs --world FILE"), std::string::npos)
+		<< boundsWithoutWorld.output;
 
 	const CommandResult other = runCommand(common + " -g " + shellQuote(sim + "office.gt.txt") +
 		" --world " + shellQuote(worlds + "lab.ini"));
@@ -1044,6 +1078,94 @@ TEST(ReferenceErrorShare, SplitsKnownOwnAndSharedErrors)
 	EXPECT_NEAR(std::stod(difference["A-B"][5]), 3.0, 0.25) << r.output;
 	// (1 + 4) / (1 + 1) per axis with D.
 	EXPECT_NEAR(std::stod(difference["A-D"][5]), 7.5, 0.8) << r.output;
+}
+
+// scripts/pair-bound-ratios.py on outcomes whose errors are known against a
+// correlated bound B: "efficient" draws its errors from B and reports B,
+// "twice" draws them from 4 B and reports B, "claims" draws from B and
+// reports B / 4. Failed, gross and unbounded pairs are left out.
+TEST(PairBoundRatios, FindsHowFarFromTheBoundAndWhoClaimsToBeatIt)
+{
+	TempDir dir;
+	mrpt::random::CRandomGenerator rng(7);
+	Eigen::Matrix3d B;
+	B << 4e-6, 1.5e-6, 2e-7, 1.5e-6, 2e-6, -1e-7, 2e-7, -1e-7, 1e-7;
+	const Eigen::Matrix3d L = B.llt().matrixL();
+	const size_t n = 3000;
+	{
+		std::ofstream p(dir.file("p.tsv")), b(dir.file("b.tsv"));
+		p << "# data\tmatcher\tpair\tstatus\terr_x_m\terr_y_m\terr_yaw_rad\tcov_xx\tcov_xy\tcov_xyaw\tcov_yy\tcov_yyaw\tcov_yawyaw\treason\n";
+		b << "# data\tpair\treference_scan\tcurrent_scan\ttrue_x_m\ttrue_y_m\ttrue_yaw_rad\tcrb_xx\tcrb_xy\tcrb_xyaw\tcrb_yy\tcrb_yyaw\tcrb_yawyaw\tcrb_mean_t_m\tcrb_mean_w_rad\n";
+		p.precision(12);
+		b.precision(12);
+		auto row = [](std::ostream& f, const Eigen::Matrix3d& m) {
+			f << m(0, 0) << "\t" << m(0, 1) << "\t" << m(0, 2) << "\t" << m(1, 1) << "\t" << m(1, 2)
+			  << "\t" << m(2, 2);
+		};
+		for (size_t k = 0; k < n + 1; k++)
+		{
+			b << "log\t" << k << "\t" << k << "\t" << k + 1 << "\t0.1\t0\t0\t";
+			if (k == n)
+				b << "nan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n";  // no bound: left out
+			else
+			{
+				row(b, B);
+				b << "\t0.002\t0.0003\n";
+			}
+		}
+		for (const std::string m : {"efficient", "twice", "claims"})
+			for (size_t k = 0; k < n + 1; k++)
+			{
+				Eigen::Vector3d z;
+				for (int i = 0; i < 3; i++) z[i] = rng.drawGaussian1D_normalized();
+				Eigen::Vector3d e = L * z * (m == "twice" ? 2.0 : 1.0);
+				std::string status = "used";
+				if (k == 5) status = "failed";
+				if (k == 6) e[0] = 0.2;  // gross: left out
+				p << "log\t" << m << "\t" << k << "\t" << status << "\t" << e[0] << "\t" << e[1]
+				  << "\t" << e[2] << "\t";
+				row(p, m == "claims" ? Eigen::Matrix3d(B / 4) : B);
+				p << "\t" << (status == "used" ? "" : "no convergence") << "\n";
+			}
+	}
+	const CommandResult r = runCommand("python3 " +
+		shellQuote(std::string(FEATLOC_SOURCE_DIR) + "/scripts/pair-bound-ratios.py") + " " +
+		shellQuote(dir.file("p.tsv")) + " " + shellQuote(dir.file("b.tsv")));
+	ASSERT_EQ(r.exitCode, 0) << r.output;
+	std::map<std::string, std::vector<std::string>> rows;
+	std::istringstream out(r.output);
+	for (std::string line; std::getline(out, line);)
+	{
+		if (line.rfind("| log |", 0) != 0) continue;
+		std::vector<std::string> c;
+		std::istringstream cells(line);
+		for (std::string cell; std::getline(cells, cell, '|');)
+			c.push_back(cell.size() >= 2 ? cell.substr(1, cell.size() - 2) : "");
+		ASSERT_EQ(c.size(), 9u) << line;  // | log | m | n | NEES | eff | rms | claimed | under |
+		rows[c[2]] = c;
+	}
+	ASSERT_EQ(rows.size(), 3u) << r.output;
+	auto first = [](const std::string& cell) { return std::stod(cell.substr(0, cell.find(' '))); };
+	auto numbers = [](const std::string& cell) {
+		std::vector<double> v;
+		std::istringstream in(cell);
+		for (std::string x; std::getline(in, x, ',');) v.push_back(std::stod(x));
+		return v;
+	};
+	for (const auto& [m, c] : rows) EXPECT_EQ(c[3], std::to_string(n - 2)) << m;
+	EXPECT_NEAR(first(rows["efficient"][4]), 3.0, 0.2);
+	EXPECT_NEAR(first(rows["efficient"][5]), 3.0, 0.2);
+	EXPECT_NEAR(first(rows["twice"][4]), 12.0, 0.8);
+	EXPECT_NEAR(first(rows["twice"][5]), 12.0, 0.8);
+	EXPECT_NEAR(first(rows["claims"][4]), 12.0, 0.8);
+	EXPECT_NEAR(first(rows["claims"][5]), 3.0, 0.2);
+	for (double v : numbers(rows["efficient"][6])) EXPECT_NEAR(v, 1.0, 0.06);
+	for (double v : numbers(rows["twice"][6])) EXPECT_NEAR(v, 2.0, 0.12);
+	for (double v : numbers(rows["twice"][7])) EXPECT_NEAR(v, 1.0, 1e-6);
+	for (double v : numbers(rows["claims"][7])) EXPECT_NEAR(v, 0.5, 1e-6);
+	EXPECT_EQ(rows["efficient"][8], "0.0%");
+	EXPECT_EQ(rows["twice"][8], "0.0%");
+	EXPECT_EQ(rows["claims"][8], "100.0%");
 }
 
 // IDC's point-to-line phase can cycle for ever: points change lines as the

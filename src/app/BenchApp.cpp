@@ -194,6 +194,40 @@ void writePairOutcomes(const std::string& path, const std::string& name,
 	if (!f) throw std::runtime_error("cannot write '" + path + "'");
 }
 
+/** --pair-bounds: one row per pair with a world (--world): the true motion
+ * and the pair's Cramer-Rao bound (its covariance and the mean |t| and |w|
+ * errors it allows; "nan" where the bound is not finite), in the pairs'
+ * order of --pairs, so that each matcher's error can be set against the
+ * bound pair by pair and direction by direction. */
+void writePairBounds(const std::string& path, const std::string& name,
+	const std::vector<ScanPairSample>& pairs, const std::vector<size_t>& referenceIndex,
+	const std::vector<size_t>& currentIndex)
+{
+	std::ofstream f(path);
+	if (!f) throw std::runtime_error("cannot write '" + path + "'");
+	f << "# data\tpair\treference_scan\tcurrent_scan\ttrue_x_m\ttrue_y_m\ttrue_yaw_rad\t"
+		 "crb_xx\tcrb_xy\tcrb_xyaw\tcrb_yy\tcrb_yyaw\tcrb_yawyaw\tcrb_mean_t_m\tcrb_mean_w_rad\n";
+	char buf[400];
+	for (size_t k = 0; k < pairs.size(); k++)
+	{
+		const ScanPairSample& p = pairs[k];
+		std::snprintf(buf, sizeof(buf), "\t%zu\t%zu\t%zu\t%.9g\t%.9g\t%.9g", k, referenceIndex[k],
+			currentIndex[k], p.truth.x(), p.truth.y(), p.truth.phi());
+		f << name << buf;
+		if (p.bound && p.bound->bounded)
+		{
+			const auto& c = p.bound->cov;
+			std::snprintf(buf, sizeof(buf), "\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\n",
+				c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2), p.bound->meanTrans,
+				p.bound->meanYaw);
+			f << buf;
+		}
+		else
+			f << "\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n";
+	}
+	if (!f) throw std::runtime_error("cannot write '" + path + "'");
+}
+
 /** --basin-levels: "XY/YAW_DEG,..." as (metres, radians). */
 std::vector<std::pair<double, double>> parseBasinLevels(const std::string& text)
 {
@@ -464,6 +498,11 @@ int BenchApp::main(int argc, char** argv)
 		"against the reference, the covariance used), for analyses across "
 		"matchers such as scripts/reference-error-share.py",
 		false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> argPairBounds("", "pair-bounds",
+		"With --world: also write every pair's true motion and Cramer-Rao bound (TSV: "
+		"the bound's covariance of x y yaw and the mean |t| and |w| errors it allows), "
+		"in the order of --pairs",
+		false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> argPairedWith("", "paired-with",
 		"Compare every other matcher with this one (a label of -m) pair by pair: "
 		"the mean |t| error difference with its 95% block-bootstrap interval, and "
@@ -509,6 +548,10 @@ int BenchApp::main(int argc, char** argv)
 		throw UsageError("--perturbation must be uniform or gaussian");
 	if (argStride.getValue() < 1) throw UsageError("--stride must be >= 1");
 	if (argFrozen.getValue() && !argWorld.isSet()) throw UsageError("--frozen needs --world FILE");
+	if (argPairBounds.isSet() && !argWorld.isSet())
+		throw UsageError("--pair-bounds needs --world FILE");
+	if (argPairBounds.isSet() && argApply.isSet())
+		throw UsageError("--pair-bounds does not go with --apply-motion (the moved scan's motion has no bound)");
 	const auto basinLevels = parseBasinLevels(argBasinLevels.getValue());
 
 	TrackedConfig cfg;
@@ -695,6 +738,8 @@ int BenchApp::main(int argc, char** argv)
 		plot.save(argBasin.getValue());
 	}
 	if (argPairs.isSet()) writePairOutcomes(argPairs.getValue(), name, results);
+	if (argPairBounds.isSet())
+		writePairBounds(argPairBounds.getValue(), name, pairs, referenceIndex, currentIndex);
 	if (argJson.isSet())
 	{
 		std::ofstream f(argJson.getValue());

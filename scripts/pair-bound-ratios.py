@@ -1,0 +1,125 @@
+#!/usr/bin/env python3
+"""Each matcher's errors and covariances against each pair's Cramer-Rao
+bound, axis by axis (issue 15, items 5 and 6): where a matcher is far from
+the bound, or over-confident, which direction is it?
+
+Input: featloc-bench --pairs PAIRS.tsv and --pair-bounds BOUNDS.tsv of the
+same run (--world). Over the pairs a matcher used and got right (status
+"used", within 10 cm and 2 deg: the ones whose covariance claims to
+describe them), per data set and matcher:
+
+- NEES e^T P^-1 e against the matcher's own covariance P (3 if consistent);
+- e^T B^-1 e against the bound B (3 for an efficient matcher; more is how
+  far from the bound, in the bound's own metric);
+- per axis (x, y along the reference's robot frame, yaw): the RMS error over
+  the RMS bound sigma, and the median of the claimed sigma over the bound's;
+- the share of pairs whose covariance claims more than the bound allows
+  along some direction (the smallest eigenvalue of B^-1 P under 0.9): such
+  a covariance is over-confident whatever the matcher does.
+
+Usage: scripts/pair-bound-ratios.py PAIRS.tsv BOUNDS.tsv
+"""
+import importlib.util
+import math
+import os
+import statistics
+import sys
+
+_spec = importlib.util.spec_from_file_location(
+    "reference_error_share", os.path.join(os.path.dirname(__file__), "reference-error-share.py"))
+_share = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(_share)
+inv3, quad, read_pairs = _share.inv3, _share.quad, _share.read
+
+GROSS_T, GROSS_W = 0.10, math.radians(2)
+
+
+def read_bounds(path):
+    """{data: {pair: B (3x3) or None}} from featloc-bench --pair-bounds."""
+    out = {}
+    with open(path) as f:
+        for n, line in enumerate(f, 1):
+            if line.startswith("#") or not line.strip():
+                continue
+            c = line.rstrip("\n").split("\t")
+            if len(c) != 15:
+                sys.exit(f"{path}:{n}: {len(c)} columns, expected 15 (featloc-bench --pair-bounds)")
+            xx, xy, xw, yy, yw, ww = (float(x) for x in c[7:13])
+            B = [[xx, xy, xw], [xy, yy, yw], [xw, yw, ww]]
+            out.setdefault(c[0], {})[int(c[1])] = None if math.isnan(xx) else B
+    return out
+
+
+def smallest_eigenvalue(m):
+    """Smallest root of det(m - l I) = 0 for a 3x3 m with real eigenvalues
+    (B^-1 P, similar to a symmetric positive matrix): the trigonometric
+    solution of the characteristic cubic."""
+    tr = m[0][0] + m[1][1] + m[2][2]
+    minors = (m[0][0] * m[1][1] - m[0][1] * m[1][0] + m[0][0] * m[2][2] - m[0][2] * m[2][0] +
+              m[1][1] * m[2][2] - m[1][2] * m[2][1])
+    det = (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+    # l^3 - tr l^2 + minors l - det = 0; l = t + tr / 3.
+    p = minors - tr * tr / 3
+    q = -2 * tr ** 3 / 27 + tr * minors / 3 - det
+    if p >= 0:
+        return tr / 3  # a triple root, to rounding
+    r = 2 * math.sqrt(-p / 3)
+    arg = max(-1.0, min(1.0, 3 * q / (p * r)))
+    roots = [r * math.cos((math.acos(arg) - 2 * math.pi * k) / 3) + tr / 3 for k in range(3)]
+    return min(roots)
+
+
+def mul(a, b):
+    return [[sum(a[p][k] * b[k][q] for k in range(3)) for q in range(3)] for p in range(3)]
+
+
+def summary(xs):
+    return f"{statistics.mean(xs):.2f} / {statistics.median(xs):.2f}" if xs else "-"
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    pairs, order = read_pairs([sys.argv[1]])
+    bounds = read_bounds(sys.argv[2])
+    print("| data | matcher | pairs used and right | NEES mean / median | e^T B^-1 e mean / median "
+          "| RMS error / RMS bound sigma: x, y, yaw | median claimed sigma / bound sigma: x, y, yaw "
+          "| covariance under the bound |")
+    print("|---|---|---|---|---|---|---|---|")
+    for name in order:
+        if name not in bounds:
+            sys.exit(f"{sys.argv[2]} has no pair of '{name}' (another run's --pair-bounds?)")
+        for m in order[name]:
+            nees, eff, under = [], [], 0
+            err2, bound2, claimed = [0.0] * 3, [0.0] * 3, [[], [], []]
+            for k, (status, e, P) in pairs[name][m].items():
+                B = bounds[name].get(k)
+                if B is None or status != "used":
+                    continue
+                if math.hypot(e[0], e[1]) > GROSS_T or abs(e[2]) > GROSS_W:
+                    continue
+                Pi, Bi = inv3(P), inv3(B)
+                if Pi is None or Bi is None:
+                    continue
+                nees.append(quad(e, Pi))
+                eff.append(quad(e, Bi))
+                for a in range(3):
+                    err2[a] += e[a] ** 2
+                    bound2[a] += B[a][a]
+                    claimed[a].append(math.sqrt(max(0.0, P[a][a]) / B[a][a]))
+                if smallest_eigenvalue(mul(Bi, P)) < 0.9:
+                    under += 1
+            n = len(nees)
+            if n == 0:
+                print(f"| {name} | {m} | 0 | - | - | - | - | - |")
+                continue
+            rms = ", ".join(f"{math.sqrt(err2[a] / bound2[a]):.2f}" for a in range(3))
+            cl = ", ".join(f"{statistics.median(claimed[a]):.2f}" for a in range(3))
+            print(f"| {name} | {m} | {n} | {summary(nees)} | {summary(eff)} | {rms} | {cl} "
+                  f"| {100 * under / n:.1f}% |")
+
+
+if __name__ == "__main__":
+    main()
