@@ -8,7 +8,11 @@ same run (--world). Over the pairs a matcher used and got right (status
 "used", within 10 cm and 2 deg: the ones whose covariance claims to
 describe them), per data set and matcher:
 
-- NEES e^T P^-1 e against the matcher's own covariance P (3 if consistent);
+- NEES e^T P^-1 e against the matcher's own covariance P (3 if consistent),
+  and its mean split along P's eigenvectors (yaw in radians taken as
+  metres), least certain first (1, 1, 1 if consistent): which of the
+  claimed directions the over-confidence is in (the last is mostly the
+  heading);
 - e^T B^-1 e against the bound B (3 for an efficient matcher; more is how
   far from the bound, in the bound's own metric);
 - per axis (x, y along the reference's robot frame, yaw): the RMS error over
@@ -29,7 +33,7 @@ _spec = importlib.util.spec_from_file_location(
     "reference_error_share", os.path.join(os.path.dirname(__file__), "reference-error-share.py"))
 _share = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(_share)
-inv3, quad, read_pairs = _share.inv3, _share.quad, _share.read
+inv3, quad, read_pairs, eigen_sym = _share.inv3, _share.quad, _share.read, _share.eigen_sym
 
 GROSS_T, GROSS_W = 0.10, math.radians(2)
 
@@ -84,15 +88,16 @@ def main():
         sys.exit(__doc__)
     pairs, order = read_pairs([sys.argv[1]])
     bounds = read_bounds(sys.argv[2])
-    print("| data | matcher | pairs used and right | NEES mean / median | e^T B^-1 e mean / median "
+    print("| data | matcher | pairs used and right | NEES mean / median "
+          "| NEES along P's axes, least certain first | e^T B^-1 e mean / median "
           "| RMS error / RMS bound sigma: x, y, yaw | median claimed sigma / bound sigma: x, y, yaw "
           "| covariance under the bound |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|")
     for name in order:
         if name not in bounds:
             sys.exit(f"{sys.argv[2]} has no pair of '{name}' (another run's --pair-bounds?)")
         for m in order[name]:
-            nees, eff, under = [], [], 0
+            nees, eff, under, split = [], [], 0, [0.0] * 3
             err2, bound2, claimed = [0.0] * 3, [0.0] * 3, [[], [], []]
             for k, (status, e, P) in pairs[name][m].items():
                 B = bounds[name].get(k)
@@ -104,6 +109,11 @@ def main():
                 if Pi is None or Bi is None:
                     continue
                 nees.append(quad(e, Pi))
+                lam, V = eigen_sym(P)
+                order = sorted(range(3), key=lambda i: -lam[i])
+                for rank, i in enumerate(order):
+                    d = sum(e[r] * V[r][i] for r in range(3))
+                    split[rank] += d * d / lam[i] if lam[i] > 0 else 0.0
                 eff.append(quad(e, Bi))
                 for a in range(3):
                     err2[a] += e[a] ** 2
@@ -113,11 +123,12 @@ def main():
                     under += 1
             n = len(nees)
             if n == 0:
-                print(f"| {name} | {m} | 0 | - | - | - | - | - |")
+                print(f"| {name} | {m} | 0 | - | - | - | - | - | - |")
                 continue
             rms = ", ".join(f"{math.sqrt(err2[a] / bound2[a]):.2f}" for a in range(3))
             cl = ", ".join(f"{statistics.median(claimed[a]):.2f}" for a in range(3))
-            print(f"| {name} | {m} | {n} | {summary(nees)} | {summary(eff)} | {rms} | {cl} "
+            axes = ", ".join(f"{split[k] / n:.2f}" for k in range(3))
+            print(f"| {name} | {m} | {n} | {summary(nees)} | {axes} | {summary(eff)} | {rms} | {cl} "
                   f"| {100 * under / n:.1f}% |")
 
 

@@ -81,8 +81,9 @@ def quad(e, m):
     return sum(e[p] * m[p][q] * e[q] for p in range(3) for q in range(3))
 
 
-def psd(m):
-    """Symmetric part with negative eigenvalues set to zero (Jacobi rotations)."""
+def eigen_sym(m):
+    """Eigenvalues and eigenvectors (columns of V) of the symmetric part of
+    a 3x3 matrix, by Jacobi rotations."""
     a = [[(m[p][q] + m[q][p]) / 2 for q in range(3)] for p in range(3)]
     v = [[1.0 if p == q else 0.0 for q in range(3)] for p in range(3)]
     for _ in range(50):
@@ -106,7 +107,13 @@ def psd(m):
                 for k in range(3):
                     vkp, vkq = v[k][p], v[k][q]
                     v[k][p], v[k][q] = c * vkp - s * vkq, s * vkp + c * vkq
-    lam = [max(0.0, a[k][k]) for k in range(3)]
+    return [a[k][k] for k in range(3)], v
+
+
+def psd(m):
+    """Symmetric part with negative eigenvalues set to zero."""
+    lam, v = eigen_sym(m)
+    lam = [max(0.0, x) for x in lam]
     return [[sum(v[p][k] * lam[k] * v[q][k] for k in range(3)) for q in range(3)] for p in range(3)]
 
 

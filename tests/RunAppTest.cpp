@@ -1141,7 +1141,7 @@ TEST(PairBoundRatios, FindsHowFarFromTheBoundAndWhoClaimsToBeatIt)
 		std::istringstream cells(line);
 		for (std::string cell; std::getline(cells, cell, '|');)
 			c.push_back(cell.size() >= 2 ? cell.substr(1, cell.size() - 2) : "");
-		ASSERT_EQ(c.size(), 9u) << line;  // | log | m | n | NEES | eff | rms | claimed | under |
+		ASSERT_EQ(c.size(), 10u) << line;  // | log | m | n | NEES | axes | eff | rms | claimed | under |
 		rows[c[2]] = c;
 	}
 	ASSERT_EQ(rows.size(), 3u) << r.output;
@@ -1154,18 +1154,22 @@ TEST(PairBoundRatios, FindsHowFarFromTheBoundAndWhoClaimsToBeatIt)
 	};
 	for (const auto& [m, c] : rows) EXPECT_EQ(c[3], std::to_string(n - 2)) << m;
 	EXPECT_NEAR(first(rows["efficient"][4]), 3.0, 0.2);
-	EXPECT_NEAR(first(rows["efficient"][5]), 3.0, 0.2);
+	EXPECT_NEAR(first(rows["efficient"][6]), 3.0, 0.2);
 	EXPECT_NEAR(first(rows["twice"][4]), 12.0, 0.8);
-	EXPECT_NEAR(first(rows["twice"][5]), 12.0, 0.8);
+	EXPECT_NEAR(first(rows["twice"][6]), 12.0, 0.8);
 	EXPECT_NEAR(first(rows["claims"][4]), 12.0, 0.8);
-	EXPECT_NEAR(first(rows["claims"][5]), 3.0, 0.2);
-	for (double v : numbers(rows["efficient"][6])) EXPECT_NEAR(v, 1.0, 0.06);
-	for (double v : numbers(rows["twice"][6])) EXPECT_NEAR(v, 2.0, 0.12);
-	for (double v : numbers(rows["twice"][7])) EXPECT_NEAR(v, 1.0, 1e-6);
-	for (double v : numbers(rows["claims"][7])) EXPECT_NEAR(v, 0.5, 1e-6);
-	EXPECT_EQ(rows["efficient"][8], "0.0%");
-	EXPECT_EQ(rows["twice"][8], "0.0%");
-	EXPECT_EQ(rows["claims"][8], "100.0%");
+	EXPECT_NEAR(first(rows["claims"][6]), 3.0, 0.2);
+	// The NEES split along the claimed covariance's axes: 1 each where it
+	// is consistent, 4 each where it claims half the spread.
+	for (double v : numbers(rows["efficient"][5])) EXPECT_NEAR(v, 1.0, 0.1);
+	for (double v : numbers(rows["claims"][5])) EXPECT_NEAR(v, 4.0, 0.4);
+	for (double v : numbers(rows["efficient"][7])) EXPECT_NEAR(v, 1.0, 0.06);
+	for (double v : numbers(rows["twice"][7])) EXPECT_NEAR(v, 2.0, 0.12);
+	for (double v : numbers(rows["twice"][8])) EXPECT_NEAR(v, 1.0, 1e-6);
+	for (double v : numbers(rows["claims"][8])) EXPECT_NEAR(v, 0.5, 1e-6);
+	EXPECT_EQ(rows["efficient"][9], "0.0%");
+	EXPECT_EQ(rows["twice"][9], "0.0%");
+	EXPECT_EQ(rows["claims"][9], "100.0%");
 }
 
 // IDC's point-to-line phase can cycle for ever: points change lines as the
