@@ -216,10 +216,11 @@ TEST(CorrelativeScanSearch, EveryMatcherConvergesFromTheWideBasin)
 				EXPECT_TRUE(r.coarseScore > 0.5 || r.confirmedShare >= 0.85) << cls;
 			}
 			// (IDC's local lines grown to their direction sigma, since
-			// 2026-12-01, bring these draws home without the search too.)
+			// 2026-12-01, and with their bow, since 2026-12-03, bring these
+			// draws home without the search too.)
 			const bool idc = cls == "featloc::IdcMatcher" || cls == "featloc::CfIdcMatcher";
 			const std::string published = idc
-				? "coarse_search=false\ngrow_lines_to_direction_sigma=false"
+				? "coarse_search=false\ngrow_lines_to_direction_sigma=false\nline_bow_sigmas=0"
 				: "coarse_search=false";
 			const MatchResult p = matcher(cls, published)->match(*ref, *cur, g);
 			if (p.success && (translationError(p.estimate.mean, motion) > 0.1 ||
@@ -538,14 +539,16 @@ TEST(CorrelativeScanSearch, APoseSlidAlongAnAisleOnARangeLatticeIsNotConfirmed)
 // 0.74 m along the aisle with 0.90 of the points within 5 cm, on a plateau
 // that the probe's 10 and 20 cm slides do not leave (0.89 there); the truth
 // puts 0.96 there. Slid out to the edges of the search's window, the probe
-// finds it: the search runs and the match is right.
+// finds it: the search runs and the match is right. With straight local
+// lines (line_bow_sigmas = 0), as it was found: with their bow (the
+// default) the iterations from this guess come home themselves.
 TEST(CorrelativeScanSearch, APoseOneBayAlongAnAisleIsNotConfirmed)
 {
 	mrpt::obs::CObservation2DRangeScan ref, cur;
 	test::readScanPair("warehouse-frozen-pair-369.rawlog", ref, cur);
 	const CPose2D truth(0.1, 0, 0);
 	const auto guess = uniformGuess(CPose2D(0.47021266, -0.375177448, -0.251584736), 0.5, 20);
-	const MatchResult near = matcher("featloc::CfIdcMatcher", "coarse_confirm_probe_window=false")
+	const MatchResult near = matcher("featloc::CfIdcMatcher", "coarse_confirm_probe_window=false\nline_bow_sigmas=0")
 								 ->match(ref, cur, guess);
 	ASSERT_TRUE(near.success) << near.failureReason;
 	EXPECT_GE(near.confirmedShare, 0.85);
@@ -553,12 +556,16 @@ TEST(CorrelativeScanSearch, APoseOneBayAlongAnAisleIsNotConfirmed)
 	EXPECT_GT(translationError(near.estimate.mean, truth), 0.5);
 	EXPECT_FALSE(near.ambiguous) << "the bay's slide was silent";
 
-	const MatchResult r = matcher("featloc::CfIdcMatcher", "")->match(ref, cur, guess);
+	const MatchResult r = matcher("featloc::CfIdcMatcher", "line_bow_sigmas=0")->match(ref, cur, guess);
 	ASSERT_TRUE(r.success) << r.failureReason;
 	EXPECT_TRUE(r.confirmationSlid);
 	EXPECT_EQ(r.confirmedShare, 0.0) << "the search did not run";
 	EXPECT_LT(translationError(r.estimate.mean, truth), 0.01);
 	EXPECT_LT(yawErrorDeg(r.estimate.mean, truth), 0.1);
+
+	const MatchResult bowed = matcher("featloc::CfIdcMatcher", "")->match(ref, cur, guess);
+	ASSERT_TRUE(bowed.success) << bowed.failureReason;
+	EXPECT_LT(translationError(bowed.estimate.mean, truth), 0.03);
 }
 
 // A pose slid along a corridor keeps most points near the walls: the

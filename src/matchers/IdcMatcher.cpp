@@ -39,15 +39,17 @@ void IdcMatcher::buildReference(const ScanPoints& reference)
 	const double lineTarget = lineGrowthTargetFor(params.idc.lineTargetDirectionSigma());
 	if (m_built && m_builtSegmentation == segmentation &&
 		m_builtLineHalfWindow == params.idc.line_half_window && m_builtLineTarget == lineTarget &&
-		m_builtReference.samePointsAs(reference))
+		m_builtBowSigmas == params.idc.line_bow_sigmas && m_builtReference.samePointsAs(reference))
 		return;
 	AdaptiveBreakpointSegmenter(segmentation).segment(reference, m_segments);
-	m_polyline.build(reference, m_segments, params.idc.line_half_window, lineTarget);
+	m_polyline.build(reference, m_segments, params.idc.line_half_window, lineTarget,
+		params.idc.line_bow_sigmas);
 	m_built = true;
 	m_builtReference = reference;
 	m_builtSegmentation = segmentation;
 	m_builtLineHalfWindow = params.idc.line_half_window;
 	m_builtLineTarget = lineTarget;
+	m_builtBowSigmas = params.idc.line_bow_sigmas;
 }
 
 void IdcMatcher::matchPoints(

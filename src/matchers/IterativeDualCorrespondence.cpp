@@ -32,6 +32,7 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	read(c, s, "line_half_window", line_half_window);
 	readDegrees(c, s, "max_line_direction_sigma_DEG", max_line_direction_sigma);
 	read(c, s, "grow_lines_to_direction_sigma", grow_lines_to_direction_sigma);
+	read(c, s, "line_bow_sigmas", line_bow_sigmas);
 	read(c, s, "guess_gate_chi2", guess_gate_chi2);
 	read(c, s, "covariance_inflation", covariance_inflation);
 	read(c, s, "min_range_sigma", min_range_sigma);
@@ -49,6 +50,7 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	require(step_tolerance > 0, c, s, "step_tolerance", "> 0");
 	require(line_half_window >= 1, c, s, "line_half_window", ">= 1");
 	require(max_line_direction_sigma > 0, c, s, "max_line_direction_sigma_DEG", "> 0");
+	require(line_bow_sigmas >= 0, c, s, "line_bow_sigmas", ">= 0 (0 disables it)");
 	require(guess_gate_chi2 >= 0, c, s, "guess_gate_chi2", ">= 0 (0 disables it)");
 	require(covariance_inflation >= 1, c, s, "covariance_inflation", ">= 1");
 	require(min_range_sigma > 0, c, s, "min_range_sigma", "> 0");
@@ -86,6 +88,8 @@ void IterativeDualCorrespondence::Parameters::saveToConfigFile(
 		"[deg] point_to_line phase: points pair only with local lines whose direction is known this well (noise / sqrt(scatter along the line))");
 	write(c, s, "grow_lines_to_direction_sigma", grow_lines_to_direction_sigma,
 		"point_to_line phase: a local line whose direction is still known worse than max_line_direction_sigma_DEG after line_half_window grows on until it is not (up to 8x as many points), instead of being left out: dense noisy scans (false: as until 2026-12-01)");
+	write(c, s, "line_bow_sigmas", line_bow_sigmas,
+		"point_to_line phase: a local line whose points bow away from it by more than this many standard errors of the quadratic term keeps the bow (a local parabola): on curved walls a chord biases the heading (0 = off: straight lines only, as until 2026-12-03)");
 	write(c, s, "guess_gate_chi2", guess_gate_chi2,
 		"failure when the estimate's Mahalanobis^2 from the initial guess exceeds this (21.1: 99.99% for 3 dof; 0 = off)");
 	write(c, s, "covariance_inflation", covariance_inflation,

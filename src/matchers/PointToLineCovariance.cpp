@@ -12,16 +12,23 @@ double PointToLineCovariance::residual(
 	const mrpt::math::TPose2D& x, double c, double s, const ScanPoint& p,
 	const ReferencePolyline::LocalLine& L, Eigen::Vector3d* gradient)
 {
-	const double nx = L.nx, ny = L.ny;
 	const double qx = c * p.x - s * p.y + x.x, qy = s * p.x + c * p.y + x.y;
+	// The offset from the line less the surface's parabola there
+	// (LocalLine::tilt and bow, 0 on straight lines): e = n.d - c (t.d) - b
+	// ((t.d)^2 - mean s^2), d = q - centroid, t = (ny, -nx); de/dq = n -
+	// (c + 2 b (t.d)) t.
+	const double dx = qx - L.cx, dy = qy - L.cy;
+	const double along = L.ny * dx - L.nx * dy;
 	if (gradient)
 	{
+		const double k = L.tilt + 2 * L.bow * along;
+		const double nx = L.nx - k * L.ny, ny = L.ny + k * L.nx;
 		// d(R p)/dw = (-s px - c py, c px - s py)
 		(*gradient)[0] = nx;
 		(*gradient)[1] = ny;
 		(*gradient)[2] = nx * (-s * p.x - c * p.y) + ny * (c * p.x - s * p.y);
 	}
-	return nx * (qx - L.cx) + ny * (qy - L.cy);
+	return L.nx * dx + L.ny * dy - L.tilt * along - L.bow * (along * along - L.meanAlong2);
 }
 
 void PointToLineCovariance::rangeDerivatives(
@@ -39,11 +46,26 @@ void PointToLineCovariance::rangeDerivatives(
 	const size_t m = L.hi - L.lo + 1;
 	dedz.assign(1 + m, 0.0);
 	if (mixed) mixed->setZero(3, static_cast<Eigen::Index>(1 + m));
-	// Current point: it moves along its beam.
-	dedz[0] = nx * (c * ux - s * uy) + ny * (s * ux + c * uy);
-	if (mixed) (*mixed)(2, 0) = nx * (-s * ux - c * uy) + ny * (c * ux - s * uy);
+	// Current point: it moves along its beam, R u, with de/dq = g = n - (c +
+	// 2 b (t.d)) t on a bowed line (residual()); de/dx = (g, g.R'p) changes
+	// by -2 b (t.Ru) t and by its effect on g.R'p, plus g.R'u. The
+	// parabola's own dependence on the reference ranges is left out (its
+	// points' effect through the centroid and direction below is the
+	// line's).
+	const double along = ca * (qx - L.cx) + sa * (qy - L.cy);
+	const double k = L.tilt + 2 * L.bow * along;
+	const double gx = nx - k * ca, gy = ny - k * sa;
+	const double rux = c * ux - s * uy, ruy = s * ux + c * uy;
+	dedz[0] = gx * rux + gy * ruy;
+	if (mixed)
+	{
+		const double dg = -2 * L.bow * (ca * rux + sa * ruy);
+		(*mixed)(0, 0) = dg * ca;
+		(*mixed)(1, 0) = dg * sa;
+		(*mixed)(2, 0) = dg * (ca * rpx + sa * rpy) + gx * (-s * ux - c * uy) + gy * (c * ux - s * uy);
+	}
 	// Reference points: through the centroid and the direction.
-	const double dedAlpha = -(ca * (qx - L.cx) + sa * (qy - L.cy));
+	const double dedAlpha = -along;
 	const double c2 = ca * ca - sa * sa, s2 = 2 * sa * ca;	// of 2 alpha
 	const Eigen::Vector3d dGradDAlpha(-ca, -sa, -(ca * rpx + sa * rpy));
 	for (size_t k = 0; k < m; k++)

@@ -28,7 +28,7 @@ ReferencePolyline::Query::Query(double qx, double qy)
 }
 
 void ReferencePolyline::build(const ScanPoints& s, const std::vector<ScanSegment>& segments,
-	unsigned int lineHalfWindow, double targetDirectionSigma)
+	unsigned int lineHalfWindow, double targetDirectionSigma, double bowSigmas)
 {
 	m_points.clear();
 	m_joined.clear();
@@ -148,7 +148,52 @@ void ReferencePolyline::build(const ScanPoints& s, const std::vector<ScanSegment
 			L.gap = l.gap;
 			L.lo = lo;
 			L.hi = hi;
+			if (bowSigmas > 0 && hi - lo + 1 >= kLeastBowPoints) fitBow(L, noise, bowSigmas);
 		}
+}
+
+void ReferencePolyline::fitBow(LocalLine& L, double rangeNoise, double bowSigmas) const
+{
+	// Least squares of the offsets h across the line on s and on q = s^2 -
+	// mean s^2 (h and s have zero mean about the centroid): h = c s + b q.
+	// The linear term matters where the window is lopsided (cut by a
+	// segment's end or by the growth test on one side): there s and q
+	// correlate, and b alone would take part of the arc's turn. The
+	// standard error of b is sigma sqrt(sum s^2 / det), sigma the points'
+	// noise across the line: the range noise times |n.u|, u each beam.
+	// (Not the growth test's sigma, the median scatter across surfaces: on
+	// a corridor 0.6 of the range noise, it let the walls near the robot,
+	// seen head on, bow by chance, and their parabolas' slopes constrained
+	// the motion along them.)
+	double mean = 0, across2 = 0;
+	for (uint32_t j = L.lo; j <= L.hi; j++)
+	{
+		const ScanPoint& p = m_points[j];
+		const double s = L.ny * (p.x - L.cx) - L.nx * (p.y - L.cy);
+		mean += s * s;
+		if (p.range > 0) across2 += mrpt::square((L.nx * p.x + L.ny * p.y) / p.range);
+	}
+	mean /= static_cast<double>(L.hi - L.lo + 1);
+	const double noise2 = rangeNoise * rangeNoise * across2 / static_cast<double>(L.hi - L.lo + 1);
+	double ss = 0, sq = 0, qq = 0, hs = 0, hq = 0;
+	for (uint32_t j = L.lo; j <= L.hi; j++)
+	{
+		const double dx = m_points[j].x - L.cx, dy = m_points[j].y - L.cy;
+		const double s = L.ny * dx - L.nx * dy, h = L.nx * dx + L.ny * dy;
+		const double q = s * s - mean;
+		ss += s * s;
+		sq += s * q;
+		qq += q * q;
+		hs += h * s;
+		hq += h * q;
+	}
+	const double det = ss * qq - sq * sq;
+	if (!(det > 1e-12 * ss * qq)) return;
+	const double b = (ss * hq - sq * hs) / det;
+	if (b * b * det <= bowSigmas * bowSigmas * noise2 * ss) return;
+	L.bow = b;
+	L.tilt = (qq * hs - sq * hq) / det;
+	L.meanAlong2 = mean;
 }
 
 double ReferencePolyline::directionSigma(uint32_t i) const

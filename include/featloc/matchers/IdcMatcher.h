@@ -75,5 +75,6 @@ class IdcMatcher : public ScanMatcher
 	AdaptiveBreakpointSegmenter::Parameters m_builtSegmentation;
 	unsigned int m_builtLineHalfWindow = 0;
 	double m_builtLineTarget = -1;
+	double m_builtBowSigmas = -1;
 };
 }  // namespace featloc

@@ -118,6 +118,12 @@ class IterativeDualCorrespondence
 		 * ReferencePolyline::kLongestLineFactor times as many), instead of
 		 * being left out: dense, noisy scans. */
 		bool grow_lines_to_direction_sigma = true;
+		/** point_to_line: a local line whose points bow away from it by
+		 * more than this many standard errors of the quadratic term keeps
+		 * the bow, a local parabola (ReferencePolyline::build's
+		 * bowSigmas): on a curved wall a chord biases the heading; 0 = off
+		 * (straight lines only, as until 2026-12-03). */
+		double line_bow_sigmas = 3.0;
 		/** The target ReferencePolyline::build grows local lines to [rad]. */
 		double lineTargetDirectionSigma() const
 		{

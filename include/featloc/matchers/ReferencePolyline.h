@@ -60,6 +60,12 @@ class ReferencePolyline
 		 * how well the direction is determined [m^2]. */
 		double gap = 0;
 		uint32_t lo = 0, hi = 0;  //!< the points fitted
+		/** Where the points bow away from the line (build's bowSigmas):
+		 * the surface's offset along the normal at s along the line from
+		 * the centroid is tilt s + bow (s^2 - meanAlong2), a local
+		 * parabola; 0 and 0 on a line whose points do not bow. [1],
+		 * [1/m], [m^2] */
+		double tilt = 0, bow = 0, meanAlong2 = 0;
 	};
 
 	/** Keeps the points of `segments` (in order), edges inside each, and
@@ -67,10 +73,20 @@ class ReferencePolyline
 	 * line whose direction sigma (directionSigma()) is still above it after
 	 * lineHalfWindow neighbours a side grows on, up to kLongestLineFactor
 	 * times that, while the points fit: dense noisy scans need more points
-	 * for the same direction. */
+	 * for the same direction. With bowSigmas > 0 a line whose points bow
+	 * (the least-squares quadratic term of their offsets across it, h = c
+	 * s + b (s^2 - mean s^2), stands more than bowSigmas of its standard
+	 * error out of the points' noise; kLeastBowPoints at least) keeps the
+	 * parabola (LocalLine::tilt, bow). On a curved wall a line is a chord, offset from the
+	 * arc by a sagitta that depends on where along it a point lies; points
+	 * paired with chords biased the heading, with residuals too small to
+	 * show it (doc/benchmarks.md, "Issue 15, thirtieth session"). */
 	void build(const ScanPoints& points, const std::vector<ScanSegment>& segments,
-		unsigned int lineHalfWindow = 6, double targetDirectionSigma = 0);
+		unsigned int lineHalfWindow = 6, double targetDirectionSigma = 0, double bowSigmas = 0);
 	static constexpr unsigned int kLongestLineFactor = 8;
+	/** The bow of fewer points is not fitted (a quadratic term of four
+	 * points is mostly their noise). */
+	static constexpr uint32_t kLeastBowPoints = 5;
 
 	size_t size() const { return m_points.size(); }
 	const ScanPoint& point(uint32_t i) const { return m_points[i]; }
@@ -107,6 +123,8 @@ class ReferencePolyline
 	static constexpr uint32_t kNoHint = 0xffffffffu;
 
    private:
+	/** LocalLine::bow of L where its points bow (build's bowSigmas). */
+	void fitBow(LocalLine& L, double rangeNoise, double bowSigmas) const;
 	/** Visits the points and edges outwards from `bearing` on both sides:
 	 * visit(a, b, minDelta) for a point (a == b) or the edge (a, b), with
 	 * the smallest bearing distance of that item from `bearing`; a side

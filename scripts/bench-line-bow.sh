@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# Reproduces "Issue 15, thirtieth session" in doc/benchmarks.md: IDC's local
+# lines with their bow where their points bow (line_bow_sigmas = 3, the
+# default: a local parabola) against straight lines only (line_bow_sigmas =
+# 0, as before), set in [ScanMatcher.IdcMatcher] (IDC, and PCM's and
+# CF-IDC's IDC fallback) and [ScanMatcher.CfIdcMatcher]. One featloc-bench
+# run per data set and setting: PCM, IDC and CF-IDC as config.ini has them,
+# and MRPT's ICP; Borges & Aldon's protocol (+-0.3 m / +-10 deg uniform,
+# seed 1), every pair counted (a failure at its guess's error).
+#  - Where it was found: the rotunda, the ring corridor and the orchard
+#    (worlds written in the twenty-ninth session), static and as written;
+#    their static twins also against each pair's Cramer-Rao bound
+#    (--pairs, --pair-bounds, scripts/pair-bound-ratios.py: the NEES of
+#    the right matches, how far from the bound and along which axis).
+#  - Held out from the change: the data sets of PCM's extraction benches
+#    (bench-common.sh: the office and lab at 1 cm, the apartment, warehouse
+#    and garage frozen at 1 cm against the bound and as written, the
+#    corridor, hall and room with people, the lattices, the bundled log,
+#    orebro and the five other Radish logs), the workshop, the office and
+#    lab on the lattice; the static 1 cm scenes also against the bound.
+#  - IDC's time per office pair alone with MRPT's ICP, both ways, three
+#    runs in turn (the bow is fitted once per line of the reference).
+#  - Whole runs (featloc-run as config.ini has it) in the rotunda, the ring
+#    corridor, the corridor with people (seed 1) and the bundled log, each
+#    featloc matcher as the matcher chain and in the EKF.
+# Usage: scripts/bench-line-bow.sh [OUTDIR]   (about 40 min on 2 cores)
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
+bench_init bench-line-bow "$@"
+
+M="PCM=featloc::PcmFeatureMatcher,IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcMatcher"
+M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
+COMMON="--seed 1 -q --paired-with none --perturb-xy 0.3 --perturb-yaw-deg 10"
+OFF=(--set "ScanMatcher.IdcMatcher:line_bow_sigmas=0" --set "ScanMatcher.CfIdcMatcher:line_bow_sigmas=0")
+HEADER=--header
+BOUNDED=()  # the --world runs' names, for the table against the bound
+# Both settings on one data set: "NAME" (the bow, the default) and "NAME,
+# straight lines"; with --world also the Cramer-Rao table of each and every
+# pair's outcome and bound.
+bench() { # name, data, extra args...
+  local name="$1" data="$2" notes="fallback .* made"
+  shift 2
+  if [[ " $* " == *" --world "* ]]; then
+    local f
+    f="$(bench_file "$name")"
+    bench_run "$name" "$data" "$@" --pairs "$f.pairs.tsv" --pair-bounds "$f.bounds.tsv" |
+      awk -F'|' '/^\| data \| matcher \| pairs/ || NF == 14 || NF == 9'
+    HEADER=
+    f="$(bench_file "$name, straight lines")"
+    bench_run "$name, straight lines" "$data" "$@" "${OFF[@]}" --pairs "$f.pairs.tsv" \
+      --pair-bounds "$f.bounds.tsv" | awk -F'|' 'NF == 14 || NF == 9'
+    BOUNDED+=("$name" "$name, straight lines")
+  else
+    bench_main_table "$notes" "$name" "$data" "$@"
+    bench_main_table "$notes" "$name, straight lines" "$data" "$@" "${OFF[@]}"
+  fi
+}
+world() { # world, name, featloc-sim args...: simulate (once) and bench
+  sim_world "$@"
+  bench "$2" "$OUT/$2.rawlog" -g "$OUT/$2.gt.txt"
+}
+frozen_world() { # world, name, featloc-sim args...: the static twin against the bound
+  sim_world "$1" "$2" --frozen "${@:3}"
+  bench "$2" "$OUT/$2.rawlog" -g "$OUT/$2.gt.txt" --world "$ROOT/worlds/$1.ini" --frozen
+}
+
+machine_line
+echo
+echo "### Where it was found: the rotunda, the ring corridor, the orchard"
+echo
+world rotunda rotunda
+world ring-corridor "ring corridor"
+world orchard orchard
+echo
+HEADER=--header
+frozen_world rotunda "rotunda frozen (1 cm)" --set Laser:range_noise=0.01
+frozen_world ring-corridor "ring corridor frozen"
+frozen_world orchard "orchard frozen (1 cm)" --set Laser:range_noise=0.01
+# The data sets of PCM's extraction benches (bench-common.sh), then the two
+# they leave out: the workshop, and the calibration scenes on the lattice.
+bench_extraction_scenes
+echo
+echo "### Held out from the change: the workshop, the calibration scenes on the lattice"
+echo
+HEADER=--header
+world workshop-moving-objects workshop-moving-objects
+bench_calibration_lattices ", lattice"
+echo
+echo "### Against each pair's Cramer-Rao bound: the right matches (used, within 10 cm and 2 deg)"
+echo
+HEADER=--header
+for name in "${BOUNDED[@]}"; do
+  f="$(bench_file "$name")"
+  [ -f "$f.bounds.tsv" ] || continue
+  python3 "$ROOT/scripts/pair-bound-ratios.py" "$f.pairs.tsv" "$f.bounds.tsv" |
+    if [ -n "$HEADER" ]; then cat; else tail -n +3; fi
+  HEADER=
+done
+echo
+echo "### Time per office pair, IDC with MRPT's ICP alone in the run (three runs each way)"
+echo
+HEADER=--header
+for run in 1 2 3; do
+  for way in bow straight; do
+    extra=()
+    [ "$way" = straight ] && extra=("${OFF[@]}")
+    # shellcheck disable=SC2086
+    "$BIN/featloc-bench" "$ROOT/config.ini" "$OUT/office-1cm.rawlog" -g "$OUT/office-1cm.gt.txt" \
+      $COMMON $HEADER -m "IDC ($way)=featloc::IdcMatcher,IcpMatcher (MRPT)=featloc::IcpMatcher" \
+      --name "sim office (1 cm), run $run" "${extra[@]}" | main_table
+    HEADER=
+  done
+done
+echo
+echo "### Whole runs: ATE rmse [mm] / failed matches / fallback matches, straight lines | the bow"
+echo
+echo "| log | matcher | estimator | straight lines | the bow | the bow against straight lines: mean RPE difference [mm] (95%); steps off only the bow / only straight, McNemar |"
+echo "|---|---|---|---|---|---|"
+for c in "rotunda:$OUT/rotunda.rawlog:$OUT/rotunda.gt.txt" \
+  "ring corridor:$OUT/ring corridor.rawlog:$OUT/ring corridor.gt.txt" \
+  "corridor-people-seed1:$OUT/corridor-people-seed1.rawlog:$OUT/corridor-people-seed1.gt.txt" \
+  "bundled::$ROOT/rawlogs/mrpt-simul/simul.gt.txt"; do
+  IFS=: read -r log input gt <<< "$c"
+  for est in matcher ekf; do
+    for m in PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
+      name="whole-${log// /-}-$est-$m"
+      bench_featloc_run "$name-bow" "$input" "$gt" --set "Pipeline:estimator=$est" \
+        --set "ScanMatcher:class=featloc::$m"
+      bench_featloc_run "$name-straight" "$input" "$gt" --set "Pipeline:estimator=$est" \
+        --set "ScanMatcher:class=featloc::$m" "${OFF[@]}"
+      echo "| $log | $m | $est | $(run_counts "$name-straight") | $(run_counts "$name-bow") | $(runs_paired "$gt" "$OUT/$name-bow" "$OUT/$name-straight") |"
+    done
+  done
+done
+echo
+echo "(raw outputs in $OUT)"
