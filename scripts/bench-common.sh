@@ -190,6 +190,11 @@ sim_world() { # world, name, featloc-sim args...
   [ -f "$OUT/$2.rawlog" ] ||
     "$BIN/featloc-sim" "$ROOT/worlds/$1.ini" --out "$OUT/$2" -q "${@:3}" > /dev/null
 }
+# sim_world, then the caller's `bench NAME DATA -g GT` on that log.
+sim_world_and_bench() { # world, name, featloc-sim args...
+  sim_world "$@"
+  bench "$2" "$OUT/$2.rawlog" -g "$OUT/$2.gt.txt"
+}
 # The same with MRPT's simulator's 0.16 m range lattice (Laser:range_step,
 # before the noise).
 sim_lattice() { # world, name, featloc-sim args...

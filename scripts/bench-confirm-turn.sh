@@ -49,26 +49,22 @@ bench() { # name, data, extra args...
     bench_main_table "$notes" "$name, no turn" "$data" "$@" "${OFF[@]}"
   fi
 }
-world() { # world, name, featloc-sim args...: simulate (once) and bench
-  sim_world "$@"
-  bench "$2" "$OUT/$2.rawlog" -g "$OUT/$2.gt.txt"
-}
 
 machine_line
 echo
 echo "### Where it was found: the rotunda"
 echo
-world rotunda rotunda
-world rotunda "rotunda frozen" --frozen
+sim_world_and_bench rotunda rotunda
+sim_world_and_bench rotunda "rotunda frozen" --frozen
 echo
 echo "### Held out from the change: the ring corridor, the orchard, static scenes at 1 cm against the Cramer-Rao bound"
 echo
 HEADER=--header
-world ring-corridor "ring corridor"
+sim_world_and_bench ring-corridor "ring corridor"
 sim_world ring-corridor "ring corridor frozen" --frozen
 bench "ring corridor frozen" "$OUT/ring corridor frozen.rawlog" -g "$OUT/ring corridor frozen.gt.txt" \
   --world "$ROOT/worlds/ring-corridor.ini" --frozen
-world orchard orchard
+sim_world_and_bench orchard orchard
 sim_world orchard "orchard frozen (1 cm)" --frozen --set Laser:range_noise=0.01
 bench "orchard frozen (1 cm)" "$OUT/orchard frozen (1 cm).rawlog" \
   -g "$OUT/orchard frozen (1 cm).gt.txt" --world "$ROOT/worlds/orchard.ini" --frozen
@@ -82,7 +78,7 @@ echo
 echo "### Held out from the change: the workshop, the calibration scenes on the lattice"
 echo
 HEADER=--header
-world workshop-moving-objects workshop-moving-objects
+sim_world_and_bench workshop-moving-objects workshop-moving-objects
 bench_calibration_lattices ", lattice"
 echo
 echo "### Time per office pair, PCM with MRPT's ICP alone in the run (three runs each way)"

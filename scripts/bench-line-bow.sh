@@ -55,10 +55,6 @@ bench() { # name, data, extra args...
     bench_main_table "$notes" "$name, straight lines" "$data" "$@" "${OFF[@]}"
   fi
 }
-world() { # world, name, featloc-sim args...: simulate (once) and bench
-  sim_world "$@"
-  bench "$2" "$OUT/$2.rawlog" -g "$OUT/$2.gt.txt"
-}
 frozen_world() { # world, name, featloc-sim args...: the static twin against the bound
   sim_world "$1" "$2" --frozen "${@:3}"
   bench "$2" "$OUT/$2.rawlog" -g "$OUT/$2.gt.txt" --world "$ROOT/worlds/$1.ini" --frozen
@@ -68,9 +64,9 @@ machine_line
 echo
 echo "### Where it was found: the rotunda, the ring corridor, the orchard"
 echo
-world rotunda rotunda
-world ring-corridor "ring corridor"
-world orchard orchard
+sim_world_and_bench rotunda rotunda
+sim_world_and_bench ring-corridor "ring corridor"
+sim_world_and_bench orchard orchard
 echo
 HEADER=--header
 frozen_world rotunda "rotunda frozen (1 cm)" --set Laser:range_noise=0.01
@@ -83,7 +79,7 @@ echo
 echo "### Held out from the change: the workshop, the calibration scenes on the lattice"
 echo
 HEADER=--header
-world workshop-moving-objects workshop-moving-objects
+sim_world_and_bench workshop-moving-objects workshop-moving-objects
 bench_calibration_lattices ", lattice"
 echo
 echo "### Against each pair's Cramer-Rao bound: the right matches (used, within 10 cm and 2 deg)"
