@@ -54,29 +54,15 @@ def read_bounds(path):
     return out
 
 
-def smallest_eigenvalue(m):
-    """Smallest root of det(m - l I) = 0 for a 3x3 m with real eigenvalues
-    (B^-1 P, similar to a symmetric positive matrix): the trigonometric
-    solution of the characteristic cubic."""
-    tr = m[0][0] + m[1][1] + m[2][2]
-    minors = (m[0][0] * m[1][1] - m[0][1] * m[1][0] + m[0][0] * m[2][2] - m[0][2] * m[2][0] +
-              m[1][1] * m[2][2] - m[1][2] * m[2][1])
-    det = (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
-    # l^3 - tr l^2 + minors l - det = 0; l = t + tr / 3.
-    p = minors - tr * tr / 3
-    q = -2 * tr ** 3 / 27 + tr * minors / 3 - det
-    if p >= 0:
-        return tr / 3  # a triple root, to rounding
-    r = 2 * math.sqrt(-p / 3)
-    arg = max(-1.0, min(1.0, 3 * q / (p * r)))
-    roots = [r * math.cos((math.acos(arg) - 2 * math.pi * k) / 3) + tr / 3 for k in range(3)]
-    return min(roots)
-
-
-def mul(a, b):
-    return [[sum(a[p][k] * b[k][q] for k in range(3)) for q in range(3)] for p in range(3)]
+def smallest_generalized_eigenvalue(P, B):
+    """Smallest eigenvalue of B^-1 P (B, P symmetric positive): that of W P W
+    with W = B^-1/2, which eigen_sym gives."""
+    lam, V = eigen_sym(B)
+    W = [[sum(V[p][k] * V[q][k] / math.sqrt(lam[k]) for k in range(3)) for q in range(3)]
+         for p in range(3)]
+    WP = [[sum(W[p][k] * P[k][q] for k in range(3)) for q in range(3)] for p in range(3)]
+    WPW = [[sum(WP[p][k] * W[k][q] for k in range(3)) for q in range(3)] for p in range(3)]
+    return min(eigen_sym(WPW)[0])
 
 
 def summary(xs):
@@ -110,8 +96,8 @@ def main():
                     continue
                 nees.append(quad(e, Pi))
                 lam, V = eigen_sym(P)
-                order = sorted(range(3), key=lambda i: -lam[i])
-                for rank, i in enumerate(order):
+                least_certain_first = sorted(range(3), key=lambda i: -lam[i])
+                for rank, i in enumerate(least_certain_first):
                     d = sum(e[r] * V[r][i] for r in range(3))
                     split[rank] += d * d / lam[i] if lam[i] > 0 else 0.0
                 eff.append(quad(e, Bi))
@@ -119,7 +105,7 @@ def main():
                     err2[a] += e[a] ** 2
                     bound2[a] += B[a][a]
                     claimed[a].append(math.sqrt(max(0.0, P[a][a]) / B[a][a]))
-                if smallest_eigenvalue(mul(Bi, P)) < 0.9:
+                if smallest_generalized_eigenvalue(P, B) < 0.9:
                     under += 1
             n = len(nees)
             if n == 0:

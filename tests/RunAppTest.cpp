@@ -1127,6 +1127,16 @@ TEST(PairBoundRatios, FindsHowFarFromTheBoundAndWhoClaimsToBeatIt)
 				row(p, m == "claims" ? Eigen::Matrix3d(B / 4) : B);
 				p << "\t" << (status == "used" ? "" : "no convergence") << "\n";
 			}
+		// A second data set in the same files gets its own rows.
+		for (size_t k = 0; k < 50; k++)
+		{
+			b << "second\t" << k << "\t" << k << "\t" << k + 1 << "\t0.1\t0\t0\t";
+			row(b, B);
+			b << "\t0.002\t0.0003\n";
+			p << "second\tefficient\t" << k << "\tused\t0.001\t0\t0\t";
+			row(p, B);
+			p << "\t\n";
+		}
 	}
 	const CommandResult r = runCommand("python3 " +
 		shellQuote(std::string(FEATLOC_SOURCE_DIR) + "/scripts/pair-bound-ratios.py") + " " +
@@ -1145,6 +1155,7 @@ TEST(PairBoundRatios, FindsHowFarFromTheBoundAndWhoClaimsToBeatIt)
 		rows[c[2]] = c;
 	}
 	ASSERT_EQ(rows.size(), 3u) << r.output;
+	EXPECT_NE(r.output.find("| second | efficient | 50 | "), std::string::npos) << r.output;
 	auto first = [](const std::string& cell) { return std::stod(cell.substr(0, cell.find(' '))); };
 	auto numbers = [](const std::string& cell) {
 		std::vector<double> v;
