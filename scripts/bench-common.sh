@@ -102,6 +102,37 @@ bench_extraction_scenes() {
   fi
   sim_corridor_seeds
 }
+# bench_extraction_scenes, then the two data sets it leaves out: the
+# workshop as written, and the calibration scenes on the lattice (as "sim
+# SCENE (1 cm), lattice"), under "### Held out from the change: ...".
+bench_extraction_scenes_and_the_rest() {
+  bench_extraction_scenes
+  echo
+  echo "### Held out from the change: the workshop, the calibration scenes on the lattice"
+  echo
+  HEADER=--header
+  sim_world_and_bench workshop-moving-objects workshop-moving-objects
+  bench_calibration_lattices ", lattice"
+}
+# A matcher's time per office pair ($OUT/office-1cm.rawlog, from sim_1cm)
+# alone with MRPT's ICP, one way and the other (the other with the
+# caller's OFF array of --set options), three runs in turn, each as
+# "LABEL (WAY)": featloc-bench's main table.
+office_time_two_ways() { # label, class, way A, way B
+  local label="$1" class="$2" a="$3" b="$4" run way extra
+  HEADER=--header
+  for run in 1 2 3; do
+    for way in "$a" "$b"; do
+      extra=()
+      [ "$way" = "$a" ] || extra=("${OFF[@]}")
+      # shellcheck disable=SC2086
+      "$BIN/featloc-bench" "$ROOT/config.ini" "$OUT/office-1cm.rawlog" -g "$OUT/office-1cm.gt.txt" \
+        $COMMON $HEADER -m "$label ($way)=$class,IcpMatcher (MRPT)=featloc::IcpMatcher" \
+        --name "sim office (1 cm), run $run" "${extra[@]}" | main_table
+      HEADER=
+    done
+  done
+}
 # Issue 15's two per-pair tables: the calibration scenes, then the held-out
 # ones, each through the caller's `bench` (HEADER set again for the second
 # table), under "### [PREFIX]Calibration scenes" and "### [PREFIX]Held out".

@@ -71,30 +71,13 @@ bench "orchard frozen (1 cm)" "$OUT/orchard frozen (1 cm).rawlog" \
 sim_world rotunda "rotunda frozen (1 cm)" --frozen --set Laser:range_noise=0.01
 bench "rotunda frozen (1 cm)" "$OUT/rotunda frozen (1 cm).rawlog" \
   -g "$OUT/rotunda frozen (1 cm).gt.txt" --world "$ROOT/worlds/rotunda.ini" --frozen
-# The data sets of PCM's extraction benches (bench-common.sh), then the two
-# they leave out: the workshop, and the calibration scenes on the lattice.
-bench_extraction_scenes
-echo
-echo "### Held out from the change: the workshop, the calibration scenes on the lattice"
-echo
-HEADER=--header
-sim_world_and_bench workshop-moving-objects workshop-moving-objects
-bench_calibration_lattices ", lattice"
+# The data sets of PCM's extraction benches, the workshop, the calibration
+# scenes on the lattice (bench-common.sh).
+bench_extraction_scenes_and_the_rest
 echo
 echo "### Time per office pair, PCM with MRPT's ICP alone in the run (three runs each way)"
 echo
-HEADER=--header
-for run in 1 2 3; do
-  for way in turn "no turn"; do
-    extra=()
-    [ "$way" = turn ] || extra=("${OFF[@]}")
-    # shellcheck disable=SC2086
-    "$BIN/featloc-bench" "$ROOT/config.ini" "$OUT/office-1cm.rawlog" -g "$OUT/office-1cm.gt.txt" \
-      $COMMON -m "PCM ($way)=featloc::PcmFeatureMatcher,IcpMatcher (MRPT)=featloc::IcpMatcher" \
-      $HEADER --name "sim office (1 cm), run $run" "${extra[@]}" | main_table
-    HEADER=
-  done
-done
+office_time_two_ways PCM featloc::PcmFeatureMatcher turn "no turn"
 # Whole runs in the rotunda (featloc-run as config.ini has it, each
 # featloc matcher with estimator = matcher and then ekf), the turn against
 # none in the matcher's section and in its IDC fallback's.

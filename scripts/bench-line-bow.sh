@@ -23,7 +23,7 @@
 #  - Whole runs (featloc-run as config.ini has it) in the rotunda, the ring
 #    corridor, the corridor with people (seed 1) and the bundled log, each
 #    featloc matcher as the matcher chain and in the EKF.
-# Usage: scripts/bench-line-bow.sh [OUTDIR]   (about 40 min on 2 cores)
+# Usage: scripts/bench-line-bow.sh [OUTDIR]   (about 20 min on 2 cores)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-line-bow "$@"
@@ -72,15 +72,9 @@ HEADER=--header
 frozen_world rotunda "rotunda frozen (1 cm)" --set Laser:range_noise=0.01
 frozen_world ring-corridor "ring corridor frozen"
 frozen_world orchard "orchard frozen (1 cm)" --set Laser:range_noise=0.01
-# The data sets of PCM's extraction benches (bench-common.sh), then the two
-# they leave out: the workshop, and the calibration scenes on the lattice.
-bench_extraction_scenes
-echo
-echo "### Held out from the change: the workshop, the calibration scenes on the lattice"
-echo
-HEADER=--header
-sim_world_and_bench workshop-moving-objects workshop-moving-objects
-bench_calibration_lattices ", lattice"
+# The data sets of PCM's extraction benches, the workshop, the calibration
+# scenes on the lattice (bench-common.sh).
+bench_extraction_scenes_and_the_rest
 echo
 echo "### Against each pair's Cramer-Rao bound: the right matches (used, within 10 cm and 2 deg)"
 echo
@@ -95,18 +89,7 @@ done
 echo
 echo "### Time per office pair, IDC with MRPT's ICP alone in the run (three runs each way)"
 echo
-HEADER=--header
-for run in 1 2 3; do
-  for way in bow straight; do
-    extra=()
-    [ "$way" = straight ] && extra=("${OFF[@]}")
-    # shellcheck disable=SC2086
-    "$BIN/featloc-bench" "$ROOT/config.ini" "$OUT/office-1cm.rawlog" -g "$OUT/office-1cm.gt.txt" \
-      $COMMON $HEADER -m "IDC ($way)=featloc::IdcMatcher,IcpMatcher (MRPT)=featloc::IcpMatcher" \
-      --name "sim office (1 cm), run $run" "${extra[@]}" | main_table
-    HEADER=
-  done
-done
+office_time_two_ways IDC featloc::IdcMatcher bow straight
 echo
 echo "### Whole runs: ATE rmse [mm] / failed matches / fallback matches, straight lines | the bow"
 echo

@@ -76,11 +76,12 @@ class ReferencePolyline
 	 * for the same direction. With bowSigmas > 0 a line whose points bow
 	 * (the least-squares quadratic term of their offsets across it, h = c
 	 * s + b (s^2 - mean s^2), stands more than bowSigmas of its standard
-	 * error out of the points' noise; kLeastBowPoints at least) keeps the
-	 * parabola (LocalLine::tilt, bow). On a curved wall a line is a chord, offset from the
-	 * arc by a sagitta that depends on where along it a point lies; points
-	 * paired with chords biased the heading, with residuals too small to
-	 * show it (doc/benchmarks.md, "Issue 15, thirtieth session"). */
+	 * error out of the points' noise across the line; kLeastBowPoints at
+	 * least) keeps the parabola (LocalLine::tilt, bow). On a curved wall a
+	 * line is a chord, offset from the arc by a sagitta that depends on
+	 * where along it a point lies; points paired with chords biased the
+	 * heading, with residuals too small to show it (doc/benchmarks.md,
+	 * "Issue 15, thirtieth session"). */
 	void build(const ScanPoints& points, const std::vector<ScanSegment>& segments,
 		unsigned int lineHalfWindow = 6, double targetDirectionSigma = 0, double bowSigmas = 0);
 	static constexpr unsigned int kLongestLineFactor = 8;
@@ -123,7 +124,8 @@ class ReferencePolyline
 	static constexpr uint32_t kNoHint = 0xffffffffu;
 
    private:
-	/** LocalLine::bow of L where its points bow (build's bowSigmas). */
+	/** LocalLine::tilt and bow of L where its points bow (build's
+	 * bowSigmas), against their noise across it from rangeNoise. */
 	void fitBow(LocalLine& L, double rangeNoise, double bowSigmas) const;
 	/** Visits the points and edges outwards from `bearing` on both sides:
 	 * visit(a, b, minDelta) for a point (a == b) or the edge (a, b), with
