@@ -393,6 +393,10 @@ TEST(ScanMatcherFallback, AWeakMatchIsReplacedByTheFallbacksUnambiguousOne)
 // local lines (line_bow_sigmas = 0), the reason as it was found: with the
 // bow (the default) CF-IDC's few points pair with more lines, and it fails
 // on the direction they leave free instead; the fallback makes it as well.
+// Both with the one 5-degree line gate (max_face_direction_sigma_DEG = 0):
+// with the default, CF-IDC's few points also pair with the short faces of
+// the long segments and it makes this match itself, within the
+// reference's centimetres.
 TEST(ScanMatcherFallback, CfIdcsFailureOnARealLogIsMadeByIdc)
 {
 	mrpt::obs::CObservation2DRangeScan ref, cur;
@@ -403,7 +407,8 @@ TEST(ScanMatcherFallback, CfIdcsFailureOnARealLogIsMadeByIdc)
 		CPose2D(1.105932, -0.118864, 0.053165), 0.3 * a, mrpt::DEG2RAD(10.0) * a);
 
 	const std::string fixedSigma =
-		"[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\nline_bow_sigmas = 0\n";
+		"[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\nline_bow_sigmas = 0\n"
+		"max_face_direction_sigma_DEG = 0\n";
 	const MatchResult own = fromIni("featloc::CfIdcMatcher", fixedSigma + "fallback_class =\n")->match(ref, cur, guess);
 	EXPECT_FALSE(own.success);
 	EXPECT_NE(own.failureReason.find("too few pairs"), std::string::npos) << own.failureReason;
@@ -417,12 +422,19 @@ TEST(ScanMatcherFallback, CfIdcsFailureOnARealLogIsMadeByIdc)
 	EXPECT_LT(std::hypot(r.estimate.mean.x() - truth.x(), r.estimate.mean.y() - truth.y()), 0.05);
 	EXPECT_LT(std::abs(r.estimate.mean.phi() - truth.phi()), mrpt::DEG2RAD(1.0));
 
-	const std::string bowed = "[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\n";
+	const std::string bowed =
+		"[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\nmax_face_direction_sigma_DEG = 0\n";
 	EXPECT_FALSE(fromIni("featloc::CfIdcMatcher", bowed + "fallback_class =\n")->match(ref, cur, guess).success);
 	const MatchResult b = fromIni("featloc::CfIdcMatcher", bowed)->match(ref, cur, guess);
 	ASSERT_TRUE(b.success) << b.failureReason;
 	EXPECT_EQ(b.primaryFailure.rfind("featloc::CfIdcMatcher: ", 0), 0u) << b.primaryFailure;
 	EXPECT_LT(std::hypot(b.estimate.mean.x() - truth.x(), b.estimate.mean.y() - truth.y()), 0.05);
+
+	const MatchResult f = fromIni("featloc::CfIdcMatcher",
+		"[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\nfallback_class =\n")
+							  ->match(ref, cur, guess);
+	ASSERT_TRUE(f.success) << f.failureReason;
+	EXPECT_LT(std::hypot(f.estimate.mean.x() - truth.x(), f.estimate.mean.y() - truth.y()), 0.05);
 }
 
 // A CF-IDC match whose segments leave one direction free goes to its IDC

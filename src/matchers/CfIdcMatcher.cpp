@@ -336,6 +336,7 @@ void CfIdcMatcher::matchPoints(
 	m_curvature.params = params.curvature;
 	m_correlator.params = params.correlation;
 	m_idc.params = params.idc;
+	m_idc.params.max_face_direction_sigma = faceDirectionSigmaFor(params.idc.max_face_direction_sigma);
 	m_idc.rangeLatticeCellSigma = rangeLatticeCellSigma();
 	result.success = false;
 	result.iterations = 0;

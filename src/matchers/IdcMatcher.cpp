@@ -58,6 +58,7 @@ void IdcMatcher::matchPoints(
 {
 	buildReference(reference);
 	m_idc.params = params.idc;
+	m_idc.params.max_face_direction_sigma = faceDirectionSigmaFor(params.idc.max_face_direction_sigma);
 	m_idc.rangeLatticeCellSigma = rangeLatticeCellSigma();
 	IterativeDualCorrespondence::Result r;
 	m_idc.run(m_polyline, current.points, initialGuess, r);

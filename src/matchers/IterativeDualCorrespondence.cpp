@@ -31,6 +31,8 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	read(c, s, "step_tolerance", step_tolerance);
 	read(c, s, "line_half_window", line_half_window);
 	readDegrees(c, s, "max_line_direction_sigma_DEG", max_line_direction_sigma);
+	readDegrees(c, s, "max_face_direction_sigma_DEG", max_face_direction_sigma);
+	read(c, s, "face_segment_extent", face_segment_extent);
 	read(c, s, "grow_lines_to_direction_sigma", grow_lines_to_direction_sigma);
 	read(c, s, "line_bow_sigmas", line_bow_sigmas);
 	read(c, s, "guess_gate_chi2", guess_gate_chi2);
@@ -50,6 +52,8 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	require(step_tolerance > 0, c, s, "step_tolerance", "> 0");
 	require(line_half_window >= 1, c, s, "line_half_window", ">= 1");
 	require(max_line_direction_sigma > 0, c, s, "max_line_direction_sigma_DEG", "> 0");
+	require(max_face_direction_sigma >= 0, c, s, "max_face_direction_sigma_DEG", ">= 0 (0 disables it)");
+	require(face_segment_extent > 0, c, s, "face_segment_extent", "> 0");
 	require(line_bow_sigmas >= 0, c, s, "line_bow_sigmas", ">= 0 (0 disables it)");
 	require(guess_gate_chi2 >= 0, c, s, "guess_gate_chi2", ">= 0 (0 disables it)");
 	require(covariance_inflation >= 1, c, s, "covariance_inflation", ">= 1");
@@ -86,6 +90,10 @@ void IterativeDualCorrespondence::Parameters::saveToConfigFile(
 		"point_to_line phase: a reference edge's local line takes up to this many neighbours on each side, while they stay within 3 sigma of it");
 	writeDegrees(c, s, "max_line_direction_sigma_DEG", max_line_direction_sigma,
 		"[deg] point_to_line phase: points pair only with local lines whose direction is known this well (noise / sqrt(scatter along the line))");
+	writeDegrees(c, s, "max_face_direction_sigma_DEG", max_face_direction_sigma,
+		"[deg] point_to_line phase: on a segment of at least face_segment_extent, points pair with local lines whose direction is known this well instead: a large structure's short faces (door jambs, steps), which cannot grow past their corners (0 = off: max_line_direction_sigma_DEG for all, as until 2026-12-03)");
+	write(c, s, "face_segment_extent", face_segment_extent,
+		"[m] point_to_line phase: a segment this long (first to last point) takes max_face_direction_sigma_DEG; shorter ones (a leg, a trunk, a pole) keep max_line_direction_sigma_DEG");
 	write(c, s, "grow_lines_to_direction_sigma", grow_lines_to_direction_sigma,
 		"point_to_line phase: a local line whose direction is still known worse than max_line_direction_sigma_DEG after line_half_window grows on until it is not (up to 8x as many points), instead of being left out: dense noisy scans (false: as until 2026-12-01)");
 	write(c, s, "line_bow_sigmas", line_bow_sigmas,
@@ -296,11 +304,14 @@ void IterativeDualCorrespondence::run(
 				// the breakpoint test let through) and whose direction is
 				// known: a line of a few noisy points close together has a
 				// random normal, and a wall's random normals constrain the
-				// motion along the wall that nothing constrains.
+				// motion along the wall that nothing constrains. (A large
+				// structure's short faces pair known less well:
+				// lineDirectionGate.)
 				const ReferencePolyline::LocalLine* L =
 					hit.a != hit.b ? &reference.localLine(hit.a) : nullptr;
 				if (L && L->hi - L->lo >= 2 &&
-					reference.directionSigma(hit.a) <= params.max_line_direction_sigma)
+					reference.directionSigma(hit.a) <=
+						params.lineDirectionGate(reference.segmentExtent(hit.a)))
 				{
 					m_lines.push_back({static_cast<uint32_t>(i), hit.a});
 					m_lineDistances.push_back(std::abs(L->nx * (qx - L->cx) + L->ny * (qy - L->cy)));

@@ -112,6 +112,28 @@ class IterativeDualCorrespondence
 		 * if the line's direction is known this well
 		 * (ReferencePolyline::directionSigma) [rad]. */
 		double max_line_direction_sigma = mrpt::DEG2RAD(5.0);
+		/** point_to_line: a local line in a segment of at least
+		 * face_segment_extent pairs if its direction is known to this
+		 * [rad], instead of max_line_direction_sigma: the short faces of a
+		 * large structure (a door recess's jambs, a step, a pillar's side),
+		 * whose lines cannot grow past their corners to 5 deg but are the
+		 * surface, and which alone fix the motion along a curved corridor
+		 * (doc/benchmarks.md, "Issue 15, thirty-first session"). Small
+		 * isolated things (a leg, a trunk) keep the stricter gate: they
+		 * move or are round. 0 = off (max_line_direction_sigma for all, as
+		 * until 2026-12-03). */
+		double max_face_direction_sigma = mrpt::DEG2RAD(8.0);
+		double face_segment_extent = 1.0;  //!< [m] see max_face_direction_sigma
+		/** The direction sigma a line of reference point i must not exceed
+		 * to pair [rad] (max_line_direction_sigma or, on a large
+		 * structure's segment, max_face_direction_sigma). */
+		double lineDirectionGate(double segmentExtent) const
+		{
+			return max_face_direction_sigma > max_line_direction_sigma &&
+					segmentExtent >= face_segment_extent
+				? max_face_direction_sigma
+				: max_line_direction_sigma;
+		}
 		/** point_to_line: a local line whose direction is still known worse
 		 * than max_line_direction_sigma after line_half_window neighbours a
 		 * side grows on until it is not (up to

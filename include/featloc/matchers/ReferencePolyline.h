@@ -104,6 +104,10 @@ class ReferencePolyline
 	 * (PointNoiseEstimator::rangeNoise, chords of
 	 * PointNoiseEstimator::kRangeNoiseChord at least). */
 	double rangeNoise() const { return m_rangeNoise; }
+	/** Distance between the first and the last point of point i's segment
+	 * [m]: a large structure's segment (a wall with its recesses) against
+	 * a small isolated thing's (a leg, a trunk, a pole). */
+	double segmentExtent(uint32_t i) const { return m_segmentExtent[i]; }
 
 
 	/** A query point with its polar coordinates (computed once, used by
@@ -153,6 +157,7 @@ class ReferencePolyline
 	std::vector<Edge> m_edges;
 	std::vector<LocalLine> m_lines;
 	std::vector<ScanSegment> m_segments;  // of m_points
+	std::vector<double> m_segmentExtent;  // per point, segmentExtent()
 	PointNoiseEstimator m_noise;
 	double m_rangeNoise = 0;
 };

@@ -160,6 +160,11 @@ class ScanMatcher : public mrpt::rtti::CObject
 	{
 		return latticeLeftInReadings() ? 0.0 : target;
 	}
+	/** The same for max_face_direction_sigma (0: off): on a lattice left
+	 * in the readings a long segment's short lines are the lattice's arcs,
+	 * not faces, and paired they held a match at zero motion
+	 * (CfIdcMatcher.ARangeLatticeNoLongerHoldsTheMatchAtZeroMotion). */
+	double faceDirectionSigmaFor(double sigma) const { return latticeLeftInReadings() ? 0.0 : sigma; }
 	/** This match's scans hold a range lattice that was not undone. */
 	bool latticeLeftInReadings() const { return m_rangeLatticeStep > 0 && !m_dequantizeRanges; }
 	/** The least range noise [m] a covariance of this match may assume:
