@@ -254,6 +254,67 @@ sim_corridor_seeds() {
         --seed "$seed" -q > /dev/null
   done
 }
+# Issue 15's benches of one switch (bench-line-bow.sh, bench-face-lines.sh):
+# each data set run as config.ini has it ("NAME") and with the caller's OFF
+# array of --set options ("NAME, $OFF_NAME"); with --world also the
+# Cramer-Rao table of each and every pair's outcome and bound, the names
+# kept in BOUNDED for switch_bound_ratios. The caller's `bench` calls it.
+switch_bench() { # name, data, extra args...
+  local name="$1" data="$2" notes="fallback .* made"
+  shift 2
+  if [[ " $* " == *" --world "* ]]; then
+    local f
+    f="$(bench_file "$name")"
+    bench_run "$name" "$data" "$@" --pairs "$f.pairs.tsv" --pair-bounds "$f.bounds.tsv" |
+      awk -F'|' '/^\| data \| matcher \| pairs/ || NF == 14 || NF == 9'
+    HEADER=
+    f="$(bench_file "$name, $OFF_NAME")"
+    bench_run "$name, $OFF_NAME" "$data" "$@" "${OFF[@]}" --pairs "$f.pairs.tsv" \
+      --pair-bounds "$f.bounds.tsv" | awk -F'|' 'NF == 14 || NF == 9'
+    BOUNDED+=("$name" "$name, $OFF_NAME")
+  else
+    bench_main_table "$notes" "$name" "$data" "$@"
+    bench_main_table "$notes" "$name, $OFF_NAME" "$data" "$@" "${OFF[@]}"
+  fi
+}
+# A world's static twin through the caller's `bench`, against the bound.
+switch_frozen_world() { # world, name, featloc-sim args...
+  sim_world "$1" "$2" --frozen "${@:3}"
+  bench "$2" "$OUT/$2.rawlog" -g "$OUT/$2.gt.txt" --world "$ROOT/worlds/$1.ini" --frozen
+}
+# scripts/pair-bound-ratios.py on every run switch_bench kept in BOUNDED,
+# one table.
+switch_bound_ratios() {
+  local name f header=1
+  for name in "${BOUNDED[@]}"; do
+    f="$(bench_file "$name")"
+    [ -f "$f.bounds.tsv" ] || continue
+    python3 "$ROOT/scripts/pair-bound-ratios.py" "$f.pairs.tsv" "$f.bounds.tsv" |
+      if [ -n "$header" ]; then cat; else tail -n +3; fi
+    header=
+  done
+}
+# Whole runs (featloc-run as config.ini has it, tagged ON, and with OFF,
+# tagged OFF_TAG) of each featloc matcher as the matcher chain and in the
+# EKF, on each case LOG:INPUT:GT (bench_featloc_run's input and ground
+# truth): one table row per log, estimator and matcher, the OFF run first.
+switch_whole_runs() { # on tag, off tag, cases...
+  local on="$1" off="$2" c log input gt est m name
+  shift 2
+  for c in "$@"; do
+    IFS=: read -r log input gt <<< "$c"
+    for est in matcher ekf; do
+      for m in PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
+        name="whole-${log// /-}-$est-$m"
+        bench_featloc_run "$name-$on" "$input" "$gt" --set "Pipeline:estimator=$est" \
+          --set "ScanMatcher:class=featloc::$m"
+        bench_featloc_run "$name-$off" "$input" "$gt" --set "Pipeline:estimator=$est" \
+          --set "ScanMatcher:class=featloc::$m" "${OFF[@]}"
+        echo "| $log | $m | $est | $(run_counts "$name-$off") | $(run_counts "$name-$on") | $(runs_paired "$gt" "$OUT/$name-$on" "$OUT/$name-$off") |"
+      done
+    done
+  done
+}
 # Whole runs of one configuration two ways, A and B (featloc-run with the
 # --set options of each, estimator EST), on the bundled log, the corridor
 # with people (seeds SEEDS; sim_corridor_seeds first) and the held-out

@@ -24,7 +24,7 @@
 #  - Whole runs (featloc-run as config.ini has it) in the ring corridor, the
 #    rotunda, the corridor with people (seed 1) and the bundled log, each
 #    featloc matcher as the matcher chain and in the EKF.
-# Usage: scripts/bench-face-lines.sh [OUTDIR]   (about 20 min on 2 cores)
+# Usage: scripts/bench-face-lines.sh [OUTDIR]   (about 20 min on 2 cores, as measured)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-face-lines "$@"
@@ -34,33 +34,10 @@ M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
 COMMON="--seed 1 -q --paired-with none --perturb-xy 0.3 --perturb-yaw-deg 10"
 OFF=(--set "ScanMatcher.IdcMatcher:max_face_direction_sigma_DEG=0"
   --set "ScanMatcher.CfIdcMatcher:max_face_direction_sigma_DEG=0")
+OFF_NAME="one gate"
 HEADER=--header
-BOUNDED=()  # the --world runs' names, for the table against the bound
-# Both settings on one data set: "NAME" (faces, the default) and "NAME,
-# one gate"; with --world also the Cramer-Rao table of each and every
-# pair's outcome and bound.
-bench() { # name, data, extra args...
-  local name="$1" data="$2" notes="fallback .* made"
-  shift 2
-  if [[ " $* " == *" --world "* ]]; then
-    local f
-    f="$(bench_file "$name")"
-    bench_run "$name" "$data" "$@" --pairs "$f.pairs.tsv" --pair-bounds "$f.bounds.tsv" |
-      awk -F'|' '/^\| data \| matcher \| pairs/ || NF == 14 || NF == 9'
-    HEADER=
-    f="$(bench_file "$name, one gate")"
-    bench_run "$name, one gate" "$data" "$@" "${OFF[@]}" --pairs "$f.pairs.tsv" \
-      --pair-bounds "$f.bounds.tsv" | awk -F'|' 'NF == 14 || NF == 9'
-    BOUNDED+=("$name" "$name, one gate")
-  else
-    bench_main_table "$notes" "$name" "$data" "$@"
-    bench_main_table "$notes" "$name, one gate" "$data" "$@" "${OFF[@]}"
-  fi
-}
-frozen_world() { # world, name, featloc-sim args...: the static twin against the bound
-  sim_world "$1" "$2" --frozen "${@:3}"
-  bench "$2" "$OUT/$2.rawlog" -g "$OUT/$2.gt.txt" --world "$ROOT/worlds/$1.ini" --frozen
-}
+BOUNDED=()
+bench() { switch_bench "$@"; }
 
 machine_line
 echo
@@ -71,23 +48,16 @@ sim_world_and_bench rotunda rotunda
 sim_world_and_bench orchard orchard
 echo
 HEADER=--header
-frozen_world ring-corridor "ring corridor frozen"
-frozen_world rotunda "rotunda frozen (1 cm)" --set Laser:range_noise=0.01
-frozen_world orchard "orchard frozen (1 cm)" --set Laser:range_noise=0.01
+switch_frozen_world ring-corridor "ring corridor frozen"
+switch_frozen_world rotunda "rotunda frozen (1 cm)" --set Laser:range_noise=0.01
+switch_frozen_world orchard "orchard frozen (1 cm)" --set Laser:range_noise=0.01
 # The data sets of PCM's extraction benches, the workshop, the calibration
 # scenes on the lattice (bench-common.sh).
 bench_extraction_scenes_and_the_rest
 echo
 echo "### Against each pair's Cramer-Rao bound: the right matches (used, within 10 cm and 2 deg)"
 echo
-HEADER=--header
-for name in "${BOUNDED[@]}"; do
-  f="$(bench_file "$name")"
-  [ -f "$f.bounds.tsv" ] || continue
-  python3 "$ROOT/scripts/pair-bound-ratios.py" "$f.pairs.tsv" "$f.bounds.tsv" |
-    if [ -n "$HEADER" ]; then cat; else tail -n +3; fi
-  HEADER=
-done
+switch_bound_ratios
 echo
 echo "### Time per office pair, IDC with MRPT's ICP alone in the run (three runs each way)"
 echo
@@ -97,21 +67,10 @@ echo "### Whole runs: ATE rmse [mm] / failed matches / fallback matches, one gat
 echo
 echo "| log | matcher | estimator | one gate | faces | faces against one gate: mean RPE difference [mm] (95%); steps off only with faces / only with one gate, McNemar |"
 echo "|---|---|---|---|---|---|"
-for c in "ring corridor:$OUT/ring corridor.rawlog:$OUT/ring corridor.gt.txt" \
+switch_whole_runs faces gate \
+  "ring corridor:$OUT/ring corridor.rawlog:$OUT/ring corridor.gt.txt" \
   "rotunda:$OUT/rotunda.rawlog:$OUT/rotunda.gt.txt" \
   "corridor-people-seed1:$OUT/corridor-people-seed1.rawlog:$OUT/corridor-people-seed1.gt.txt" \
-  "bundled::$ROOT/rawlogs/mrpt-simul/simul.gt.txt"; do
-  IFS=: read -r log input gt <<< "$c"
-  for est in matcher ekf; do
-    for m in PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
-      name="whole-${log// /-}-$est-$m"
-      bench_featloc_run "$name-faces" "$input" "$gt" --set "Pipeline:estimator=$est" \
-        --set "ScanMatcher:class=featloc::$m"
-      bench_featloc_run "$name-gate" "$input" "$gt" --set "Pipeline:estimator=$est" \
-        --set "ScanMatcher:class=featloc::$m" "${OFF[@]}"
-      echo "| $log | $m | $est | $(run_counts "$name-gate") | $(run_counts "$name-faces") | $(runs_paired "$gt" "$OUT/$name-faces" "$OUT/$name-gate") |"
-    done
-  done
-done
+  "bundled::$ROOT/rawlogs/mrpt-simul/simul.gt.txt"
 echo
 echo "(raw outputs in $OUT)"

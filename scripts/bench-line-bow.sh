@@ -32,33 +32,10 @@ M="PCM=featloc::PcmFeatureMatcher,IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcM
 M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
 COMMON="--seed 1 -q --paired-with none --perturb-xy 0.3 --perturb-yaw-deg 10"
 OFF=(--set "ScanMatcher.IdcMatcher:line_bow_sigmas=0" --set "ScanMatcher.CfIdcMatcher:line_bow_sigmas=0")
+OFF_NAME="straight lines"
 HEADER=--header
-BOUNDED=()  # the --world runs' names, for the table against the bound
-# Both settings on one data set: "NAME" (the bow, the default) and "NAME,
-# straight lines"; with --world also the Cramer-Rao table of each and every
-# pair's outcome and bound.
-bench() { # name, data, extra args...
-  local name="$1" data="$2" notes="fallback .* made"
-  shift 2
-  if [[ " $* " == *" --world "* ]]; then
-    local f
-    f="$(bench_file "$name")"
-    bench_run "$name" "$data" "$@" --pairs "$f.pairs.tsv" --pair-bounds "$f.bounds.tsv" |
-      awk -F'|' '/^\| data \| matcher \| pairs/ || NF == 14 || NF == 9'
-    HEADER=
-    f="$(bench_file "$name, straight lines")"
-    bench_run "$name, straight lines" "$data" "$@" "${OFF[@]}" --pairs "$f.pairs.tsv" \
-      --pair-bounds "$f.bounds.tsv" | awk -F'|' 'NF == 14 || NF == 9'
-    BOUNDED+=("$name" "$name, straight lines")
-  else
-    bench_main_table "$notes" "$name" "$data" "$@"
-    bench_main_table "$notes" "$name, straight lines" "$data" "$@" "${OFF[@]}"
-  fi
-}
-frozen_world() { # world, name, featloc-sim args...: the static twin against the bound
-  sim_world "$1" "$2" --frozen "${@:3}"
-  bench "$2" "$OUT/$2.rawlog" -g "$OUT/$2.gt.txt" --world "$ROOT/worlds/$1.ini" --frozen
-}
+BOUNDED=()
+bench() { switch_bench "$@"; }
 
 machine_line
 echo
@@ -69,23 +46,16 @@ sim_world_and_bench ring-corridor "ring corridor"
 sim_world_and_bench orchard orchard
 echo
 HEADER=--header
-frozen_world rotunda "rotunda frozen (1 cm)" --set Laser:range_noise=0.01
-frozen_world ring-corridor "ring corridor frozen"
-frozen_world orchard "orchard frozen (1 cm)" --set Laser:range_noise=0.01
+switch_frozen_world rotunda "rotunda frozen (1 cm)" --set Laser:range_noise=0.01
+switch_frozen_world ring-corridor "ring corridor frozen"
+switch_frozen_world orchard "orchard frozen (1 cm)" --set Laser:range_noise=0.01
 # The data sets of PCM's extraction benches, the workshop, the calibration
 # scenes on the lattice (bench-common.sh).
 bench_extraction_scenes_and_the_rest
 echo
 echo "### Against each pair's Cramer-Rao bound: the right matches (used, within 10 cm and 2 deg)"
 echo
-HEADER=--header
-for name in "${BOUNDED[@]}"; do
-  f="$(bench_file "$name")"
-  [ -f "$f.bounds.tsv" ] || continue
-  python3 "$ROOT/scripts/pair-bound-ratios.py" "$f.pairs.tsv" "$f.bounds.tsv" |
-    if [ -n "$HEADER" ]; then cat; else tail -n +3; fi
-  HEADER=
-done
+switch_bound_ratios
 echo
 echo "### Time per office pair, IDC with MRPT's ICP alone in the run (three runs each way)"
 echo
@@ -95,21 +65,10 @@ echo "### Whole runs: ATE rmse [mm] / failed matches / fallback matches, straigh
 echo
 echo "| log | matcher | estimator | straight lines | the bow | the bow against straight lines: mean RPE difference [mm] (95%); steps off only the bow / only straight, McNemar |"
 echo "|---|---|---|---|---|---|"
-for c in "rotunda:$OUT/rotunda.rawlog:$OUT/rotunda.gt.txt" \
+switch_whole_runs bow straight \
+  "rotunda:$OUT/rotunda.rawlog:$OUT/rotunda.gt.txt" \
   "ring corridor:$OUT/ring corridor.rawlog:$OUT/ring corridor.gt.txt" \
   "corridor-people-seed1:$OUT/corridor-people-seed1.rawlog:$OUT/corridor-people-seed1.gt.txt" \
-  "bundled::$ROOT/rawlogs/mrpt-simul/simul.gt.txt"; do
-  IFS=: read -r log input gt <<< "$c"
-  for est in matcher ekf; do
-    for m in PcmFeatureMatcher IdcMatcher CfIdcMatcher; do
-      name="whole-${log// /-}-$est-$m"
-      bench_featloc_run "$name-bow" "$input" "$gt" --set "Pipeline:estimator=$est" \
-        --set "ScanMatcher:class=featloc::$m"
-      bench_featloc_run "$name-straight" "$input" "$gt" --set "Pipeline:estimator=$est" \
-        --set "ScanMatcher:class=featloc::$m" "${OFF[@]}"
-      echo "| $log | $m | $est | $(run_counts "$name-straight") | $(run_counts "$name-bow") | $(runs_paired "$gt" "$OUT/$name-bow" "$OUT/$name-straight") |"
-    done
-  done
-done
+  "bundled::$ROOT/rawlogs/mrpt-simul/simul.gt.txt"
 echo
 echo "(raw outputs in $OUT)"
