@@ -294,6 +294,29 @@ switch_bound_ratios() {
     header=
   done
 }
+# The curved worlds written for issue 15 (rotunda, ring-corridor, orchard,
+# in the order given) as written, then their static twins against the
+# bound (the rotunda and the orchard at 1 cm), the data sets of
+# bench_extraction_scenes_and_the_rest, and switch_bound_ratios' table:
+# through the caller's `bench` (switch_bench).
+switch_curved_worlds_and_the_rest() { # worlds...
+  local w
+  for w in "$@"; do sim_world_and_bench "$w" "${w//-/ }"; done
+  echo
+  HEADER=--header
+  for w in "$@"; do
+    if [ "$w" = ring-corridor ]; then
+      switch_frozen_world "$w" "${w//-/ } frozen"
+    else
+      switch_frozen_world "$w" "$w frozen (1 cm)" --set Laser:range_noise=0.01
+    fi
+  done
+  bench_extraction_scenes_and_the_rest
+  echo
+  echo "### Against each pair's Cramer-Rao bound: the right matches (used, within 10 cm and 2 deg)"
+  echo
+  switch_bound_ratios
+}
 # Whole runs (featloc-run as config.ini has it, tagged ON, and with OFF,
 # tagged OFF_TAG) of each featloc matcher as the matcher chain and in the
 # EKF, on each case LOG:INPUT:GT (bench_featloc_run's input and ground

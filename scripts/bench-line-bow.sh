@@ -41,21 +41,7 @@ machine_line
 echo
 echo "### Where it was found: the rotunda, the ring corridor, the orchard"
 echo
-sim_world_and_bench rotunda rotunda
-sim_world_and_bench ring-corridor "ring corridor"
-sim_world_and_bench orchard orchard
-echo
-HEADER=--header
-switch_frozen_world rotunda "rotunda frozen (1 cm)" --set Laser:range_noise=0.01
-switch_frozen_world ring-corridor "ring corridor frozen"
-switch_frozen_world orchard "orchard frozen (1 cm)" --set Laser:range_noise=0.01
-# The data sets of PCM's extraction benches, the workshop, the calibration
-# scenes on the lattice (bench-common.sh).
-bench_extraction_scenes_and_the_rest
-echo
-echo "### Against each pair's Cramer-Rao bound: the right matches (used, within 10 cm and 2 deg)"
-echo
-switch_bound_ratios
+switch_curved_worlds_and_the_rest rotunda ring-corridor orchard
 echo
 echo "### Time per office pair, IDC with MRPT's ICP alone in the run (three runs each way)"
 echo
