@@ -116,17 +116,18 @@ class IterativeDualCorrespondence
 		 * face_segment_extent pairs if its direction is known to this
 		 * [rad], instead of max_line_direction_sigma: the short faces of a
 		 * large structure (a door recess's jambs, a step, a pillar's side),
-		 * whose lines cannot grow past their corners to 5 deg but are the
-		 * surface, and which alone fix the motion along a curved corridor
+		 * whose lines cannot grow past their corners to
+		 * max_line_direction_sigma but are the surface, and which alone fix the motion along a curved corridor
 		 * (doc/benchmarks.md, "Issue 15, thirty-first session"). Small
 		 * isolated things (a leg, a trunk) keep the stricter gate: they
 		 * move or are round. 0 = off (max_line_direction_sigma for all, as
 		 * until 2026-12-03). */
 		double max_face_direction_sigma = mrpt::DEG2RAD(8.0);
 		double face_segment_extent = 1.0;  //!< [m] see max_face_direction_sigma
-		/** The direction sigma a line of reference point i must not exceed
-		 * to pair [rad] (max_line_direction_sigma or, on a large
-		 * structure's segment, max_face_direction_sigma). */
+		/** The direction sigma [rad] a local line on a segment of this
+		 * extent [m] (ReferencePolyline::segmentExtent) must not exceed to
+		 * pair: max_face_direction_sigma on a large structure's segment,
+		 * else max_line_direction_sigma. */
 		double lineDirectionGate(double segmentExtent) const
 		{
 			return max_face_direction_sigma > max_line_direction_sigma &&
