@@ -75,6 +75,15 @@ std::vector<std::vector<double>> routeOf(const std::string& world)
 	return route;
 }
 
+/** The pose a fraction f along leg `leg` (waypoint leg to leg + 1) of a
+ * route, heading along the leg. */
+CPose2D poseAlongRoute(const std::vector<std::vector<double>>& route, size_t leg, double f)
+{
+	const double ax = route[leg][0], ay = route[leg][1];
+	const double bx = route[leg + 1][0], by = route[leg + 1][1];
+	return CPose2D(ax + f * (bx - ax), ay + f * (by - ay), std::atan2(by - ay, bx - ax));
+}
+
 const char* kIdcAsPublished = "final_phase=idc";
 const char* kCfIdcAsPublished =
 	"final_phase=idc\npairing_gate=false\npairing_fallback=false\nsegment_gate=0\ncurvature_sampling=normalized";
@@ -744,10 +753,7 @@ TEST(IdcMatcher, TheBowOfCurvedWallsKeepsTheHeadingHonest)
 	for (int t = 0; t < 150; t++)
 	{
 		const size_t leg = 1 + static_cast<size_t>(rng.drawUniform32bit() % (route.size() - 3));
-		const double f = rng.drawUniform(0.2, 0.8);
-		const double ax = route[leg][0], ay = route[leg][1];
-		const double bx = route[leg + 1][0], by = route[leg + 1][1];
-		const CPose2D p0(ax + f * (bx - ax), ay + f * (by - ay), std::atan2(by - ay, bx - ax));
+		const CPose2D p0 = poseAlongRoute(route, leg, rng.drawUniform(0.2, 0.8));
 		const CPose2D motion(rng.drawUniform(0.1, 0.3), rng.drawUniform(-0.02, 0.02),
 			mrpt::DEG2RAD(rng.drawUniform(-5.0, 5.0)));
 		const auto ref = noisy(hall.scan(p0, CPose2D(0.2, 0, 0)), rng, 0.01);
@@ -1107,10 +1113,7 @@ TEST(IdcMatcher, ADoorRecesssJambsFixTheMotionAlongARingCorridor)
 	for (int t = 0; t < trials; t++)
 	{
 		const size_t leg = static_cast<size_t>(rng.drawUniform32bit() % (route.size() - 1));
-		const double f = rng.drawUniform(0.0, 1.0);
-		const double ax = route[leg][0], ay = route[leg][1];
-		const double bx = route[leg + 1][0], by = route[leg + 1][1];
-		const CPose2D p0(ax + f * (bx - ax), ay + f * (by - ay), std::atan2(by - ay, bx - ax));
+		const CPose2D p0 = poseAlongRoute(route, leg, rng.drawUniform(0.0, 1.0));
 		const CPose2D motion(0.08, rng.drawUniform(-0.01, 0.01), mrpt::DEG2RAD(rng.drawUniform(-0.5, 0.5)));
 		const CPose2D sensor(0.25, 0, 0);
 		const auto ref = noisy(ring.scan(p0, sensor, 1081, mrpt::DEG2RAD(270.0)), rng, 0.015);

@@ -33,6 +33,7 @@ void ReferencePolyline::build(const ScanPoints& s, const std::vector<ScanSegment
 	m_points.clear();
 	m_joined.clear();
 	m_segments.clear();
+	m_segmentExtent.clear();
 	for (const auto& seg : segments)
 	{
 		const auto first = static_cast<uint32_t>(m_points.size());
@@ -42,13 +43,8 @@ void ReferencePolyline::build(const ScanPoints& s, const std::vector<ScanSegment
 			m_joined.push_back(i < seg.last ? 1 : 0);
 		}
 		m_segments.push_back({first, static_cast<uint32_t>(m_points.size() - 1)});
-	}
-	m_segmentExtent.assign(m_points.size(), 0);
-	for (const auto& seg : m_segments)
-	{
-		const ScanPoint &a = m_points[seg.first], &b = m_points[seg.last];
-		std::fill(m_segmentExtent.begin() + seg.first, m_segmentExtent.begin() + seg.last + 1,
-			std::hypot(b.x - a.x, b.y - a.y));
+		const ScanPoint &a = s.points[seg.first], &b = s.points[seg.last];
+		m_segmentExtent.insert(m_segmentExtent.end(), seg.size(), std::hypot(b.x - a.x, b.y - a.y));
 	}
 	m_bearings.resize(m_points.size());
 	for (size_t i = 0; i < m_points.size(); i++) m_bearings[i] = m_points[i].bearing;

@@ -117,8 +117,9 @@ class IterativeDualCorrespondence
 		 * [rad], instead of max_line_direction_sigma: the short faces of a
 		 * large structure (a door recess's jambs, a step, a pillar's side),
 		 * whose lines cannot grow past their corners to
-		 * max_line_direction_sigma but are the surface, and which alone fix the motion along a curved corridor
-		 * (doc/benchmarks.md, "Issue 15, thirty-first session"). Small
+		 * max_line_direction_sigma but are the surface, and which alone
+		 * fix the motion along a curved corridor (doc/benchmarks.md,
+		 * "Issue 15, thirty-first session"). Small
 		 * isolated things (a leg, a trunk) keep the stricter gate: they
 		 * move or are round. 0 = off (max_line_direction_sigma for all, as
 		 * until 2026-12-03). */
