@@ -1139,3 +1139,222 @@ TEST(IdcMatcher, ADoorRecesssJambsFixTheMotionAlongARingCorridor)
 	EXPECT_GT(right[1], right[0]);
 	EXPECT_GT(right[1], 0.9 * trials) << right[1] << " of " << trials;
 }
+
+namespace
+{
+const std::string kOrchard = std::string(FEATLOC_SOURCE_DIR) + "/worlds/orchard.ini";
+
+/** A SICK LMS200's scan (361 beams over 180 deg, 80 m, 0.2 m ahead of
+ * the robot, as worlds/orchard.ini mounts it) in a static world. */
+mrpt::obs::CObservation2DRangeScan::Ptr sickScan(const SyntheticRoom& world, const CPose2D& robot)
+{
+	return world.scan(robot, CPose2D(0.2, 0, 0), 361, M_PI, 80);
+}
+
+ReferencePolyline roundPolylineOf(const ScanPoints& s, double circleSigmas = 3.0)
+{
+	std::vector<ScanSegment> segments;
+	AdaptiveBreakpointSegmenter().segment(s, segments);
+	ReferencePolyline p;
+	p.build(s, segments, 6, 0, 3.0, circleSigmas, 1.0);
+	return p;
+}
+}  // namespace
+
+// worlds/orchard.ini's trunks (8-18 cm) give a scan four to twenty points
+// each. Their segments are round things, fitted with circles whose centres
+// and radii are the trunks' own; nothing else of the scene (the barn, the
+// garden wall) is taken for one.
+TEST(ReferencePolyline, SmallRoundThingsAreFittedWithTheirCircles)
+{
+	TrackedConfig cfg;
+	cfg.loadFile(kOrchard);
+	const std::vector<CircleShape> trunks = SimWorld::fromConfig(cfg).circles();
+	const SyntheticRoom orchard = SyntheticRoom::fromWorldFile(kOrchard, 0, false);
+	const std::vector<std::vector<double>> route = routeOf(kOrchard);
+	mrpt::random::CRandomGenerator rng(17);
+	size_t round = 0, scans = 0;
+	for (size_t leg = 0; leg + 1 < route.size(); leg++)
+		for (double f = 0.1; f < 1; f += 0.2)
+		{
+			const ScanPoints s =
+				ScanPoints::fromScan(*noisy(sickScan(orchard, poseAlongRoute(route, leg, f)), rng, 0.01));
+			const ReferencePolyline poly = roundPolylineOf(s);
+			EXPECT_EQ(roundPolylineOf(s, 0).roundThings(), 0u);
+			scans++;
+			for (size_t k = 0; k < poly.roundThings(); k++)
+			{
+				const auto& thing = poly.roundThing(static_cast<int32_t>(k));
+				// In the sensor's frame: the trunk it is, moved there.
+				const CPose2D sensor = poseAlongRoute(route, leg, f) + CPose2D(0.2, 0, 0);
+				const CPose2D centre = sensor + CPose2D(thing.circle.ox, thing.circle.oy, 0);
+				double nearest = 1e9, radius = 0;
+				for (const auto& t : trunks)
+				{
+					const double d = std::hypot(centre.x() - t.centre.x, centre.y() - t.centre.y);
+					if (d < nearest)
+					{
+						nearest = d;
+						radius = t.radius;
+					}
+				}
+				const size_t n = thing.hi - thing.lo + 1;
+				EXPECT_LT(nearest, 0.05) << "a round thing off every trunk, " << n << " points";
+				EXPECT_NEAR(thing.circle.r, radius, 0.05) << n << " points";
+				round++;
+			}
+		}
+	EXPECT_GT(round, 2 * scans) << round << " round things in " << scans << " scans";
+}
+
+// A circle's residual moves with the reference ranges through the circle's
+// fit (CircleFit's first-order sensitivity, exact on noise-free points) and
+// with the current range along its beam.
+TEST(PointToLineCovariance, RoundThingRangeDerivativesEqualFiniteDifferences)
+{
+	const SyntheticRoom orchard = SyntheticRoom::fromWorldFile(kOrchard, 0, false);
+	const ScanPoints ref = ScanPoints::fromScan(*sickScan(orchard, CPose2D(10.3, 4.0, 0.1)));
+	std::vector<ScanSegment> segments;
+	AdaptiveBreakpointSegmenter().segment(ref, segments);
+	ReferencePolyline poly;
+	poly.build(ref, segments, 6, 0, 3.0, 3.0, 1.0);
+	ASSERT_GE(poly.roundThings(), 3u);
+	const mrpt::math::TPose2D x(0.12, -0.05, 0.07);
+	const double c = std::cos(x.phi), s = std::sin(x.phi);
+	for (size_t k = 0; k < poly.roundThings(); k++)
+	{
+		const auto& thing = poly.roundThing(static_cast<int32_t>(k));
+		const uint32_t edge = thing.lo;
+		ASSERT_EQ(poly.roundOf(edge), static_cast<int32_t>(k));
+		// A current point near the circle, on the sensor's side.
+		const double d = std::hypot(thing.circle.ox, thing.circle.oy);
+		ScanPoint p;
+		p.x = thing.circle.ox * (1 - 1.1 * thing.circle.r / d) + 0.02;
+		p.y = thing.circle.oy * (1 - 1.1 * thing.circle.r / d) - 0.01;
+		p.range = std::hypot(p.x, p.y);
+		p.bearing = std::atan2(p.y, p.x);
+		std::vector<double> dedz;
+		Eigen::Matrix<double, 3, Eigen::Dynamic> mixed;
+		PointToLineCovariance::rangeDerivatives(x, p, thing, poly, dedz, &mixed);
+		ASSERT_EQ(dedz.size(), 1 + thing.hi - thing.lo + 1);
+		auto evaluate = [&](size_t j, double h, Eigen::Vector3d& grad) {
+			ScanPoints moved = ref;
+			ScanPoint q = p;
+			ScanPoint* target = j == 0 ? &q : &moved.points[thing.lo + j - 1];
+			target->range += h;
+			target->x = target->range * std::cos(target->bearing);
+			target->y = target->range * std::sin(target->bearing);
+			ReferencePolyline poly2;
+			poly2.build(moved, segments, 6, 0, 3.0, 3.0, 1.0);
+			const int32_t k2 = poly2.roundOf(edge);
+			EXPECT_GE(k2, 0);
+			return PointToLineCovariance::residual(x, c, s, q, poly2.roundThing(k2), &grad);
+		};
+		for (size_t j = 0; j < dedz.size(); j++)
+		{
+			const double h = 1e-6;
+			Eigen::Vector3d gp, gm;
+			const double ep = evaluate(j, h, gp), em = evaluate(j, -h, gm);
+			// (The circle's fit converges to 1e-10 m: a relative 1e-5 here.)
+			EXPECT_NEAR(dedz[j], (ep - em) / (2 * h), 1e-5) << "thing " << k << " z " << j;
+			const Eigen::Vector3d numeric = (gp - gm) / (2 * h);
+			for (int r = 0; r < 3; r++)
+				EXPECT_NEAR(mixed(r, static_cast<Eigen::Index>(j)), numeric[r], 1e-4)
+					<< "thing " << k << " z " << j << " row " << r;
+		}
+	}
+}
+
+// Driving west between two rows of worlds/orchard.ini, open ground ahead
+// and the barn behind the SICK's 180 degrees: only the trunks fix the
+// motion along the rows. Their local lines of four to eight points know
+// their directions to 8 deg or worse and IDC left them unpaired (the
+// motion "unconstrained"; doc/benchmarks.md, "Issue 15, twenty-ninth
+// session"); paired with their circles they fix it.
+TEST(IdcMatcher, TrunksFixTheMotionAlongAnOrchardRow)
+{
+	const SyntheticRoom orchard = SyntheticRoom::fromWorldFile(kOrchard, 0, false);
+	const std::vector<std::vector<double>> route = routeOf(kOrchard);
+	auto lines = matcher("featloc::IdcMatcher", "circle_fit_sigmas=0"),
+		 circles = matcher("featloc::IdcMatcher");
+	mrpt::random::CRandomGenerator rng(43);
+	int unconstrained[2] = {0, 0}, right[2] = {0, 0};
+	const int trials = 60;
+	for (int t = 0; t < trials; t++)
+	{
+		// The leg from (38, 8) to (1, 8), heading west, its last 10 m.
+		const CPose2D p0 = poseAlongRoute(route, 3, rng.drawUniform(0.73, 0.97));
+		const CPose2D motion(0.2, rng.drawUniform(-0.01, 0.01), mrpt::DEG2RAD(rng.drawUniform(-0.5, 0.5)));
+		const auto ref = noisy(sickScan(orchard, p0), rng, 0.01);
+		const auto cur = noisy(sickScan(orchard, p0 + motion), rng, 0.01);
+		// Borges & Aldon's initial errors, +-0.3 m and +-10 deg uniform.
+		const CPose2D guess(motion.x() + rng.drawUniform(-0.3, 0.3),
+			motion.y() + rng.drawUniform(-0.3, 0.3),
+			motion.phi() + mrpt::DEG2RAD(rng.drawUniform(-10.0, 10.0)));
+		const double a = 1 / std::sqrt(3.0);  // a uniform draw's sigma
+		const auto g = diagonalPoseGaussian(guess, 0.3 * a, mrpt::DEG2RAD(10.0) * a);
+		int k = 0;
+		for (const auto* m : {&lines, &circles})
+		{
+			const MatchResult r = (*m)->match(*ref, *cur, g);
+			const std::string why = r.failureReason + r.ambiguityReason;
+			if (why.find("unconstrained") != std::string::npos) unconstrained[k]++;
+			const Eigen::Vector3d e = errorOf(r, motion);
+			if (r.success && !r.ambiguous && e.head<2>().norm() < 0.02 && std::abs(e[2]) < mrpt::DEG2RAD(0.2))
+				right[k]++;
+			k++;
+		}
+	}
+	EXPECT_GT(unconstrained[0], trials / 4) << "lines only: the trunks left out";
+	EXPECT_LT(unconstrained[1], unconstrained[0] / 3) << unconstrained[1] << " against " << unconstrained[0];
+	EXPECT_GT(right[1], 0.9 * trials) << right[1] << " of " << trials;
+}
+
+// A corridor whose walls fix nothing along it, with posts (12 cm) 1.5 m apart
+// that do, or a walking person's legs (6 cm, 0.2 m apart) that move 12 cm
+// along it between the scans. The posts fix the motion; the legs, alone or
+// beside the posts, must not pull it: a moving round thing that alone
+// fixes a direction cannot be told from a post, and is dropped
+// (IterativeDualCorrespondence::dropMovedRoundThing).
+TEST(IdcMatcher, WalkingLegsDoNotPullTheMatchAlongACorridor)
+{
+	const CPose2D motion(0.3, 0.01, mrpt::DEG2RAD(0.3));
+	auto corridorWith = [](bool posts, double legsAt) {
+		SyntheticRoom r = SyntheticRoom::corridor();
+		if (posts)
+			for (double x : {1.5, 3.0, 4.5}) r.addCircle(x, 0.7, 0.12);
+		if (legsAt > 0)
+			for (double y : {-0.4, -0.2}) r.addCircle(legsAt, y, 0.06);
+		return r;
+	};
+	mrpt::random::CRandomGenerator rng(5);
+	const auto g = diagonalPoseGaussian(CPose2D(0.33, 0.0, mrpt::DEG2RAD(0.8)), 0.05, mrpt::DEG2RAD(3.0));
+	for (const std::string cls : {"featloc::IdcMatcher", "featloc::CfIdcMatcher"})
+	{
+		for (int trial = 0; trial < 5; trial++)
+		{
+			// Posts alone: fixed, to a centimetre.
+			const auto ref = noisy(corridorWith(true, 0).scan(CPose2D()), rng, 0.01);
+			const auto cur = noisy(corridorWith(true, 0).scan(motion), rng, 0.01);
+			const MatchResult posts = matcher(cls)->match(*ref, *cur, g);
+			EXPECT_TRUE(posts.success && !posts.ambiguous)
+				<< cls << ": " << posts.failureReason << posts.ambiguityReason;
+			EXPECT_LT(errorOf(posts, motion).head<2>().norm(), 0.01) << cls;
+
+			// Legs 2 m ahead walking on 12 cm, with and without the posts.
+			for (const bool withPosts : {false, true})
+			{
+				const auto ref2 = noisy(corridorWith(withPosts, 2.0).scan(CPose2D()), rng, 0.01);
+				const auto cur2 = noisy(corridorWith(withPosts, 2.12).scan(motion), rng, 0.01);
+				const MatchResult r = matcher(cls)->match(*ref2, *cur2, g);
+				const double off = errorOf(r, motion).head<2>().norm();
+				EXPECT_TRUE(!r.success || r.ambiguous || off < 0.02)
+					<< cls << (withPosts ? " with the posts" : " without posts") << ": silently "
+					<< off << " m off";
+				if (withPosts)
+					EXPECT_TRUE(r.success && !r.ambiguous && off < 0.02)
+						<< cls << ": " << r.failureReason << r.ambiguityReason << " " << off;
+			}
+		}
+	}
+}

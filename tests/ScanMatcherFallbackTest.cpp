@@ -396,7 +396,10 @@ TEST(ScanMatcherFallback, AWeakMatchIsReplacedByTheFallbacksUnambiguousOne)
 // Both with the one 5-degree line gate (max_face_direction_sigma_DEG = 0):
 // with the default, CF-IDC's few points also pair with the short faces of
 // the long segments and it makes this match itself, within the
-// reference's centimetres.
+// reference's centimetres. And all with lines only (circle_fit_sigmas =
+// 0): with the default, two round pillars (0.3 m, 2-4 m away) pair with
+// their circles and CF-IDC makes this match itself, 5 cm from the
+// reference poses, 4.5 cm ahead along the motion as IDC alone is.
 TEST(ScanMatcherFallback, CfIdcsFailureOnARealLogIsMadeByIdc)
 {
 	mrpt::obs::CObservation2DRangeScan ref, cur;
@@ -408,7 +411,7 @@ TEST(ScanMatcherFallback, CfIdcsFailureOnARealLogIsMadeByIdc)
 
 	const std::string fixedSigma =
 		"[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\nline_bow_sigmas = 0\n"
-		"max_face_direction_sigma_DEG = 0\n";
+		"max_face_direction_sigma_DEG = 0\ncircle_fit_sigmas = 0\n";
 	const MatchResult own = fromIni("featloc::CfIdcMatcher", fixedSigma + "fallback_class =\n")->match(ref, cur, guess);
 	EXPECT_FALSE(own.success);
 	EXPECT_NE(own.failureReason.find("too few pairs"), std::string::npos) << own.failureReason;
@@ -423,7 +426,8 @@ TEST(ScanMatcherFallback, CfIdcsFailureOnARealLogIsMadeByIdc)
 	EXPECT_LT(std::abs(r.estimate.mean.phi() - truth.phi()), mrpt::DEG2RAD(1.0));
 
 	const std::string bowed =
-		"[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\nmax_face_direction_sigma_DEG = 0\n";
+		"[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\nmax_face_direction_sigma_DEG = 0\n"
+		"circle_fit_sigmas = 0\n";
 	EXPECT_FALSE(fromIni("featloc::CfIdcMatcher", bowed + "fallback_class =\n")->match(ref, cur, guess).success);
 	const MatchResult b = fromIni("featloc::CfIdcMatcher", bowed)->match(ref, cur, guess);
 	ASSERT_TRUE(b.success) << b.failureReason;
@@ -431,10 +435,18 @@ TEST(ScanMatcherFallback, CfIdcsFailureOnARealLogIsMadeByIdc)
 	EXPECT_LT(std::hypot(b.estimate.mean.x() - truth.x(), b.estimate.mean.y() - truth.y()), 0.05);
 
 	const MatchResult f = fromIni("featloc::CfIdcMatcher",
-		"[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\nfallback_class =\n")
+		"[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\nfallback_class =\n"
+		"circle_fit_sigmas = 0\n")
 							  ->match(ref, cur, guess);
 	ASSERT_TRUE(f.success) << f.failureReason;
 	EXPECT_LT(std::hypot(f.estimate.mean.x() - truth.x(), f.estimate.mean.y() - truth.y()), 0.05);
+
+	const MatchResult c = fromIni("featloc::CfIdcMatcher",
+		"[ScanMatcher.CfIdcMatcher]\nbreakpoint_sigma_r_from_scan = false\nfallback_class =\n")
+							  ->match(ref, cur, guess);
+	ASSERT_TRUE(c.success) << c.failureReason;
+	EXPECT_LT(std::hypot(c.estimate.mean.x() - truth.x(), c.estimate.mean.y() - truth.y()), 0.06);
+	EXPECT_LT(std::abs(c.estimate.mean.phi() - truth.phi()), mrpt::DEG2RAD(1.0));
 }
 
 // A CF-IDC match whose segments leave one direction free goes to its IDC

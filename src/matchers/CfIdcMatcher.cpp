@@ -210,7 +210,8 @@ void CfIdcMatcher::buildReference(const ScanPoints& reference)
 	for (const auto& s : m_referenceReport)
 		if (s.kept) m_segments.push_back(s.segment);
 	m_polyline.build(reference, m_segments, params.idc.line_half_window,
-		lineGrowthTargetFor(params.idc.lineTargetDirectionSigma()), params.idc.line_bow_sigmas);
+		lineGrowthTargetFor(params.idc.lineTargetDirectionSigma()), params.idc.line_bow_sigmas,
+		params.idc.circle_fit_sigmas, params.idc.face_segment_extent);
 }
 
 void CfIdcMatcher::collectKeptCurrent(const ScanPoints& current)

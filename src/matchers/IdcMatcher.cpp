@@ -39,17 +39,22 @@ void IdcMatcher::buildReference(const ScanPoints& reference)
 	const double lineTarget = lineGrowthTargetFor(params.idc.lineTargetDirectionSigma());
 	if (m_built && m_builtSegmentation == segmentation &&
 		m_builtLineHalfWindow == params.idc.line_half_window && m_builtLineTarget == lineTarget &&
-		m_builtBowSigmas == params.idc.line_bow_sigmas && m_builtReference.samePointsAs(reference))
+		m_builtBowSigmas == params.idc.line_bow_sigmas &&
+		m_builtCircleSigmas == params.idc.circle_fit_sigmas &&
+		m_builtRoundExtent == params.idc.face_segment_extent &&
+		m_builtReference.samePointsAs(reference))
 		return;
 	AdaptiveBreakpointSegmenter(segmentation).segment(reference, m_segments);
 	m_polyline.build(reference, m_segments, params.idc.line_half_window, lineTarget,
-		params.idc.line_bow_sigmas);
+		params.idc.line_bow_sigmas, params.idc.circle_fit_sigmas, params.idc.face_segment_extent);
 	m_built = true;
 	m_builtReference = reference;
 	m_builtSegmentation = segmentation;
 	m_builtLineHalfWindow = params.idc.line_half_window;
 	m_builtLineTarget = lineTarget;
 	m_builtBowSigmas = params.idc.line_bow_sigmas;
+	m_builtCircleSigmas = params.idc.circle_fit_sigmas;
+	m_builtRoundExtent = params.idc.face_segment_extent;
 }
 
 void IdcMatcher::matchPoints(

@@ -1,5 +1,6 @@
 #include "featloc/matchers/IterativeDualCorrespondence.h"
 
+#include <mrpt/math/distributions.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/tfest/se2.h>
 
@@ -8,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "featloc/config/ConfigValues.h"
 #include "featloc/matchers/MotionConstraintCheck.h"
@@ -35,6 +37,7 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	read(c, s, "face_segment_extent", face_segment_extent);
 	read(c, s, "grow_lines_to_direction_sigma", grow_lines_to_direction_sigma);
 	read(c, s, "line_bow_sigmas", line_bow_sigmas);
+	read(c, s, "circle_fit_sigmas", circle_fit_sigmas);
 	read(c, s, "guess_gate_chi2", guess_gate_chi2);
 	read(c, s, "covariance_inflation", covariance_inflation);
 	read(c, s, "min_range_sigma", min_range_sigma);
@@ -55,6 +58,7 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	require(max_face_direction_sigma >= 0, c, s, "max_face_direction_sigma_DEG", ">= 0 (0 disables it)");
 	require(face_segment_extent > 0, c, s, "face_segment_extent", "> 0");
 	require(line_bow_sigmas >= 0, c, s, "line_bow_sigmas", ">= 0 (0 disables it)");
+	require(circle_fit_sigmas >= 0, c, s, "circle_fit_sigmas", ">= 0 (0 disables it)");
 	require(guess_gate_chi2 >= 0, c, s, "guess_gate_chi2", ">= 0 (0 disables it)");
 	require(covariance_inflation >= 1, c, s, "covariance_inflation", ">= 1");
 	require(min_range_sigma > 0, c, s, "min_range_sigma", "> 0");
@@ -98,6 +102,8 @@ void IterativeDualCorrespondence::Parameters::saveToConfigFile(
 		"point_to_line phase: a local line whose direction is still known worse than max_line_direction_sigma_DEG after line_half_window grows on until it is not (up to 8x as many points), instead of being left out: dense noisy scans (false: as until 2026-12-01)");
 	write(c, s, "line_bow_sigmas", line_bow_sigmas,
 		"point_to_line phase: a local line whose points bow away from it by more than this many standard errors of the quadratic term keeps the bow (a local parabola): on curved walls a chord biases the heading (0 = off: straight lines only, as until 2026-12-03)");
+	write(c, s, "circle_fit_sigmas", circle_fit_sigmas,
+		"point_to_line phase: a segment shorter than face_segment_extent that a circle fits better than a line by more than this many sigmas (and within its noise) is a small round thing: its points pair with the circle (a trunk's few points give lines of unknown direction; 0 = off: lines only, as until 2026-12-04)");
 	write(c, s, "guess_gate_chi2", guess_gate_chi2,
 		"failure when the estimate's Mahalanobis^2 from the initial guess exceeds this (21.1: 99.99% for 3 dof; 0 = off)");
 	write(c, s, "covariance_inflation", covariance_inflation,
@@ -158,25 +164,24 @@ double IterativeDualCorrespondence::medianDistance(
 	return *mid;
 }
 
-bool IterativeDualCorrespondence::pointToLineStep(
-	const ReferencePolyline& reference, const std::vector<ScanPoint>& current,
-	mrpt::math::TPose2D& x, double& stepSigmas) const
+bool IterativeDualCorrespondence::pointToLineStep(const ReferencePolyline& reference,
+	const std::vector<ScanPoint>& current, const std::vector<PointToLinePair>& pairs,
+	mrpt::math::TPose2D& x, double& stepSigmas)
 {
-	if (m_lines.size() < 3) return false;
+	if (pairs.size() < 3) return false;
 	const double c = std::cos(x.phi), s = std::sin(x.phi);
 	double meanSquare = 0;
 	Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
 	Eigen::Vector3d b = Eigen::Vector3d::Zero();
-	for (const auto& pr : m_lines)
+	for (const auto& pr : pairs)
 	{
 		Eigen::Vector3d g;
-		const double e =
-			PointToLineCovariance::residual(x, c, s, current[pr.current], reference.localLine(pr.a), &g);
+		const double e = PointToLineCovariance::residual(x, c, s, current, reference, pr, &g);
 		A += g * g.transpose();
 		b += g * e;
 		meanSquare += e * e;
 	}
-	meanSquare /= static_cast<double>(m_lines.size());
+	meanSquare /= static_cast<double>(pairs.size());
 	// A little damping keeps an unconstrained direction (a corridor) where
 	// it is; the covariance check reports it.
 	A.diagonal().array() += 1e-9 * (1 + A.trace());
@@ -186,6 +191,247 @@ bool IterativeDualCorrespondence::pointToLineStep(
 	// The step in standard deviations of the estimate (cov ~ s^2 A^-1, s^2
 	// the mean squared residual).
 	stepSigmas = std::sqrt(d.dot(A * d) / std::max(meanSquare, 1e-24));
+	return true;
+}
+
+bool IterativeDualCorrespondence::pointToLinePair(const ReferencePolyline& reference,
+	const ReferencePolyline::Hit& hit, uint32_t i, double qx, double qy,
+	const std::vector<char>& skipRound, PointToLinePair& pair, double& distance) const
+{
+	// Point-to-line pairs need a line fitted to three points at least (a
+	// two-point edge whose neighbours both leave its line bridges two
+	// surfaces: a depth jump at long range that the breakpoint test let
+	// through) and whose direction is known: a line of a few noisy points
+	// close together has a random normal, and a wall's random normals
+	// constrain the motion along the wall that nothing constrains. (A large
+	// structure's short faces pair known less well: lineDirectionGate.)
+	if (hit.a == hit.b) return false;
+	// A round thing's points pair with its circle, which knows its normals
+	// as well as its centre (unless it may have moved:
+	// dropMovedRoundThing; its points then go to their lines).
+	const int32_t round = reference.roundOf(hit.a);
+	if (round >= 0 && !skipRound[static_cast<size_t>(round)])
+	{
+		pair = {i, hit.a, round};
+		distance = reference.roundThing(round).distance(qx, qy);
+		return true;
+	}
+	const ReferencePolyline::LocalLine& L = reference.localLine(hit.a);
+	if (L.hi - L.lo < 2 ||
+		reference.directionSigma(hit.a) > params.lineDirectionGate(reference.segmentExtent(hit.a)))
+		return false;
+	pair = {i, hit.a};
+	distance = std::abs(L.nx * (qx - L.cx) + L.ny * (qy - L.cy));
+	return true;
+}
+
+double IterativeDualCorrespondence::leftOutGroupRatio(const ReferencePolyline& reference,
+	const std::vector<ScanPoint>& current, const mrpt::math::TPose2D& x, double D, size_t first,
+	size_t end, int32_t group)
+{
+	// The point-to-line phase again from x without the group (and without
+	// the things already dropped), re-pairing at each step: one linearised
+	// step is not enough, where the lines' points change lines as the
+	// estimate moves (a corridor's walls weakly fixing the motion along
+	// it, a person's legs walking with the robot).
+	std::vector<char>& skip = m_looSkip;
+	skip = m_roundDropped;
+	for (size_t k = 0; k < skip.size(); k++)
+		if (m_looGroup[k] == group) skip[k] = 1;
+	mrpt::math::TPose2D xk = x;
+	std::vector<PointToLinePair>& pairs = m_looPairs;
+	auto pairAt = [&](const mrpt::math::TPose2D& at) {
+		pairs.clear();
+		const double c = std::cos(at.phi), s = std::sin(at.phi);
+		for (size_t i = 0; i < current.size(); i++)
+		{
+			double qx, qy;
+			transform(c, s, at, current[i], qx, qy);
+			ReferencePolyline::Hit hit;
+			PointToLinePair pair;
+			double distance;
+			if (reference.closestPoint({qx, qy}, D, hit, m_closestHint[i]) &&
+				pointToLinePair(reference, hit, static_cast<uint32_t>(i), qx, qy, skip, pair, distance))
+				pairs.push_back(pair);
+		}
+	};
+	for (unsigned int it = 0; it < kLeftOutIterations; it++)
+	{
+		pairAt(xk);
+		double stepSigmas = 0;
+		if (!pointToLineStep(reference, current, pairs, xk, stepSigmas))
+			return std::numeric_limits<double>::infinity();
+		if (stepSigmas < params.step_tolerance) break;
+	}
+	pairAt(xk);
+	// The others' information there, less what noisy normals invent: it
+	// must still fix every direction, and gives that estimate's
+	// covariance.
+	const double c = std::cos(xk.phi), s = std::sin(xk.phi);
+	Eigen::Matrix3d A = Eigen::Matrix3d::Zero(), invented = Eigen::Matrix3d::Zero();
+	for (const auto& pr : pairs)
+	{
+		const ScanPoint& p = current[pr.current];
+		const ReferencePolyline::LocalLine& L = reference.localLine(pr.a);
+		Eigen::Vector3d g;
+		PointToLineCovariance::residual(xk, c, s, current, reference, pr, &g);
+		const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
+		const double tx = pr.round >= 0 ? -g[1] : L.ny, ty = pr.round >= 0 ? g[0] : -L.nx;
+		const Eigen::Vector3d dt(tx, ty, -tx * ry + ty * rx);
+		A += g * g.transpose();
+		invented += PointToLineCovariance::normalVariance(xk, c, s, current, reference, pr) * dt *
+			dt.transpose();
+	}
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A - invented);
+	const Eigen::Vector3d weakest = eig.eigenvectors().col(0);
+	if (!(eig.eigenvalues()[0] >
+			PointToLineCovariance::kInventedMargin * weakest.dot(invented * weakest)))
+		return std::numeric_limits<double>::infinity();
+	const Eigen::Matrix3d others = eig.eigenvectors() *
+		eig.eigenvalues().cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
+	// The group's points (as paired at x) at that estimate, against their
+	// covariance over sigma^2: their own noise, their circles' fits (de/d(ox,
+	// oy, r) = (-n, -1) moves a circle's points together) and the others'
+	// estimate.
+	const auto m = static_cast<Eigen::Index>(end - first);
+	Eigen::MatrixXd G(m, 3);
+	Eigen::VectorXd e(m);
+	for (Eigen::Index r = 0; r < m; r++)
+	{
+		Eigen::Vector3d g;
+		e[r] = PointToLineCovariance::residual(
+			xk, c, s, current, reference, m_lines[m_looOrder[first + static_cast<size_t>(r)].second], &g);
+		G.row(r) = g.transpose();
+	}
+	Eigen::MatrixXd C = Eigen::MatrixXd::Identity(m, m) + G * others * G.transpose();
+	for (Eigen::Index r = 0; r < m; r++)
+		for (Eigen::Index q = 0; q < m; q++)
+		{
+			const int32_t kr = m_lines[m_looOrder[first + static_cast<size_t>(r)].second].round;
+			if (kr != m_lines[m_looOrder[first + static_cast<size_t>(q)].second].round) continue;
+			const Eigen::Vector3d ar(-G(r, 0), -G(r, 1), -1), aq(-G(q, 0), -G(q, 1), -1);
+			C(r, q) += ar.dot(reference.roundThing(kr).circle.normalInverse * aq);
+		}
+	const double sigma2 = mrpt::square(std::max(1e-3, reference.rangeNoise()));
+	const double chi2 = e.dot(C.ldlt().solve(e)) / sigma2;
+	return chi2 / mrpt::math::chi2inv(0.999, static_cast<unsigned int>(m));
+}
+
+bool IterativeDualCorrespondence::dropMovedRoundThing(
+	const ReferencePolyline& reference, const std::vector<ScanPoint>& current,
+	const mrpt::math::TPose2D& x, double D)
+{
+	if (reference.roundThings() == 0 || m_lines.size() < 3) return false;
+	const double c = std::cos(x.phi), s = std::sin(x.phi);
+	// The information of every pair at x (pointToLineStep's normal
+	// equations) with what noisy normals invent (PointToLineCovariance),
+	// and the round things' pairs.
+	const size_t n = m_lines.size();
+	m_looGradients.resize(n);
+	m_looInvented.resize(n);
+	Eigen::Matrix3d A = Eigen::Matrix3d::Zero(), invented = Eigen::Matrix3d::Zero();
+	m_looOrder.clear();
+	for (size_t j = 0; j < n; j++)
+	{
+		const PointToLinePair& pr = m_lines[j];
+		const ScanPoint& p = current[pr.current];
+		const ReferencePolyline::LocalLine& L = reference.localLine(pr.a);
+		Eigen::Vector3d g;
+		PointToLineCovariance::residual(x, c, s, current, reference, pr, &g);
+		m_looGradients[j] = g;
+		// The surface's direction where the point pairs (a line's, a
+		// circle's tangent) and what its normal's error invents.
+		const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
+		const double tx = pr.round >= 0 ? -g[1] : L.ny, ty = pr.round >= 0 ? g[0] : -L.nx;
+		const Eigen::Vector3d dt(tx, ty, -tx * ry + ty * rx);
+		m_looInvented[j] = PointToLineCovariance::normalVariance(x, c, s, current, reference, pr) *
+			dt * dt.transpose();
+		A += g * g.transpose();
+		invented += m_looInvented[j];
+		if (pr.round >= 0) m_looOrder.emplace_back(pr.round, static_cast<uint32_t>(j));
+	}
+	if (m_looOrder.empty()) return false;
+	// Round things whose centres lie within kRoundGroupDistance of each
+	// other are one group (a person's two legs, people side by side):
+	// they may move together, so they are tested together. Labels by
+	// union of the circles, in m_looGroup.
+	const size_t nc = reference.roundThings();
+	m_looGroup.resize(nc);
+	for (size_t k = 0; k < nc; k++) m_looGroup[k] = static_cast<int32_t>(k);
+	auto root = [&](int32_t k) {
+		while (m_looGroup[static_cast<size_t>(k)] != k)
+			k = m_looGroup[static_cast<size_t>(k)] =
+				m_looGroup[static_cast<size_t>(m_looGroup[static_cast<size_t>(k)])];
+		return k;
+	};
+	for (size_t k = 0; k < nc; k++)
+		for (size_t l = k + 1; l < nc; l++)
+		{
+			const CircleFit &ck = reference.roundThing(static_cast<int32_t>(k)).circle,
+							&cl = reference.roundThing(static_cast<int32_t>(l)).circle;
+			if (std::hypot(ck.ox - cl.ox, ck.oy - cl.oy) < kRoundGroupDistance)
+				m_looGroup[static_cast<size_t>(root(static_cast<int32_t>(k)))] =
+					root(static_cast<int32_t>(l));
+		}
+	for (size_t k = 0; k < nc; k++) m_looGroup[k] = root(static_cast<int32_t>(k));
+	for (auto& pr : m_looOrder) pr.first = m_looGroup[static_cast<size_t>(pr.first)];
+	std::sort(m_looOrder.begin(), m_looOrder.end());
+	// Information that fixes every direction beyond kInventedMargin times
+	// what noisy normals invent along it (PointToLineCovariance::compute's
+	// test).
+	auto constrained = [](const Eigen::Matrix3d& information, const Eigen::Matrix3d& invent) {
+		const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(information);
+		const Eigen::Vector3d weakest = eig.eigenvectors().col(0);
+		return eig.eigenvalues()[0] >
+			PointToLineCovariance::kInventedMargin * weakest.dot(invent * weakest);
+	};
+	int32_t worst = -1;
+	double worstRatio = 1;
+	for (size_t i = 0; i < m_looOrder.size();)
+	{
+		size_t end = i;
+		while (end < m_looOrder.size() && m_looOrder[end].first == m_looOrder[i].first) end++;
+		const int32_t group = m_looOrder[i].first;
+		Eigen::Matrix3d Ak = Eigen::Matrix3d::Zero(), inventedK = Eigen::Matrix3d::Zero();
+		for (size_t r = i; r < end; r++)
+		{
+			const uint32_t j = m_looOrder[r].second;
+			Ak += m_looGradients[j] * m_looGradients[j].transpose();
+			inventedK += m_looInvented[j];
+		}
+		// Without the group, do the others still fix every direction of
+		// the motion (beyond PointToLineCovariance::kInventedMargin times
+		// what noisy normals invent), and know each at least
+		// 1 / kRoundShareOfInformation as well as the group does (the
+		// largest generalised eigenvalue of its information against
+		// theirs)? If not (a person walking along a corridor whose walls
+		// fix little along it), the estimate follows the group, its
+		// residuals stay small and nothing can tell a thing that moved
+		// from one that stood still: it is dropped. (A trunk among the
+		// orchard's dozens carries a small share.)
+		const Eigen::Matrix3d rest = A - Ak - (invented - inventedK);
+		bool alone = constrained(A - invented, invented) && !constrained(rest, invented - inventedK);
+		if (!alone && constrained(rest, invented - inventedK))
+		{
+			const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix3d> share(
+				Ak - inventedK, rest, Eigen::EigenvaluesOnly);
+			alone = !(share.eigenvalues().maxCoeff() <= kRoundShareOfInformation);
+		}
+		double ratio;
+		if (alone)
+			ratio = std::numeric_limits<double>::infinity();
+		else
+			ratio = leftOutGroupRatio(reference, current, x, D, i, end, group);
+		if (!(ratio <= worstRatio))
+		{
+			worstRatio = ratio;
+			worst = group;
+		}
+		i = end;
+	}
+	if (worst < 0) return false;
+	for (size_t k = 0; k < nc; k++)
+		if (m_looGroup[k] == worst) m_roundDropped[k] = 1;
 	return true;
 }
 
@@ -237,12 +483,30 @@ void IterativeDualCorrespondence::run(
 	// Converged, unless the caller changes the point sets once more at the
 	// point-to-line phase's end (then the iterations go on from there).
 	bool refined = false;
+	m_roundDropped.assign(reference.roundThings(), 0);
+	mrpt::math::TPose2D pointToLineStart = x;
 	auto settled = [&] {
+		// A round thing that the rest of the scan says has moved, or that
+		// alone fixes a direction, is dropped, and the point-to-line phase
+		// starts again without it from where it started (with these point
+		// sets): where the thing pulled the estimate, the lines may hold it
+		// (a corridor's walls along the corridor).
+		if (!dual && dropMovedRoundThing(reference, current, x, D))
+		{
+			x = pointToLineStart;
+			previousErrors.fill(-1);
+			m_closestHint.assign(current.size(), ReferencePolyline::kNoHint);
+			return false;
+		}
 		if (!dual && onConverged && !refined)
 		{
 			refined = true;
 			if (onConverged(x))
 			{
+				// New point sets: their round things are tested afresh, and
+				// a drop restarts from here.
+				m_roundDropped.assign(reference.roundThings(), 0);
+				pointToLineStart = x;
 				previousErrors.fill(-1);
 				m_closestHint.assign(current.size(), ReferencePolyline::kNoHint);
 				return false;
@@ -268,12 +532,14 @@ void IterativeDualCorrespondence::run(
 		if (dual && atMinima && pointToLine)
 		{
 			dual = false;
+			pointToLineStart = x;
 			previousErrors.fill(-1);
 			if (onPointToLine)
 			{
 				// The caller may change both point sets here.
 				onPointToLine(x);
 				m_closestHint.assign(current.size(), ReferencePolyline::kNoHint);
+				m_roundDropped.assign(reference.roundThings(), 0);
 			}
 		}
 
@@ -298,23 +564,13 @@ void IterativeDualCorrespondence::run(
 			{
 				m_closestHint[i] = hit.a;
 				m_cp.emplace_back(qx, qy, hit.x, hit.y);
-				// Point-to-line pairs need a line fitted to three points at
-				// least (a two-point edge whose neighbours both leave its
-				// line bridges two surfaces: a depth jump at long range that
-				// the breakpoint test let through) and whose direction is
-				// known: a line of a few noisy points close together has a
-				// random normal, and a wall's random normals constrain the
-				// motion along the wall that nothing constrains. (A large
-				// structure's short faces pair known less well:
-				// lineDirectionGate.)
-				const ReferencePolyline::LocalLine* L =
-					hit.a != hit.b ? &reference.localLine(hit.a) : nullptr;
-				if (L && L->hi - L->lo >= 2 &&
-					reference.directionSigma(hit.a) <=
-						params.lineDirectionGate(reference.segmentExtent(hit.a)))
+				PointToLinePair pair;
+				double distance;
+				if (pointToLinePair(reference, hit, static_cast<uint32_t>(i), qx, qy, m_roundDropped,
+						pair, distance))
 				{
-					m_lines.push_back({static_cast<uint32_t>(i), hit.a});
-					m_lineDistances.push_back(std::abs(L->nx * (qx - L->cx) + L->ny * (qy - L->cy)));
+					m_lines.push_back(pair);
+					m_lineDistances.push_back(distance);
 				}
 			}
 			// The range rule's pair must lie within D as well, so its window
@@ -374,7 +630,7 @@ void IterativeDualCorrespondence::run(
 		if (!dual)
 		{
 			double stepSigmas = 0;
-			if (!pointToLineStep(reference, current, x, stepSigmas))
+			if (!pointToLineStep(reference, current, m_lines, x, stepSigmas))
 			{
 				r.failureReason = "only " + std::to_string(m_lines.size()) +
 					" points lie near reference lines of three points or more: the motion is "

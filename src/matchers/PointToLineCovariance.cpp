@@ -1,5 +1,7 @@
 #include "featloc/matchers/PointToLineCovariance.h"
 
+#include <mrpt/core/bits_math.h>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -29,6 +31,33 @@ double PointToLineCovariance::residual(
 		(*gradient)[2] = nx * (-s * p.x - c * p.y) + ny * (c * p.x - s * p.y);
 	}
 	return L.nx * dx + L.ny * dy - L.tilt * along - L.bow * (along * along - L.meanAlong2);
+}
+
+double PointToLineCovariance::residual(
+	const mrpt::math::TPose2D& x, double c, double s, const ScanPoint& p,
+	const ReferencePolyline::RoundThing& thing, Eigen::Vector3d* gradient)
+{
+	// e = |q - o| - r, de/dq = the radial unit n.
+	const double qx = c * p.x - s * p.y + x.x, qy = s * p.x + c * p.y + x.y;
+	const double dx = qx - thing.circle.ox, dy = qy - thing.circle.oy;
+	const double d = std::max(std::hypot(dx, dy), 1e-12);
+	if (gradient)
+	{
+		const double nx = dx / d, ny = dy / d;
+		(*gradient)[0] = nx;
+		(*gradient)[1] = ny;
+		(*gradient)[2] = nx * (-s * p.x - c * p.y) + ny * (c * p.x - s * p.y);
+	}
+	return d - thing.circle.r;
+}
+
+double PointToLineCovariance::residual(const mrpt::math::TPose2D& x, double c, double s,
+	const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
+	const PointToLinePair& pair, Eigen::Vector3d* gradient)
+{
+	const ScanPoint& p = current[pair.current];
+	return pair.round >= 0 ? residual(x, c, s, p, reference.roundThing(pair.round), gradient)
+						   : residual(x, c, s, p, reference.localLine(pair.a), gradient);
 }
 
 void PointToLineCovariance::rangeDerivatives(
@@ -80,6 +109,74 @@ void PointToLineCovariance::rangeDerivatives(
 	}
 }
 
+void PointToLineCovariance::rangeDerivatives(const mrpt::math::TPose2D& x, const ScanPoint& p,
+	const ReferencePolyline::RoundThing& thing, const ReferencePolyline& reference,
+	std::vector<double>& dedz, Eigen::Matrix<double, 3, Eigen::Dynamic>* mixed)
+{
+	const CircleFit& circle = thing.circle;
+	const double c = std::cos(x.phi), s = std::sin(x.phi);
+	const double qx = c * p.x - s * p.y + x.x, qy = s * p.x + c * p.y + x.y;
+	const double ux = p.x / p.range, uy = p.y / p.range;  // the beam
+	const double rpx = -s * p.x - c * p.y, rpy = c * p.x - s * p.y;	 // d(R p)/dw
+	const double rux = c * ux - s * uy, ruy = s * ux + c * uy;	// R u
+	const double dx = qx - circle.ox, dy = qy - circle.oy;
+	const double d = std::max(std::hypot(dx, dy), 1e-12);
+	const double nx = dx / d, ny = dy / d;
+	// The radial unit turns by P v / d for a move v of q (or -v of the
+	// centre), P = I - n n^T; de/dx = (n, n.R'p).
+	auto turn = [&](double vx, double vy, double& tx, double& ty) {
+		const double along = nx * vx + ny * vy;
+		tx = (vx - along * nx) / d;
+		ty = (vy - along * ny) / d;
+	};
+	const size_t m = thing.hi - thing.lo + 1;
+	dedz.assign(1 + m, 0.0);
+	if (mixed) mixed->setZero(3, static_cast<Eigen::Index>(1 + m));
+	// Current point: it moves along its beam R u.
+	dedz[0] = nx * rux + ny * ruy;
+	if (mixed)
+	{
+		double tx, ty;
+		turn(rux, ruy, tx, ty);
+		(*mixed)(0, 0) = tx;
+		(*mixed)(1, 0) = ty;
+		(*mixed)(2, 0) = tx * rpx + ty * rpy + nx * (-s * ux - c * uy) + ny * (c * ux - s * uy);
+	}
+	// Reference points: through the circle's centre and radius, theta = (ox,
+	// oy, r), whose least squares make sum_j a_j f_j = 0 with a_j =
+	// df_j/dtheta = (-n_j, -1): d theta/dz_j = -(A^T A)^-1 a_j (n_j.u_j) to
+	// first order (CircleFit), and de/dtheta = (-n, -1).
+	const Eigen::Vector3d aq(-nx, -ny, -1);
+	for (size_t k = 0; k < m; k++)
+	{
+		const ScanPoint& pj = reference.point(static_cast<uint32_t>(thing.lo + k));
+		const double djx = pj.x - circle.ox, djy = pj.y - circle.oy;
+		const double dj = std::max(std::hypot(djx, djy), 1e-12);
+		const Eigen::Vector3d aj(-djx / dj, -djy / dj, -1);
+		const double radial = (djx * pj.x + djy * pj.y) / (dj * pj.range);
+		const Eigen::Vector3d dTheta = -circle.normalInverse * aj * radial;
+		dedz[1 + k] = aq.dot(dTheta);
+		if (mixed)
+		{
+			double tx, ty;
+			turn(-dTheta[0], -dTheta[1], tx, ty);
+			(*mixed)(0, static_cast<Eigen::Index>(1 + k)) = tx;
+			(*mixed)(1, static_cast<Eigen::Index>(1 + k)) = ty;
+			(*mixed)(2, static_cast<Eigen::Index>(1 + k)) = tx * rpx + ty * rpy;
+		}
+	}
+}
+
+double PointToLineCovariance::normalVariance(const mrpt::math::TPose2D& x, double c, double s,
+	const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
+	const PointToLinePair& pair)
+{
+	if (pair.round < 0) return mrpt::square(reference.directionSigma(pair.a));
+	const ScanPoint& p = current[pair.current];
+	return reference.roundNormalVariance(
+		pair.round, c * p.x - s * p.y + x.x, s * p.x + c * p.y + x.y);
+}
+
 bool PointToLineCovariance::compute(
 	const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
 	const std::vector<PointToLinePair>& pairs, const mrpt::math::TPose2D& x,
@@ -99,28 +196,48 @@ bool PointToLineCovariance::compute(
 	for (const auto& pr : pairs)
 	{
 		const ScanPoint& p = current[pr.current];
+		const bool round = pr.round >= 0;
 		const ReferencePolyline::LocalLine& L = reference.localLine(pr.a);
 		Eigen::Vector3d de;
-		const double e = residual(x, c, s, p, L, &de);
+		const double e = residual(x, c, s, current, reference, pr, &de);
 		J += e * e;
-		// d2J/dx2 = 2 sum (de de^T + e d2e/dx2); only d2e/dw2 = -n.(R p)
-		// is non-zero.
+		// d2J/dx2 = 2 sum (de de^T + e d2e/dx2); on a line only d2e/dw2 =
+		// -n.(R p) is non-zero; on a circle the radial unit n also turns
+		// as q moves, by P/d (P = I - n n^T, d = |q - o|): d2e/dx2 gains
+		// J_q^T P J_q / d, J_q = dq/dx = [I, R'p].
 		H += 2 * de * de.transpose();
-		H(2, 2) += 2 * e * -(L.nx * (c * p.x - s * p.y) + L.ny * (s * p.x + c * p.y));
-		// The line's normal is estimated: n^ = n - d t, d ~ N(0, s_a^2)
-		// its direction error, t = (ny, -nx) the line's direction. So de
-		// carries - d (t, t.R'p), and E[de de^T] exceeds the true term by
-		// s_a^2 (t, t.R'p)(t, t.R'p)^T: information that noisy normals
-		// invent, along walls above all. Taken out (errors in variables).
-		const double sa = reference.directionSigma(pr.a);
-		const Eigen::Vector3d dt(L.ny, -L.nx,
-			L.ny * (-s * p.x - c * p.y) - L.nx * (c * p.x - s * p.y));
-		invented += 2 * sa * sa * dt * dt.transpose();
+		const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;  // R p
+		const double nx = round ? de[0] : L.nx, ny = round ? de[1] : L.ny;
+		H(2, 2) += 2 * e * -(nx * rx + ny * ry);
+		// The surface's direction where the point pairs: the line's, or
+		// the circle's tangent at q.
+		const double tx = round ? -ny : L.ny, ty = round ? nx : -L.nx;
+		const Eigen::Vector3d dt(tx, ty, -tx * ry + ty * rx);  // (t, t.R'p), R'p = (-ry, rx)
+		if (round)
+		{
+			const auto& circle = reference.roundThing(pr.round).circle;
+			const double d = std::max(std::hypot(rx + x.x - circle.ox, ry + x.y - circle.oy), 1e-12);
+			H += 2 * e * dt * dt.transpose() / d;
+		}
+		// The surface's normal is estimated: n^ = n - d t, d ~ N(0, s_a^2)
+		// its direction error. So de carries - d (t, t.R'p), and E[de de^T]
+		// exceeds the true term by s_a^2 (t, t.R'p)(t, t.R'p)^T:
+		// information that noisy normals invent, along walls above all.
+		// Taken out (errors in variables).
+		invented += 2 * normalVariance(x, c, s, current, reference, pr) * dt * dt.transpose();
 		// d2J/(dx dz) = 2 (de/dx de/dz + e d2e/(dx dz)).
-		rangeDerivatives(x, p, L, reference, dedz, &mixed);
+		uint32_t lo = L.lo;
+		if (round)
+		{
+			const auto& thing = reference.roundThing(pr.round);
+			rangeDerivatives(x, p, thing, reference, dedz, &mixed);
+			lo = thing.lo;
+		}
+		else
+			rangeDerivatives(x, p, L, reference, dedz, &mixed);
 		g[pr.current] += 2 * (de * dedz[0] + e * mixed.col(0));
 		for (size_t k = 1; k < dedz.size(); k++)
-			g[nc + L.lo + k - 1] += 2 * (de * dedz[k] + e * mixed.col(static_cast<Eigen::Index>(k)));
+			g[nc + lo + k - 1] += 2 * (de * dedz[k] + e * mixed.col(static_cast<Eigen::Index>(k)));
 		for (double d : dedz) sensitivity += d * d;
 	}
 	H -= invented;

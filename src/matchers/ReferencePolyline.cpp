@@ -1,6 +1,9 @@
 #include "featloc/matchers/ReferencePolyline.h"
 
+#include "featloc/features/LineFit.h"
 #include "featloc/features/PointScatter.h"
+
+#include <mrpt/math/distributions.h>
 
 #include <mrpt/core/bits_math.h>
 
@@ -28,7 +31,8 @@ ReferencePolyline::Query::Query(double qx, double qy)
 }
 
 void ReferencePolyline::build(const ScanPoints& s, const std::vector<ScanSegment>& segments,
-	unsigned int lineHalfWindow, double targetDirectionSigma, double bowSigmas)
+	unsigned int lineHalfWindow, double targetDirectionSigma, double bowSigmas,
+	double circleSigmas, double roundExtent)
 {
 	m_points.clear();
 	m_joined.clear();
@@ -153,6 +157,11 @@ void ReferencePolyline::build(const ScanPoints& s, const std::vector<ScanSegment
 			L.hi = hi;
 			if (bowSigmas > 0 && hi - lo + 1 >= kLeastBowPoints) fitBow(L, noise, bowSigmas);
 		}
+	m_round.clear();
+	m_roundOf.assign(m_points.size(), -1);
+	if (circleSigmas > 0)
+		for (const auto& seg : m_segments)
+			fitRound(seg, std::max(1e-3, m_rangeNoise), circleSigmas, roundExtent);
 }
 
 void ReferencePolyline::fitBow(LocalLine& L, double rangeNoise, double bowSigmas) const
@@ -203,6 +212,39 @@ double ReferencePolyline::directionSigma(uint32_t i) const
 {
 	const double gap = m_lines[i].gap;
 	return gap > 0 ? std::max(1e-3, m_rangeNoise) / std::sqrt(gap) : M_PI;
+}
+
+void ReferencePolyline::fitRound(
+	const ScanSegment& seg, double rangeNoise, double circleSigmas, double roundExtent)
+{
+	const uint32_t n = seg.last - seg.first + 1;
+	if (n < kLeastCirclePoints || m_segmentExtent[seg.first] >= roundExtent) return;
+	const ScanPoint* p = &m_points[seg.first];
+	CircleFit circle;
+	if (!CircleFit::fit(p, n, roundExtent, circle)) return;
+	// Convex towards the sensor: the centre lies beyond the middle point.
+	const ScanPoint& mid = p[n / 2];
+	if (std::hypot(circle.ox, circle.oy) <= mid.range) return;
+	// The circle against the line: one parameter more (the curvature),
+	// worth circleSigmas of the noise; and the circle within the noise.
+	const LineFit line = LineFit::fit(p, n);
+	const double noise2 = rangeNoise * rangeNoise;
+	const double lineSquares = static_cast<double>(n) * line.sigma * line.sigma;
+	if (lineSquares - circle.sumSquares < circleSigmas * circleSigmas * noise2) return;
+	if (circle.sumSquares > noise2 * mrpt::math::chi2inv(0.999, n - 3)) return;
+	const auto k = static_cast<int32_t>(m_round.size());
+	m_round.push_back({circle, seg.first, seg.last});
+	for (uint32_t a = seg.first; a < seg.last; a++) m_roundOf[a] = k;
+}
+
+double ReferencePolyline::roundNormalVariance(int32_t k, double qx, double qy) const
+{
+	const CircleFit& circle = m_round[static_cast<size_t>(k)].circle;
+	const double dx = qx - circle.ox, dy = qy - circle.oy;
+	const double d2 = std::max(dx * dx + dy * dy, 1e-12);
+	const double d = std::sqrt(d2);
+	// The normal turns with the centre's displacement across it.
+	return circle.centreVariance(-dy / d, dx / d, std::max(1e-3, m_rangeNoise)) / d2;
 }
 
 size_t ReferencePolyline::firstAtOrAfter(double bearing) const

@@ -148,6 +148,17 @@ class IterativeDualCorrespondence
 		 * bowSigmas): on a curved wall a chord biases the heading; 0 = off
 		 * (straight lines only, as until 2026-12-03). */
 		double line_bow_sigmas = 3.0;
+		/** point_to_line: a segment shorter than face_segment_extent whose
+		 * points a circle fits better than a line by more than this many
+		 * sigmas of their noise (and within it) is a small round thing (a
+		 * trunk, a pole, a leg): its points' residual is their distance
+		 * from the circle (ReferencePolyline::build's circleSigmas), and
+		 * they pair whatever their local lines' direction sigma. A
+		 * trunk's four to eight points give lines known to 8 deg or
+		 * worse, which max_line_direction_sigma left unpaired (the
+		 * orchard: doc/benchmarks.md, "Issue 15, thirty-second
+		 * session"). 0 = off (lines only, as until 2026-12-04). */
+		double circle_fit_sigmas = 3.0;
 		/** The target ReferencePolyline::build grows local lines to [rad]. */
 		double lineTargetDirectionSigma() const
 		{
@@ -211,6 +222,19 @@ class IterativeDualCorrespondence
 		const mrpt::math::TPose2D& x, double maxDistance);
 
 	Parameters params;
+	/** [m] Round things this close (centre to centre) are tested as one
+	 * (dropMovedRoundThing): a person's legs stand 0.1-0.4 m apart. */
+	static constexpr double kRoundGroupDistance = 1.0;
+	/** A group of round things may carry at most this many times the
+	 * information of all the other pairs along any direction of the
+	 * motion (dropMovedRoundThing): with 4 the others alone know each
+	 * direction to at most sqrt(5) = 2.2 times the sigma of all together,
+	 * enough for a moved group to show in their residuals. (1 and 2 cost
+	 * the orchard 0.6-0.9 points of flagged pairs, where two near trunks
+	 * share the motion along the rows; 1-4 give the corridor with people
+	 * the same figures: doc/benchmarks.md, "Issue 15, thirty-second
+	 * session".) */
+	static constexpr double kRoundShareOfInformation = 4.0;
 	/** [m] The range lattice's cell q / sqrt(12) of the scans matched (0:
 	 * none; set by the matcher per match): it floors the range noise of
 	 * the readings put back on their surfaces, whose errors are shared
@@ -219,15 +243,58 @@ class IterativeDualCorrespondence
 	double rangeLatticeCellSigma = 0;
 
    private:
-	/** One Gauss-Newton step on the point-to-line error of the
-	 * closest-point pairs on edges (m_lines, paired at x); false when it
+	/** One Gauss-Newton step on the point-to-line error of `pairs`
+	 * (closest-point pairs made at x); false when it
 	 * cannot be taken. `stepSigmas`: the step's length in standard
 	 * deviations of the estimate. */
-	bool pointToLineStep(
-		const ReferencePolyline& reference, const std::vector<ScanPoint>& current,
-		mrpt::math::TPose2D& x, double& stepSigmas) const;
+	static bool pointToLineStep(const ReferencePolyline& reference,
+		const std::vector<ScanPoint>& current, const std::vector<PointToLinePair>& pairs,
+		mrpt::math::TPose2D& x, double& stepSigmas);
+	/** The point-to-line phase's pair for current point i at (qx, qy) in
+	 * the reference frame, whose closest point is `hit`: with the circle
+	 * of the round thing it lies on (unless skipRound marks it), else with
+	 * its edge's local line if that passes the gates; false for none.
+	 * `distance`: the point's from that surface. */
+	bool pointToLinePair(const ReferencePolyline& reference, const ReferencePolyline::Hit& hit,
+		uint32_t i, double qx, double qy, const std::vector<char>& skipRound, PointToLinePair& pair,
+		double& distance) const;
+
+	/** At the point-to-line phase's convergence, the round things
+	 * (ReferencePolyline::circle) that may have moved are dropped: a
+	 * walking person's legs are round things too. Things whose centres lie
+	 * within kRoundGroupDistance of each other are one group (legs, people
+	 * side by side). A group without which some direction of the motion
+	 * is unconstrained (its information within
+	 * PointToLineCovariance::kInventedMargin of what noisy normals
+	 * invent), or that carries more than kRoundShareOfInformation times the
+	 * others' information along one, cannot be told from a static one and
+	 * goes first; else the group
+	 * whose current points least agree with the estimate the other pairs
+	 * give (chi^2 of their residuals there, against the points' noise,
+	 * their circles' fits and that estimate's covariance, above the 99.9%
+	 * quantile). One group per call, marked in m_roundDropped: true if one
+	 * was (the iterations then go on without it). */
+	bool dropMovedRoundThing(const ReferencePolyline& reference,
+		const std::vector<ScanPoint>& current, const mrpt::math::TPose2D& x, double D);
+	/** dropMovedRoundThing's test of one group (the pairs
+	 * m_looOrder[first, end), of group `group` in m_looGroup): the
+	 * point-to-line phase from x without it, pairs within D, for up to
+	 * kLeftOutIterations steps; the chi^2 of its points' residuals there
+	 * over its 99.9% quantile (infinity when the others leave a direction
+	 * unconstrained). */
+	double leftOutGroupRatio(const ReferencePolyline& reference,
+		const std::vector<ScanPoint>& current, const mrpt::math::TPose2D& x, double D, size_t first,
+		size_t end, int32_t group);
+	static constexpr unsigned int kLeftOutIterations = 10;
 
 	std::vector<PointToLinePair> m_lines;  // reused buffers
+	std::vector<char> m_roundDropped;  //!< per circle of the reference
+	std::vector<Eigen::Vector3d> m_looGradients;
+	std::vector<Eigen::Matrix3d> m_looInvented;
+	std::vector<int32_t> m_looGroup;  //!< per round thing, its group's label
+	std::vector<char> m_looSkip;
+	std::vector<PointToLinePair> m_looPairs;
+	std::vector<std::pair<int32_t, uint32_t>> m_looOrder;  //!< (circle, pair)
 	std::vector<double> m_lineDistances, m_scratch;
 	std::vector<Eigen::Vector4d> m_cp, m_mrp;  // (q, matched point)
 	std::vector<double> m_ranges;

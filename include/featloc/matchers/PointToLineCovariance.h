@@ -11,11 +11,13 @@
 namespace featloc
 {
 /** A current point paired with the local line of the reference edge
- * (a, a + 1) (ReferencePolyline::LocalLine). */
+ * (a, a + 1) (ReferencePolyline::LocalLine), or with the circle of the
+ * round thing that edge lies on (ReferencePolyline::RoundThing). */
 struct PointToLinePair
 {
 	uint32_t current = 0;  //!< index into the current points
 	uint32_t a = 0;	 //!< edge start in the ReferencePolyline
+	int32_t round = -1;	 //!< >= 0: the round thing whose circle it pairs with
 };
 
 /** The point-to-line error of a motion and its closed-form covariance
@@ -60,12 +62,34 @@ class PointToLineCovariance
 		const mrpt::math::TPose2D& x, double cosPhi, double sinPhi, const ScanPoint& p,
 		const ReferencePolyline::LocalLine& L, Eigen::Vector3d* gradient = nullptr);
 
+	/** The same on a round thing's circle: e = |q - o| - r. */
+	static double residual(
+		const mrpt::math::TPose2D& x, double cosPhi, double sinPhi, const ScanPoint& p,
+		const ReferencePolyline::RoundThing& thing, Eigen::Vector3d* gradient = nullptr);
+	/** The pair's residual, on its line or its circle. */
+	static double residual(const mrpt::math::TPose2D& x, double cosPhi, double sinPhi,
+		const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
+		const PointToLinePair& pair, Eigen::Vector3d* gradient = nullptr);
+	/** The variance of the direction of the pair's normal [rad^2]: its
+	 * line's directionSigma()^2, or its circle's
+	 * (ReferencePolyline::roundNormalVariance) where the point lies. */
+	static double normalVariance(const mrpt::math::TPose2D& x, double cosPhi, double sinPhi,
+		const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
+		const PointToLinePair& pair);
+
 	/** de/dz for the current point's range (first) and for each point
 	 * lo..hi of L (following), analytic; for tests and compute(). Also
 	 * d(de/dx)/dz in `mixed` (3 x (1 + points)) when given. */
 	static void rangeDerivatives(
 		const mrpt::math::TPose2D& x, const ScanPoint& p,
 		const ReferencePolyline::LocalLine& L, const ReferencePolyline& reference,
+		std::vector<double>& dedz, Eigen::Matrix<double, 3, Eigen::Dynamic>* mixed = nullptr);
+	/** The same on a round thing's circle, for each of its points lo..hi:
+	 * the reference ranges act through the circle's fit, d(ox, oy, r)/dz_j
+	 * = -(A^T A)^-1 a_j (n_j.u_j) (CircleFit), and de/d(ox, oy, r) = (-n,
+	 * -1). */
+	static void rangeDerivatives(const mrpt::math::TPose2D& x, const ScanPoint& p,
+		const ReferencePolyline::RoundThing& thing, const ReferencePolyline& reference,
 		std::vector<double>& dedz, Eigen::Matrix<double, 3, Eigen::Dynamic>* mixed = nullptr);
 
 	/** Errors in variables: each local line's normal is itself estimated
@@ -86,11 +110,15 @@ class PointToLineCovariance
 	 * more (the pairs do not constrain the motion); `information` receives
 	 * H either way. */
 	static constexpr double kInventedMargin = 2.0;
+	/** Pairs with round things (PointToLinePair::round) count alike: e =
+	 * |q - o| - r, the reference ranges acting through the circle's fit,
+	 * and the normal's variance through its centre's. */
 	static constexpr double kUnconstrainedVariance = 1e4;  //!< [m^2 or rad^2]
 	static bool compute(
 		const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
 		const std::vector<PointToLinePair>& pairs, const mrpt::math::TPose2D& x,
 		double minSigma, double latticeCellSigma, Eigen::Matrix3d& cov, double& sigma,
 		Eigen::Matrix3d& information);
+
 };
 }  // namespace featloc

@@ -1,7 +1,9 @@
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
+#include "featloc/features/CircleFit.h"
 #include "featloc/scan/PointNoiseEstimator.h"
 #include "featloc/scan/ScanPoints.h"
 #include "featloc/scan/ScanSegment.h"
@@ -81,13 +83,31 @@ class ReferencePolyline
 	 * line is a chord, offset from the arc by a sagitta that depends on
 	 * where along it a point lies; points paired with chords biased the
 	 * heading, with residuals too small to show it (doc/benchmarks.md,
-	 * "Issue 15, thirtieth session"). */
+	 * "Issue 15, thirtieth session").
+	 *
+	 * With circleSigmas > 0 a segment shorter than roundExtent (first to
+	 * last point) of kLeastCirclePoints or more is a small round thing
+	 * when a circle (CircleFit, radius at most roundExtent) fits its
+	 * points better than a line by more than circleSigmas of the points'
+	 * noise (the sums of squares differ by circleSigmas^2 rangeNoise()^2
+	 * or more: the arc's curvature stands out), fits them within that
+	 * noise (chi^2 of n - 3 degrees of freedom at 99.9%), and turns its
+	 * convex side to the sensor (the centre beyond the points: an arc of
+	 * range-lattice levels, centred on the sensor, is not one). Its edges
+	 * then lie on a RoundThing (roundOf) as well as on their lines: a trunk's
+	 * four to eight points leave a line's direction unknown to 8 degrees
+	 * or more, and IDC left them unpaired (doc/benchmarks.md, "Issue 15,
+	 * twenty-ninth session", the orchard). */
 	void build(const ScanPoints& points, const std::vector<ScanSegment>& segments,
-		unsigned int lineHalfWindow = 6, double targetDirectionSigma = 0, double bowSigmas = 0);
+		unsigned int lineHalfWindow = 6, double targetDirectionSigma = 0, double bowSigmas = 0,
+		double circleSigmas = 0, double roundExtent = 1.0);
 	static constexpr unsigned int kLongestLineFactor = 8;
 	/** The bow of fewer points is not fitted (a quadratic term of four
 	 * points is mostly their noise). */
 	static constexpr uint32_t kLeastBowPoints = 5;
+	/** A round thing has this many points at least: three fix any circle,
+	 * two more test it. */
+	static constexpr uint32_t kLeastCirclePoints = 5;
 
 	size_t size() const { return m_points.size(); }
 	const ScanPoint& point(uint32_t i) const { return m_points[i]; }
@@ -108,6 +128,26 @@ class ReferencePolyline
 	 * [m]: a large structure's segment (a wall with its recesses) against
 	 * a small isolated thing's (a leg, a trunk, a pole). */
 	double segmentExtent(uint32_t i) const { return m_segmentExtent[i]; }
+	/** A small round thing (build's circleSigmas): a segment's circle and
+	 * its points lo..hi, the points fitted. */
+	struct RoundThing
+	{
+		CircleFit circle;
+		uint32_t lo = 0, hi = 0;
+		/** |offset of (x, y) from the circle| [m]. */
+		double distance(double x, double y) const
+		{
+			return std::abs(std::hypot(x - circle.ox, y - circle.oy) - circle.r);
+		}
+	};
+	/** The round thing edge i lies on, or -1 (a line's). */
+	int32_t roundOf(uint32_t i) const { return m_roundOf[i]; }
+	const RoundThing& roundThing(int32_t k) const { return m_round[static_cast<size_t>(k)]; }
+	size_t roundThings() const { return m_round.size(); }
+	/** The variance of the direction of round thing k's normal at (qx,
+	 * qy) [rad^2]: its centre's variance across the radius through q
+	 * (with the range noise) over q's squared distance from the centre. */
+	double roundNormalVariance(int32_t k, double qx, double qy) const;
 
 
 	/** A query point with its polar coordinates (computed once, used by
@@ -131,6 +171,9 @@ class ReferencePolyline
 	/** LocalLine::tilt and bow of L where its points bow (build's
 	 * bowSigmas), against their noise across it from rangeNoise. */
 	void fitBow(LocalLine& L, double rangeNoise, double bowSigmas) const;
+	/** The RoundThing of segment `seg` when it is one (build's
+	 * circleSigmas), kept in m_round and named by its edges in m_roundOf. */
+	void fitRound(const ScanSegment& seg, double rangeNoise, double circleSigmas, double roundExtent);
 	/** Visits the points and edges outwards from `bearing` on both sides:
 	 * visit(a, b, minDelta) for a point (a == b) or the edge (a, b), with
 	 * the smallest bearing distance of that item from `bearing`; a side
@@ -156,6 +199,8 @@ class ReferencePolyline
 	};
 	std::vector<Edge> m_edges;
 	std::vector<LocalLine> m_lines;
+	std::vector<RoundThing> m_round;
+	std::vector<int32_t> m_roundOf;	 // per point (edge), -1: none
 	std::vector<ScanSegment> m_segments;  // of m_points
 	std::vector<double> m_segmentExtent;  // per point, segmentExtent()
 	PointNoiseEstimator m_noise;
