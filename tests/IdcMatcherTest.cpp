@@ -84,6 +84,28 @@ CPose2D poseAlongRoute(const std::vector<std::vector<double>>& route, size_t leg
 	return CPose2D(ax + f * (bx - ax), ay + f * (by - ay), std::atan2(by - ay, bx - ax));
 }
 
+/** rangeDerivatives' de/dz (`dedz`) and d(de/dx)/dz (`mixed`) against
+ * central differences of evaluate(z, h, gradient) -> residual, the
+ * residual and its gradient with range z moved by h: within `tolerance`
+ * (ten times that for the gradient's). */
+template <typename Evaluate>
+void expectCentralDifferences(const std::vector<double>& dedz,
+	const Eigen::Matrix<double, 3, Eigen::Dynamic>& mixed, Evaluate&& evaluate, double tolerance,
+	const std::string& what)
+{
+	for (size_t k = 0; k < dedz.size(); k++)
+	{
+		const double h = 1e-6;
+		Eigen::Vector3d gp, gm;
+		const double ep = evaluate(k, h, gp), em = evaluate(k, -h, gm);
+		EXPECT_NEAR(dedz[k], (ep - em) / (2 * h), tolerance) << what << " z " << k;
+		const Eigen::Vector3d numeric = (gp - gm) / (2 * h);
+		for (int r = 0; r < 3; r++)
+			EXPECT_NEAR(mixed(r, static_cast<Eigen::Index>(k)), numeric[r], 10 * tolerance)
+				<< what << " z " << k << " row " << r;
+	}
+}
+
 const char* kIdcAsPublished = "final_phase=idc";
 const char* kCfIdcAsPublished =
 	"final_phase=idc\npairing_gate=false\npairing_fallback=false\nsegment_gate=0\ncurvature_sampling=normalized";
@@ -213,17 +235,7 @@ TEST(PointToLineCovariance, RangeDerivativesEqualFiniteDifferences)
 			EXPECT_EQ(L2.hi, L.hi);
 			return PointToLineCovariance::residual(x, c, s, q, L2, &grad);
 		};
-		for (size_t k = 0; k < dedz.size(); k++)
-		{
-			const double h = 1e-6;
-			Eigen::Vector3d gp, gm;
-			const double ep = evaluate(k, h, gp), em = evaluate(k, -h, gm);
-			EXPECT_NEAR(dedz[k], (ep - em) / (2 * h), 1e-6) << "edge " << a << " z " << k;
-			const Eigen::Vector3d numeric = (gp - gm) / (2 * h);
-			for (int r = 0; r < 3; r++)
-				EXPECT_NEAR(mixed(r, static_cast<Eigen::Index>(k)), numeric[r], 1e-5)
-					<< "edge " << a << " z " << k << " row " << r;
-		}
+		expectCentralDifferences(dedz, mixed, evaluate, 1e-6, "edge " + std::to_string(a));
 		checked++;
 	}
 	EXPECT_GT(checked, 10);
@@ -1250,18 +1262,8 @@ TEST(PointToLineCovariance, RoundThingRangeDerivativesEqualFiniteDifferences)
 			EXPECT_GE(k2, 0);
 			return PointToLineCovariance::residual(x, c, s, q, poly2.roundThing(k2), &grad);
 		};
-		for (size_t j = 0; j < dedz.size(); j++)
-		{
-			const double h = 1e-6;
-			Eigen::Vector3d gp, gm;
-			const double ep = evaluate(j, h, gp), em = evaluate(j, -h, gm);
-			// (The circle's fit converges to 1e-10 m: a relative 1e-5 here.)
-			EXPECT_NEAR(dedz[j], (ep - em) / (2 * h), 1e-5) << "thing " << k << " z " << j;
-			const Eigen::Vector3d numeric = (gp - gm) / (2 * h);
-			for (int r = 0; r < 3; r++)
-				EXPECT_NEAR(mixed(r, static_cast<Eigen::Index>(j)), numeric[r], 1e-4)
-					<< "thing " << k << " z " << j << " row " << r;
-		}
+		// (The circle's fit converges to 1e-10 m: a relative 1e-5 here.)
+		expectCentralDifferences(dedz, mixed, evaluate, 1e-5, "thing " + std::to_string(k));
 	}
 }
 
