@@ -1354,8 +1354,10 @@ TEST(IdcMatcher, WalkingLegsDoNotPullTheMatchAlongACorridor)
 					<< cls << (withPosts ? " with the posts" : " without posts") << ": silently "
 					<< off << " m off";
 				if (withPosts)
+				{
 					EXPECT_TRUE(r.success && !r.ambiguous && off < 0.02)
 						<< cls << ": " << r.failureReason << r.ambiguityReason << " " << off;
+				}
 			}
 		}
 	}
