@@ -922,6 +922,20 @@ TEST(CfIdcMatcher, ParametersRoundTripAndBadValuesNameTheKey)
 	const std::string msg = test::errorMessageOf<ConfigError>([&] { back.loadFromConfigFile(bad, "S"); });
 	EXPECT_NE(msg.find("curvature_length"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("power of two"), std::string::npos) << msg;
+
+	p.idc.circle_fit_sigmas = 2.5;
+	mrpt::config::CConfigFileMemory circles;
+	p.saveToConfigFile(circles, "S");
+	TrackedConfig withCircles;
+	withCircles.loadText(circles.getContent(), "saved.ini");
+	back.loadFromConfigFile(withCircles, "S");
+	EXPECT_NEAR(back.idc.circle_fit_sigmas, 2.5, 1e-12);
+	TrackedConfig negative;
+	negative.loadText("[S]\ncircle_fit_sigmas = -1\n", "bad.ini");
+	const std::string why =
+		test::errorMessageOf<ConfigError>([&] { back.loadFromConfigFile(negative, "S"); });
+	EXPECT_NE(why.find("circle_fit_sigmas"), std::string::npos) << why;
+	EXPECT_NE(why.find("bad.ini"), std::string::npos) << why;
 }
 
 // The curvature stage itself (CF-SMA2), in the paper's configuration (no
