@@ -254,7 +254,23 @@ sim_corridor_seeds() {
         --seed "$seed" -q > /dev/null
   done
 }
-# Issue 15's benches of one switch (bench-line-bow.sh, bench-face-lines.sh):
+# The setting of issue 15's benches of one switch (bench-line-bow.sh,
+# bench-face-lines.sh, bench-round-things.sh): PCM, IDC and CF-IDC as
+# config.ini has them and MRPT's ICP (M), Borges & Aldon's protocol, seed 1
+# (COMMON), the switch KEY set to 0 in [ScanMatcher.IdcMatcher] and
+# [ScanMatcher.CfIdcMatcher] as the other way (OFF, named OFF_NAME), and
+# `bench` as switch_bench.
+switch_setup() { # key, name of the other way
+  M="PCM=featloc::PcmFeatureMatcher,IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcMatcher"
+  M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
+  COMMON="--seed 1 -q --paired-with none --perturb-xy 0.3 --perturb-yaw-deg 10"
+  OFF=(--set "ScanMatcher.IdcMatcher:$1=0" --set "ScanMatcher.CfIdcMatcher:$1=0")
+  OFF_NAME="$2"
+  HEADER=--header
+  BOUNDED=()
+  bench() { switch_bench "$@"; }
+}
+# Issue 15's benches of one switch (bench-line-bow.sh, bench-face-lines.sh, bench-round-things.sh):
 # each data set run as config.ini has it ("NAME") and with the caller's OFF
 # array of --set options ("NAME, $OFF_NAME"); with --world also the
 # Cramer-Rao table of each and every pair's outcome and bound, the names

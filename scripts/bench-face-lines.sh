@@ -29,15 +29,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-face-lines "$@"
 
-M="PCM=featloc::PcmFeatureMatcher,IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcMatcher"
-M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
-COMMON="--seed 1 -q --paired-with none --perturb-xy 0.3 --perturb-yaw-deg 10"
-OFF=(--set "ScanMatcher.IdcMatcher:max_face_direction_sigma_DEG=0"
-  --set "ScanMatcher.CfIdcMatcher:max_face_direction_sigma_DEG=0")
-OFF_NAME="one gate"
-HEADER=--header
-BOUNDED=()
-bench() { switch_bench "$@"; }
+switch_setup max_face_direction_sigma_DEG "one gate"
 
 machine_line
 echo

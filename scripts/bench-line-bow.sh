@@ -28,14 +28,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-line-bow "$@"
 
-M="PCM=featloc::PcmFeatureMatcher,IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcMatcher"
-M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
-COMMON="--seed 1 -q --paired-with none --perturb-xy 0.3 --perturb-yaw-deg 10"
-OFF=(--set "ScanMatcher.IdcMatcher:line_bow_sigmas=0" --set "ScanMatcher.CfIdcMatcher:line_bow_sigmas=0")
-OFF_NAME="straight lines"
-HEADER=--header
-BOUNDED=()
-bench() { switch_bench "$@"; }
+switch_setup line_bow_sigmas "straight lines"
 
 machine_line
 echo

@@ -31,15 +31,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-round-things "$@"
 
-M="PCM=featloc::PcmFeatureMatcher,IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcMatcher"
-M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
-COMMON="--seed 1 -q --paired-with none --perturb-xy 0.3 --perturb-yaw-deg 10"
-OFF=(--set "ScanMatcher.IdcMatcher:circle_fit_sigmas=0"
-  --set "ScanMatcher.CfIdcMatcher:circle_fit_sigmas=0")
-OFF_NAME="lines only"
-HEADER=--header
-BOUNDED=()
-bench() { switch_bench "$@"; }
+switch_setup circle_fit_sigmas "lines only"
 
 machine_line
 echo

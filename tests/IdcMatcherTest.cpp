@@ -84,6 +84,27 @@ CPose2D poseAlongRoute(const std::vector<std::vector<double>>& route, size_t leg
 	return CPose2D(ax + f * (bx - ax), ay + f * (by - ay), std::atan2(by - ay, bx - ax));
 }
 
+/** One pair matched by each of `matchers` from `guess`: per matcher, the
+ * matches whose reason names a direction "unconstrained" and the right
+ * ones (a success not flagged, within 2 cm and 0.2 deg of `motion`) are
+ * counted in unconstrained[k] and right[k]. */
+void tallyTwoWays(std::initializer_list<ScanMatcher*> matchers,
+	const mrpt::obs::CObservation2DRangeScan& ref, const mrpt::obs::CObservation2DRangeScan& cur,
+	const mrpt::poses::CPosePDFGaussian& guess, const CPose2D& motion, int* unconstrained, int* right)
+{
+	int k = 0;
+	for (ScanMatcher* m : matchers)
+	{
+		const MatchResult r = m->match(ref, cur, guess);
+		const std::string why = r.failureReason + r.ambiguityReason;
+		if (why.find("unconstrained") != std::string::npos) unconstrained[k]++;
+		const Eigen::Vector3d e = errorOf(r, motion);
+		if (r.success && !r.ambiguous && e.head<2>().norm() < 0.02 && std::abs(e[2]) < mrpt::DEG2RAD(0.2))
+			right[k]++;
+		k++;
+	}
+}
+
 /** rangeDerivatives' de/dz (`dedz`) and d(de/dx)/dz (`mixed`) against
  * central differences of evaluate(z, h, gradient) -> residual, the
  * residual and its gradient with range z moved by h: within `tolerance`
@@ -1148,17 +1169,7 @@ TEST(IdcMatcher, ADoorRecesssJambsFixTheMotionAlongARingCorridor)
 			motion.y() + 0.01 * rng.drawGaussian1D_normalized(),
 			motion.phi() + mrpt::DEG2RAD(0.5) * rng.drawGaussian1D_normalized());
 		const auto g = diagonalPoseGaussian(guess, 0.05, mrpt::DEG2RAD(3.0));
-		int k = 0;
-		for (const auto* m : {&oneGate, &faces})
-		{
-			const MatchResult r = (*m)->match(*ref, *cur, g);
-			const std::string why = r.failureReason + r.ambiguityReason;
-			if (why.find("unconstrained") != std::string::npos) unconstrained[k]++;
-			const Eigen::Vector3d e = errorOf(r, motion);
-			if (r.success && !r.ambiguous && e.head<2>().norm() < 0.02 && std::abs(e[2]) < mrpt::DEG2RAD(0.2))
-				right[k]++;
-			k++;
-		}
+		tallyTwoWays({oneGate.get(), faces.get()}, *ref, *cur, g, motion, unconstrained, right);
 	}
 	EXPECT_GT(unconstrained[0], trials / 20) << "one gate: the jambs left out";
 	EXPECT_LT(unconstrained[1], unconstrained[0] / 3) << unconstrained[1] << " against " << unconstrained[0];
@@ -1309,17 +1320,7 @@ TEST(IdcMatcher, TrunksFixTheMotionAlongAnOrchardRow)
 			motion.phi() + mrpt::DEG2RAD(rng.drawUniform(-10.0, 10.0)));
 		const double a = 1 / std::sqrt(3.0);  // a uniform draw's sigma
 		const auto g = diagonalPoseGaussian(guess, 0.3 * a, mrpt::DEG2RAD(10.0) * a);
-		int k = 0;
-		for (const auto* m : {&lines, &circles})
-		{
-			const MatchResult r = (*m)->match(*ref, *cur, g);
-			const std::string why = r.failureReason + r.ambiguityReason;
-			if (why.find("unconstrained") != std::string::npos) unconstrained[k]++;
-			const Eigen::Vector3d e = errorOf(r, motion);
-			if (r.success && !r.ambiguous && e.head<2>().norm() < 0.02 && std::abs(e[2]) < mrpt::DEG2RAD(0.2))
-				right[k]++;
-			k++;
-		}
+		tallyTwoWays({lines.get(), circles.get()}, *ref, *cur, g, motion, unconstrained, right);
 	}
 	EXPECT_GT(unconstrained[0], trials / 4) << "lines only: the trunks left out";
 	EXPECT_LT(unconstrained[1], unconstrained[0] / 3) << unconstrained[1] << " against " << unconstrained[0];

@@ -271,22 +271,14 @@ double IterativeDualCorrespondence::leftOutGroupRatio(const ReferencePolyline& r
 	Eigen::Matrix3d A = Eigen::Matrix3d::Zero(), invented = Eigen::Matrix3d::Zero();
 	for (const auto& pr : pairs)
 	{
-		const ScanPoint& p = current[pr.current];
-		const ReferencePolyline::LocalLine& L = reference.localLine(pr.a);
 		Eigen::Vector3d g;
 		PointToLineCovariance::residual(xk, c, s, current, reference, pr, &g);
-		const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
-		const double tx = pr.round >= 0 ? -g[1] : L.ny, ty = pr.round >= 0 ? g[0] : -L.nx;
-		const Eigen::Vector3d dt(tx, ty, -tx * ry + ty * rx);
 		A += g * g.transpose();
-		invented += PointToLineCovariance::normalVariance(xk, c, s, current, reference, pr) * dt *
-			dt.transpose();
+		invented += PointToLineCovariance::inventedInformation(xk, c, s, current, reference, pr, g);
 	}
-	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A - invented);
-	const Eigen::Vector3d weakest = eig.eigenvectors().col(0);
-	if (!(eig.eigenvalues()[0] >
-			PointToLineCovariance::kInventedMargin * weakest.dot(invented * weakest)))
+	if (!PointToLineCovariance::fixesEveryDirection(A - invented, invented))
 		return std::numeric_limits<double>::infinity();
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A - invented);
 	const Eigen::Matrix3d others = eig.eigenvectors() *
 		eig.eigenvalues().cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
 	// The group's points (as paired at x) at that estimate, against their
@@ -321,7 +313,9 @@ bool IterativeDualCorrespondence::dropMovedRoundThing(
 	const ReferencePolyline& reference, const std::vector<ScanPoint>& current,
 	const mrpt::math::TPose2D& x, double D)
 {
-	if (reference.roundThings() == 0 || m_lines.size() < 3) return false;
+	if (m_lines.size() < 3 ||
+		std::none_of(m_lines.begin(), m_lines.end(), [](const PointToLinePair& pr) { return pr.round >= 0; }))
+		return false;
 	const double c = std::cos(x.phi), s = std::sin(x.phi);
 	// The information of every pair at x (pointToLineStep's normal
 	// equations) with what noisy normals invent (PointToLineCovariance),
@@ -334,23 +328,13 @@ bool IterativeDualCorrespondence::dropMovedRoundThing(
 	for (size_t j = 0; j < n; j++)
 	{
 		const PointToLinePair& pr = m_lines[j];
-		const ScanPoint& p = current[pr.current];
-		const ReferencePolyline::LocalLine& L = reference.localLine(pr.a);
-		Eigen::Vector3d g;
+		Eigen::Vector3d& g = m_looGradients[j];
 		PointToLineCovariance::residual(x, c, s, current, reference, pr, &g);
-		m_looGradients[j] = g;
-		// The surface's direction where the point pairs (a line's, a
-		// circle's tangent) and what its normal's error invents.
-		const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
-		const double tx = pr.round >= 0 ? -g[1] : L.ny, ty = pr.round >= 0 ? g[0] : -L.nx;
-		const Eigen::Vector3d dt(tx, ty, -tx * ry + ty * rx);
-		m_looInvented[j] = PointToLineCovariance::normalVariance(x, c, s, current, reference, pr) *
-			dt * dt.transpose();
+		m_looInvented[j] = PointToLineCovariance::inventedInformation(x, c, s, current, reference, pr, g);
 		A += g * g.transpose();
 		invented += m_looInvented[j];
 		if (pr.round >= 0) m_looOrder.emplace_back(pr.round, static_cast<uint32_t>(j));
 	}
-	if (m_looOrder.empty()) return false;
 	// Round things whose centres lie within kRoundGroupDistance of each
 	// other are one group (a person's two legs, people side by side):
 	// they may move together, so they are tested together. Labels by
@@ -376,15 +360,6 @@ bool IterativeDualCorrespondence::dropMovedRoundThing(
 	for (size_t k = 0; k < nc; k++) m_looGroup[k] = root(static_cast<int32_t>(k));
 	for (auto& pr : m_looOrder) pr.first = m_looGroup[static_cast<size_t>(pr.first)];
 	std::sort(m_looOrder.begin(), m_looOrder.end());
-	// Information that fixes every direction beyond kInventedMargin times
-	// what noisy normals invent along it (PointToLineCovariance::compute's
-	// test).
-	auto constrained = [](const Eigen::Matrix3d& information, const Eigen::Matrix3d& invent) {
-		const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(information);
-		const Eigen::Vector3d weakest = eig.eigenvectors().col(0);
-		return eig.eigenvalues()[0] >
-			PointToLineCovariance::kInventedMargin * weakest.dot(invent * weakest);
-	};
 	int32_t worst = -1;
 	double worstRatio = 1;
 	for (size_t i = 0; i < m_looOrder.size();)
@@ -410,8 +385,9 @@ bool IterativeDualCorrespondence::dropMovedRoundThing(
 		// from one that stood still: it is dropped. (A trunk among the
 		// orchard's dozens carries a small share.)
 		const Eigen::Matrix3d rest = A - Ak - (invented - inventedK);
-		bool alone = constrained(A - invented, invented) && !constrained(rest, invented - inventedK);
-		if (!alone && constrained(rest, invented - inventedK))
+		const bool restFixes = PointToLineCovariance::fixesEveryDirection(rest, invented - inventedK);
+		bool alone = !restFixes && PointToLineCovariance::fixesEveryDirection(A - invented, invented);
+		if (restFixes)
 		{
 			const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix3d> share(
 				Ak - inventedK, rest, Eigen::EigenvaluesOnly);

@@ -177,6 +177,32 @@ double PointToLineCovariance::normalVariance(const mrpt::math::TPose2D& x, doubl
 		pair.round, c * p.x - s * p.y + x.x, s * p.x + c * p.y + x.y);
 }
 
+Eigen::Vector3d PointToLineCovariance::surfaceDirection(double c, double s, const ScanPoint& p,
+	const ReferencePolyline& reference, const PointToLinePair& pair, const Eigen::Vector3d& gradient)
+{
+	const ReferencePolyline::LocalLine& L = reference.localLine(pair.a);
+	const bool round = pair.round >= 0;
+	const double tx = round ? -gradient[1] : L.ny, ty = round ? gradient[0] : -L.nx;
+	const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;  // R p; R'p = (-ry, rx)
+	return {tx, ty, -tx * ry + ty * rx};
+}
+
+Eigen::Matrix3d PointToLineCovariance::inventedInformation(const mrpt::math::TPose2D& x, double c,
+	double s, const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
+	const PointToLinePair& pair, const Eigen::Vector3d& gradient)
+{
+	const Eigen::Vector3d dt = surfaceDirection(c, s, current[pair.current], reference, pair, gradient);
+	return normalVariance(x, c, s, current, reference, pair) * dt * dt.transpose();
+}
+
+bool PointToLineCovariance::fixesEveryDirection(
+	const Eigen::Matrix3d& information, const Eigen::Matrix3d& invented)
+{
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(information);
+	const Eigen::Vector3d weakest = eig.eigenvectors().col(0);
+	return eig.eigenvalues()[0] > kInventedMargin * weakest.dot(invented * weakest);
+}
+
 bool PointToLineCovariance::compute(
 	const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
 	const std::vector<PointToLinePair>& pairs, const mrpt::math::TPose2D& x,
@@ -209,22 +235,21 @@ bool PointToLineCovariance::compute(
 		const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;  // R p
 		const double nx = round ? de[0] : L.nx, ny = round ? de[1] : L.ny;
 		H(2, 2) += 2 * e * -(nx * rx + ny * ry);
-		// The surface's direction where the point pairs: the line's, or
-		// the circle's tangent at q.
-		const double tx = round ? -ny : L.ny, ty = round ? nx : -L.nx;
-		const Eigen::Vector3d dt(tx, ty, -tx * ry + ty * rx);  // (t, t.R'p), R'p = (-ry, rx)
 		if (round)
 		{
+			// J_q^T P J_q = (t, t.R'p)(t, t.R'p)^T, t the tangent at q.
+			const Eigen::Vector3d dt = surfaceDirection(c, s, p, reference, pr, de);
 			const auto& circle = reference.roundThing(pr.round).circle;
 			const double d = std::max(std::hypot(rx + x.x - circle.ox, ry + x.y - circle.oy), 1e-12);
 			H += 2 * e * dt * dt.transpose() / d;
 		}
 		// The surface's normal is estimated: n^ = n - d t, d ~ N(0, s_a^2)
-		// its direction error. So de carries - d (t, t.R'p), and E[de de^T]
-		// exceeds the true term by s_a^2 (t, t.R'p)(t, t.R'p)^T:
-		// information that noisy normals invent, along walls above all.
-		// Taken out (errors in variables).
-		invented += 2 * normalVariance(x, c, s, current, reference, pr) * dt * dt.transpose();
+		// its direction error, t the surface's direction where the point
+		// pairs (the line's, or the circle's tangent at q). So de carries
+		// - d (t, t.R'p), and E[de de^T] exceeds the true term by s_a^2 (t,
+		// t.R'p)(t, t.R'p)^T: information that noisy normals invent, along
+		// walls above all. Taken out (errors in variables).
+		invented += 2 * inventedInformation(x, c, s, current, reference, pr, de);
 		// d2J/(dx dz) = 2 (de/dx de/dz + e d2e/(dx dz)).
 		uint32_t lo = L.lo;
 		if (round)

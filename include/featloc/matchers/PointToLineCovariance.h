@@ -76,6 +76,23 @@ class PointToLineCovariance
 	static double normalVariance(const mrpt::math::TPose2D& x, double cosPhi, double sinPhi,
 		const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
 		const PointToLinePair& pair);
+	/** The residual's gradient with the surface's direction t in place of
+	 * its normal, (t, t.R'p): t the line's direction, or the circle's
+	 * tangent at the point (from `gradient`, the pair's residual gradient). */
+	static Eigen::Vector3d surfaceDirection(double cosPhi, double sinPhi, const ScanPoint& p,
+		const ReferencePolyline& reference, const PointToLinePair& pair,
+		const Eigen::Vector3d& gradient);
+	/** The information the pair's normal's error invents on average,
+	 * normalVariance() (t, t.R'p)(t, t.R'p)^T (surfaceDirection), for the
+	 * error e^2; compute() takes twice it, its J being sum e^2 with
+	 * derivatives 2 e de. */
+	static Eigen::Matrix3d inventedInformation(const mrpt::math::TPose2D& x, double cosPhi,
+		double sinPhi, const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
+		const PointToLinePair& pair, const Eigen::Vector3d& gradient);
+	/** Whether `information` fixes every direction: its weakest eigenvalue
+	 * above kInventedMargin times what `invented` puts along it (compute()'s
+	 * test, without its singularity floor). */
+	static bool fixesEveryDirection(const Eigen::Matrix3d& information, const Eigen::Matrix3d& invented);
 
 	/** de/dz for the current point's range (first) and for each point
 	 * lo..hi of L (following), analytic; for tests and compute(). Also
@@ -110,15 +127,14 @@ class PointToLineCovariance
 	 * more (the pairs do not constrain the motion); `information` receives
 	 * H either way. */
 	static constexpr double kInventedMargin = 2.0;
+	static constexpr double kUnconstrainedVariance = 1e4;  //!< [m^2 or rad^2]
 	/** Pairs with round things (PointToLinePair::round) count alike: e =
 	 * |q - o| - r, the reference ranges acting through the circle's fit,
 	 * and the normal's variance through its centre's. */
-	static constexpr double kUnconstrainedVariance = 1e4;  //!< [m^2 or rad^2]
 	static bool compute(
 		const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
 		const std::vector<PointToLinePair>& pairs, const mrpt::math::TPose2D& x,
 		double minSigma, double latticeCellSigma, Eigen::Matrix3d& cov, double& sigma,
 		Eigen::Matrix3d& information);
-
 };
 }  // namespace featloc
