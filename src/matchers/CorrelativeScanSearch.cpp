@@ -79,6 +79,7 @@ void CorrelativeScanSearch::Options::loadFromConfigFile(
 	readChoice(c, s, "coarse_on_ambiguity", onAmbiguity, {"inflate", "fail"});
 	read(c, s, "coarse_distinct_xy", distinctXY);
 	readDegrees(c, s, "coarse_distinct_yaw_DEG", distinctYaw);
+	read(c, s, "coarse_refine_rivals", refineRivals);
 	read(c, s, "coarse_confirm_share", confirmShare);
 	read(c, s, "coarse_confirm_distance", confirmDistance);
 	read(c, s, "coarse_confirm_probe", confirmProbe);
@@ -154,6 +155,9 @@ void CorrelativeScanSearch::Options::saveToConfigFile(
 		"[m] solutions further apart than this (or coarse_distinct_yaw_DEG) are distinct");
 	writeDegrees(c, s, "coarse_distinct_yaw_DEG", distinctYaw,
 		"[deg] solutions turned further apart than this are distinct");
+	write(c, s, "coarse_refine_rivals", refineRivals,
+		"the matcher's iterations also run from each rival: one they bring back to the estimate "
+		"(within coarse_distinct_*) is the estimate's own minimum, no ambiguity");
 	write(c, s, "coarse_confirm_share", confirmShare,
 		"skip the search when the iterations from the guess succeed and put this "
 		"share of the current points within coarse_confirm_distance of the reference "
@@ -485,7 +489,6 @@ CorrelativeScanSearch::Ambiguity CorrelativeScanSearch::ambiguity(const Result& 
 		const double z = evidence(atEstimate, atRival);
 		if (z >= options.ambiguityZ || !distinct(at, estimate)) continue;
 		out.rivals.push_back(at);
-		if (out.ambiguous) continue;  // the reason names the first
 		out.ambiguous = true;
 		const auto d = at - estimate;
 		char buf[320];
@@ -495,8 +498,9 @@ CorrelativeScanSearch::Ambiguity CorrelativeScanSearch::ambiguity(const Result& 
 			"%.1f < coarse_ambiguity_z %.1f)",
 			std::hypot(d.x(), d.y()), mrpt::RAD2DEG(d.phi()), 100 * mean(atRival),
 			100 * mean(atEstimate), z, options.ambiguityZ);
-		out.reason = buf;
+		out.reasons.push_back(buf);
 	}
+	if (out.ambiguous) out.reason = out.reasons.front();
 	return out;
 }
 

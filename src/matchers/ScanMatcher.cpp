@@ -632,8 +632,13 @@ void ScanMatcher::matchFromCoarseSearch(const ScanPoints& reference, const ScanP
 	// the rival too and keeping the better refinement was tried: it moved
 	// few matches from flagged to right and some to silently wrong (people
 	// walking).
-	const auto amb = m_coarse.ambiguity(coarse, r.estimate.mean, window);
+	auto amb = m_coarse.ambiguity(coarse, r.estimate.mean, window);
 	if (!amb.ambiguous) return;
+	if (m_coarse.options.refineRivals)
+	{
+		amb = rivalsOfTheirOwn(reference, current, coarse, amb, r);
+		if (!amb.ambiguous) return;
+	}
 	// Iterations that converged outside the window the search scored went
 	// where the search did not look. If the estimate is clearly better than
 	// all the search saw, the window was too narrow for the guess's error
@@ -678,6 +683,38 @@ void ScanMatcher::matchFromCoarseSearch(const ScanPoints& reference, const ScanP
 	r.estimate.cov = mrpt::math::CMatrixDouble33(C);
 	r.ambiguous = true;
 	r.ambiguityReason = amb.reason;
+}
+
+CorrelativeScanSearch::Ambiguity ScanMatcher::rivalsOfTheirOwn(const ScanPoints& reference,
+	const ScanPoints& current, const CorrelativeScanSearch::Result& coarse,
+	const CorrelativeScanSearch::Ambiguity& amb, const MatchResult& r)
+{
+	// The search's score is coarse (5 cm hits, its grid's steps): along a
+	// direction the scans fix only through fine structure it is flat, and
+	// a rival there is a pose on the slope of the estimate's own minimum.
+	// Where the iterations from the rival come back to the estimate, the
+	// points have one solution there. (Keeping the better of the two
+	// refinements instead was tried, above, and made silent errors with
+	// people walking: here a rival is only dropped when both refinements
+	// agree.)
+	CorrelativeScanSearch::Ambiguity kept;
+	const mrpt::math::CMatrixDouble33 cov = coarse.gridCovariance();
+	for (size_t i = 0; i < amb.rivals.size(); i++)
+	{
+		MatchResult fromRival = r;
+		matchPointsFinite(
+			reference, current, mrpt::poses::CPosePDFGaussian(amb.rivals[i], cov), fromRival);
+		if (fromRival.success && !m_coarse.distinct(fromRival.estimate.mean, r.estimate.mean))
+			continue;
+		kept.rivals.push_back(amb.rivals[i]);
+		kept.reasons.push_back(amb.reasons[i]);
+	}
+	kept.ambiguous = !kept.rivals.empty();
+	if (kept.ambiguous) kept.reason = kept.reasons.front();
+	// What inspectLastMatch() reports is of the estimate's iterations.
+	MatchResult again = r;
+	matchPointsFinite(reference, current, mrpt::poses::CPosePDFGaussian(coarse.best, cov), again);
+	return kept;
 }
 
 MatchInspection ScanMatcher::inspectLastMatch(const ScanPoints& reference,

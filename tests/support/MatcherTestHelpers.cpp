@@ -2,6 +2,7 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include "featloc/matchers/ScanMatcherFactory.h"
@@ -35,7 +36,21 @@ void readScanPair(const std::string& file, mrpt::obs::CObservation2DRangeScan& r
 {
 	mrpt::io::CFileGZInputStream in(std::string(FEATLOC_SOURCE_DIR) + "/tests/data/" + file);
 	auto ar = mrpt::serialization::archiveFrom(in);
-	ar >> reference >> current;
+	// Either format: two observations (rawlog format #2), or rawlog-edit
+	// --cut of a format #1 log, whose scans sit in sensory frames between
+	// action collections.
+	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
+	while (scans.size() < 2)
+	{
+		const auto obj = ar.ReadObject();
+		if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obj))
+			scans.push_back(scan);
+		else if (auto frame = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
+			if (auto inFrame = frame->getObservationByClass<mrpt::obs::CObservation2DRangeScan>())
+				scans.push_back(inFrame);
+	}
+	reference = *scans[0];
+	current = *scans[1];
 }
 
 mrpt::poses::CPosePDFGaussian guessFromMatchTable(

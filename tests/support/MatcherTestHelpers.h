@@ -20,7 +20,8 @@ mrpt::obs::CObservation2DRangeScan::Ptr withRangeNoise(
 	double sigma);
 
 /** The two scans of a pair featloc-bench matched, saved in tests/data
- * (`file` is the name there). */
+ * (`file` is the name there): the first two 2-D scans, as observations or
+ * in sensory frames. */
 void readScanPair(const std::string& file, mrpt::obs::CObservation2DRangeScan& reference,
 	mrpt::obs::CObservation2DRangeScan& current);
 

@@ -88,6 +88,14 @@ class CorrelativeScanSearch
 		 * distinct: the silent-gross-error thresholds of featloc-bench. */
 		double distinctXY = 0.10;  //!< [m]
 		double distinctYaw = 0.03490658503988659;  //!< [rad] (2 deg)
+		/** The matcher's iterations run from each rival too
+		 * (ScanMatcher::matchFromCoarseSearch): a rival they bring back to
+		 * the estimate (not distinct from it) is a pose on the slope of the
+		 * estimate's own minimum, where the search's coarse score is flat
+		 * (a turn about a round hall's centre), not a second solution, and
+		 * is no ambiguity. false: every rival the points do not reject
+		 * counts, as until 2026-12-04. */
+		bool refineRivals = true;
 		/** The search is skipped when the matcher's iterations from the
 		 * guess succeed at a pose that puts at least this share of the
 		 * current points within confirmDistance of a reference point
@@ -176,6 +184,7 @@ class CorrelativeScanSearch
 		/** The solutions the points do not reject, at their best grid
 		 * neighbours. */
 		std::vector<mrpt::poses::CPose2D> rivals;
+		std::vector<std::string> reasons;  //!< one per rival
 		std::string reason;	 //!< about the first rival
 	};
 	/** Whether `estimate` (the matcher's refinement of r.best) is

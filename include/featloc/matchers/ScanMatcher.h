@@ -231,6 +231,13 @@ class ScanMatcher : public mrpt::rtti::CObject
 	 * they stay on it. */
 	void matchFromCoarseSearch(const ScanPoints& reference, const ScanPoints& current,
 		const mrpt::poses::CPosePDFGaussian& window, MatchResult& r);
+	/** coarse_refine_rivals: the rivals of `amb` from which the matcher's
+	 * iterations (started at the rival, with the search's grid
+	 * covariance) do not come back to r's estimate (or fail), with their
+	 * reasons; the matcher's state is left as r's own iterations left it. */
+	CorrelativeScanSearch::Ambiguity rivalsOfTheirOwn(const ScanPoints& reference,
+		const ScanPoints& current, const CorrelativeScanSearch::Result& coarse,
+		const CorrelativeScanSearch::Ambiguity& amb, const MatchResult& r);
 
 	/** free_direction_from_guess: a match that failed only because the
 	 * points leave one direction free (MatchResult::freeDirection, a
