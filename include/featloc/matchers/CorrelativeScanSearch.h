@@ -90,12 +90,15 @@ class CorrelativeScanSearch
 		double distinctYaw = 0.03490658503988659;  //!< [rad] (2 deg)
 		/** The matcher's iterations run from each rival too
 		 * (ScanMatcher::matchFromCoarseSearch): a rival they bring back to
-		 * the estimate (not distinct from it) is a pose on the slope of the
-		 * estimate's own minimum, where the search's coarse score is flat
-		 * (a turn about a round hall's centre), not a second solution, and
-		 * is no ambiguity. false: every rival the points do not reject
-		 * counts, as until 2026-12-04. */
-		bool refineRivals = true;
+		 * the estimate (not distinct from it) counts as a pose on the slope
+		 * of the estimate's own minimum, where the search's coarse score is
+		 * flat (a turn about a round hall's centre), and no ambiguity. Off
+		 * by default: on the real logs the iterations also brought back
+		 * rivals that the points favoured, and flagged matches 11-25 cm off
+		 * the reference poses became silent ones (orebro's silent pairs
+		 * 0.4% -> 2.1%; doc/benchmarks.md, "Issue 15, thirty-third
+		 * session"). false: every rival the points do not reject counts. */
+		bool refineRivals = false;
 		/** The search is skipped when the matcher's iterations from the
 		 * guess succeed at a pose that puts at least this share of the
 		 * current points within confirmDistance of a reference point

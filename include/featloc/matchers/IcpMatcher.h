@@ -63,10 +63,6 @@ class IcpMatcher : public ScanMatcher
 	{
 		coarseSearchOptions().enabled = false;
 		coarseSearchOptions().confirmShare = 0;
-		// Along a direction the points leave free, MRPT's ICP stops
-		// wherever it lands: it cannot tell a rival on a ridge from one in a
-		// second minimum.
-		coarseSearchOptions().refineRivals = false;
 		m_dequantizeRanges = false;
 	}
 

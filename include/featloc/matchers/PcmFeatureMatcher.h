@@ -65,17 +65,8 @@ class PcmFeatureMatcher : public ScanMatcher
 	 * PCM's features cannot place a scan along parallel walls; the points
 	 * of a door jamb can, and IDC says when they cannot (MRPT's ICP, the
 	 * fallback before, slid along a corridor instead: doc/benchmarks.md,
-	 * "Issue 15, fourth session").
-	 * coarse_refine_rivals is off here (its IDC fallback has it on): PCM's
-	 * feature pairs alias, and from a rival its iterations can fall into
-	 * the same wrong minimum as from the search's best (a round hall's
-	 * facets: the estimate 4.5 deg off, one facet, and the rival refined to
-	 * it; doc/benchmarks.md, "Issue 15, thirty-third session"). */
-	PcmFeatureMatcher() : ScanMatcher("featloc::IdcMatcher")
-	{
-		m_fallbackAboveSigmaXY = 0.01;
-		coarseSearchOptions().refineRivals = false;
-	}
+	 * "Issue 15, fourth session"). */
+	PcmFeatureMatcher() : ScanMatcher("featloc::IdcMatcher") { m_fallbackAboveSigmaXY = 0.01; }
 
 	struct Parameters : public mrpt::config::CLoadableOptions
 	{
