@@ -41,6 +41,7 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	read(c, s, "guess_gate_chi2", guess_gate_chi2);
 	read(c, s, "covariance_inflation", covariance_inflation);
 	read(c, s, "min_range_sigma", min_range_sigma);
+	read(c, s, "covariance_residual_span", covariance_residual_span);
 	read(c, s, "max_translation_sigma", max_translation_sigma);
 	readDegrees(c, s, "max_rotation_sigma_DEG", max_rotation_sigma);
 	require(max_iterations >= 1, c, s, "max_iterations", ">= 1");
@@ -62,6 +63,7 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	require(guess_gate_chi2 >= 0, c, s, "guess_gate_chi2", ">= 0 (0 disables it)");
 	require(covariance_inflation >= 1, c, s, "covariance_inflation", ">= 1");
 	require(min_range_sigma > 0, c, s, "min_range_sigma", "> 0");
+	require(covariance_residual_span >= 0, c, s, "covariance_residual_span", ">= 0 (0 disables it)");
 	require(max_translation_sigma > 0, c, s, "max_translation_sigma", "> 0");
 	require(max_rotation_sigma > 0, c, s, "max_rotation_sigma_DEG", "> 0");
 }
@@ -110,6 +112,8 @@ void IterativeDualCorrespondence::Parameters::saveToConfigFile(
 		"covariance: Censi's closed form (fixed correspondences) times this; re-pairing noisy points adds variance");
 	write(c, s, "min_range_sigma", min_range_sigma,
 		"[m] covariance: floor of the range noise estimated from the residuals");
+	write(c, s, "covariance_residual_span", covariance_residual_span,
+		"[m] covariance: the residuals' own scatter of the gradient, pairs within this arc of each other counted together (a surface that departs from its local lines over a stretch), bounds Censi's from below (0 = off)");
 	write(c, s, "max_translation_sigma", max_translation_sigma,
 		"[m] failure when the estimate's sigma along its weakest translation direction exceeds this");
 	writeDegrees(c, s, "max_rotation_sigma_DEG", max_rotation_sigma,
@@ -654,7 +658,7 @@ void IterativeDualCorrespondence::run(
 	Eigen::Matrix3d H;
 	if (!PointToLineCovariance::compute(
 			current, reference, m_lines, x, params.min_range_sigma, rangeLatticeCellSigma, r.cov,
-			r.rangeSigma, H))
+			r.rangeSigma, H, params.covariance_residual_span))
 	{
 		r.failureReason = m_lines.size() < 3 ? "" : check.singular(H);
 		if (r.failureReason.empty())

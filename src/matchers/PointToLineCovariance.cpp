@@ -207,7 +207,7 @@ bool PointToLineCovariance::compute(
 	const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
 	const std::vector<PointToLinePair>& pairs, const mrpt::math::TPose2D& x,
 	double minSigma, double latticeCellSigma, Eigen::Matrix3d& cov, double& sigma,
-	Eigen::Matrix3d& information)
+	Eigen::Matrix3d& information, double residualSpan)
 {
 	const size_t nc = current.size();
 	// g_k for every range z_k: current points first, then reference points.
@@ -218,6 +218,9 @@ bool PointToLineCovariance::compute(
 	double J = 0, sensitivity = 0;
 	std::vector<double> dedz;
 	Eigen::Matrix<double, 3, Eigen::Dynamic> mixed;
+	// Each pair's score u_i = de_i^2/dx (residualSpan), kept per thread.
+	thread_local std::vector<std::pair<uint32_t, Eigen::Vector3d>> scores;
+	scores.clear();
 	const double c = std::cos(x.phi), s = std::sin(x.phi);
 	for (const auto& pr : pairs)
 	{
@@ -227,6 +230,7 @@ bool PointToLineCovariance::compute(
 		Eigen::Vector3d de;
 		const double e = residual(x, c, s, current, reference, pr, &de);
 		J += e * e;
+		if (residualSpan > 0) scores.emplace_back(pr.current, 2 * e * de);
 		// d2J/dx2 = 2 sum (de de^T + e d2e/dx2); on a line only d2e/dw2 =
 		// -n.(R p) is non-zero; on a circle the radial unit n also turns
 		// as q moves, by P/d (P = I - n n^T, d = |q - o|): d2e/dx2 gains
@@ -323,11 +327,59 @@ bool PointToLineCovariance::compute(
 			i = j;
 		}
 	}
+	if (residualSpan > 0) S = upperOf(S, residualScatter(current, scores, residualSpan));
 	const Eigen::Matrix3d Hinv =
 		eig.eigenvectors() * inverse.asDiagonal() * eig.eigenvectors().transpose();
 	cov = Hinv * S * Hinv;
 	if (unconstrained) cov += kUnconstrainedVariance * weakest * weakest.transpose();
 	cov = 0.5 * (cov + cov.transpose()).eval();
 	return true;
+}
+
+Eigen::Matrix3d PointToLineCovariance::residualScatter(const std::vector<ScanPoint>& current,
+	const std::vector<std::pair<uint32_t, Eigen::Vector3d>>& scores, double span)
+{
+	// The pairs in the current scan's (bearing) order, each at its arc
+	// position: the path along consecutive paired points, a gap wider than
+	// the span counting as beyond it. The tent w = max(0, 1 - |ds| / span)
+	// is a positive definite kernel on a line (its Fourier transform is a
+	// squared sinc), so S_r is positive semi-definite.
+	thread_local std::vector<std::pair<uint32_t, Eigen::Vector3d>> byPoint;
+	byPoint = scores;
+	std::sort(byPoint.begin(), byPoint.end(),
+		[](const auto& a, const auto& b) { return a.first < b.first; });
+	thread_local std::vector<double> arc;
+	arc.assign(byPoint.size(), 0.0);
+	for (size_t i = 1; i < byPoint.size(); i++)
+	{
+		const ScanPoint& a = current[byPoint[i - 1].first];
+		const ScanPoint& b = current[byPoint[i].first];
+		const double gap = std::hypot(b.x - a.x, b.y - a.y);
+		arc[i] = arc[i - 1] + (gap > span ? 2 * span : gap);
+	}
+	Eigen::Matrix3d out = Eigen::Matrix3d::Zero();
+	for (size_t i = 0; i < byPoint.size(); i++)
+	{
+		out += byPoint[i].second * byPoint[i].second.transpose();
+		for (size_t j = i + 1; j < byPoint.size() && arc[j] - arc[i] < span; j++)
+		{
+			const double w = 1 - (arc[j] - arc[i]) / span;
+			const Eigen::Matrix3d cross = byPoint[i].second * byPoint[j].second.transpose();
+			out += w * (cross + cross.transpose());
+		}
+	}
+	return out;
+}
+
+Eigen::Matrix3d PointToLineCovariance::upperOf(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
+{
+	const Eigen::LLT<Eigen::Matrix3d> llt(a);
+	if (llt.info() != Eigen::Success) return a;
+	const Eigen::Matrix3d L = llt.matrixL();
+	const Eigen::Matrix3d Linv = L.inverse();
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(Linv * b * Linv.transpose());
+	const Eigen::Vector3d d = eig.eigenvalues().cwiseMax(1.0);
+	const Eigen::Matrix3d M = eig.eigenvectors() * d.asDiagonal() * eig.eigenvectors().transpose();
+	return L * M * L.transpose();
 }
 }  // namespace featloc

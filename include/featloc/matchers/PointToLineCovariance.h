@@ -131,10 +131,30 @@ class PointToLineCovariance
 	/** Pairs with round things (PointToLinePair::round) count alike: e =
 	 * |q - o| - r, the reference ranges acting through the circle's fit,
 	 * and the normal's variance through its centre's. */
+	/** residualSpan > 0 [m]: the modelled scatter of the gradient,
+	 * sum_k g_k g_k^T s^2 (S), is compared with what the residuals show,
+	 * S_r = sum_ij w_ij u_i u_j^T, u_i = 2 e_i de_i/dx, w_ij = max(0, 1 -
+	 * |s_i - s_j| / residualSpan), s the current points' arc position
+	 * along the scan (a gap wider than the span breaks it): a surface that
+	 * departs from its local lines (rough rock, a polygon's facets under a
+	 * bowed line) leaves residuals that run together over a stretch of it,
+	 * whose effects on the motion add up instead of averaging out, which
+	 * a per-point s cannot show. Along every direction where S_r exceeds S
+	 * it takes its place (the smallest matrix above both). 0: S alone. */
 	static bool compute(
 		const std::vector<ScanPoint>& current, const ReferencePolyline& reference,
 		const std::vector<PointToLinePair>& pairs, const mrpt::math::TPose2D& x,
 		double minSigma, double latticeCellSigma, Eigen::Matrix3d& cov, double& sigma,
-		Eigen::Matrix3d& information);
+		Eigen::Matrix3d& information, double residualSpan = 0);
+
+	/** The residuals' own gradient scatter S_r of compute() (pairs with
+	 * their u_i, any order; the current points give the arc positions). */
+	static Eigen::Matrix3d residualScatter(const std::vector<ScanPoint>& current,
+		const std::vector<std::pair<uint32_t, Eigen::Vector3d>>& scores, double span);
+	/** An upper bound of a and b in the Loewner order (a positive
+	 * definite): with a = L L^T and L^-1 b L^-T = V D V^T, L V max(1, D)
+	 * V^T L^T. It is a where b lies below a, and takes b's size along the
+	 * directions where b exceeds a. */
+	static Eigen::Matrix3d upperOf(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b);
 };
 }  // namespace featloc
