@@ -944,33 +944,27 @@ TEST(CfIdcMatcher, ParametersRoundTripAndBadValuesNameTheKey)
 	EXPECT_NE(msg.find("curvature_length"), std::string::npos) << msg;
 	EXPECT_NE(msg.find("power of two"), std::string::npos) << msg;
 
-	p.idc.circle_fit_sigmas = 2.5;
-	mrpt::config::CConfigFileMemory circles;
-	p.saveToConfigFile(circles, "S");
-	TrackedConfig withCircles;
-	withCircles.loadText(circles.getContent(), "saved.ini");
-	back.loadFromConfigFile(withCircles, "S");
-	EXPECT_NEAR(back.idc.circle_fit_sigmas, 2.5, 1e-12);
-	TrackedConfig negative;
-	negative.loadText("[S]\ncircle_fit_sigmas = -1\n", "bad.ini");
-	const std::string why =
-		test::errorMessageOf<ConfigError>([&] { back.loadFromConfigFile(negative, "S"); });
-	EXPECT_NE(why.find("circle_fit_sigmas"), std::string::npos) << why;
-	EXPECT_NE(why.find("bad.ini"), std::string::npos) << why;
-
-	p.idc.covariance_residual_span = 0.8;
-	mrpt::config::CConfigFileMemory spans;
-	p.saveToConfigFile(spans, "S");
-	TrackedConfig withSpan;
-	withSpan.loadText(spans.getContent(), "saved.ini");
-	back.loadFromConfigFile(withSpan, "S");
-	EXPECT_NEAR(back.idc.covariance_residual_span, 0.8, 1e-12);
-	TrackedConfig negativeSpan;
-	negativeSpan.loadText("[S]\ncovariance_residual_span = -0.1\n", "bad.ini");
-	const std::string whySpan =
-		test::errorMessageOf<ConfigError>([&] { back.loadFromConfigFile(negativeSpan, "S"); });
-	EXPECT_NE(whySpan.find("covariance_residual_span"), std::string::npos) << whySpan;
-	EXPECT_NE(whySpan.find("bad.ini"), std::string::npos) << whySpan;
+	// A key of IDC's own: its value round-trips through a saved file, and
+	// a negative one is an error naming the key and the file.
+	auto roundTripsAndRefusesNegative = [&](const std::string& key, double& field, double value,
+											const double& readBack) {
+		field = value;
+		mrpt::config::CConfigFileMemory saved;
+		p.saveToConfigFile(saved, "S");
+		TrackedConfig again;
+		again.loadText(saved.getContent(), "saved.ini");
+		back.loadFromConfigFile(again, "S");
+		EXPECT_NEAR(readBack, value, 1e-12) << key;
+		TrackedConfig negative;
+		negative.loadText("[S]\n" + key + " = -1\n", "bad.ini");
+		const std::string why =
+			test::errorMessageOf<ConfigError>([&] { back.loadFromConfigFile(negative, "S"); });
+		EXPECT_NE(why.find(key), std::string::npos) << why;
+		EXPECT_NE(why.find("bad.ini"), std::string::npos) << why;
+	};
+	roundTripsAndRefusesNegative("circle_fit_sigmas", p.idc.circle_fit_sigmas, 2.5, back.idc.circle_fit_sigmas);
+	roundTripsAndRefusesNegative(
+		"covariance_residual_span", p.idc.covariance_residual_span, 0.8, back.idc.covariance_residual_span);
 }
 
 // The curvature stage itself (CF-SMA2), in the paper's configuration (no
