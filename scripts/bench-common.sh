@@ -260,11 +260,11 @@ sim_corridor_seeds() {
 # (COMMON), the switch KEY set to 0 in [ScanMatcher.IdcMatcher] and
 # [ScanMatcher.CfIdcMatcher] as the other way (OFF, named OFF_NAME), and
 # `bench` as switch_bench.
-switch_setup() { # key, name of the other way
+switch_setup() { # key, name of the other way[, the key's value that way (0)]
   M="PCM=featloc::PcmFeatureMatcher,IDC=featloc::IdcMatcher,CF-IDC=featloc::CfIdcMatcher"
   M="$M,IcpMatcher (MRPT)=featloc::IcpMatcher"
   COMMON="--seed 1 -q --paired-with none --perturb-xy 0.3 --perturb-yaw-deg 10"
-  OFF=(--set "ScanMatcher.IdcMatcher:$1=0" --set "ScanMatcher.CfIdcMatcher:$1=0")
+  OFF=(--set "ScanMatcher.IdcMatcher:$1=${3:-0}" --set "ScanMatcher.CfIdcMatcher:$1=${3:-0}")
   OFF_NAME="$2"
   HEADER=--header
   BOUNDED=()
@@ -311,8 +311,9 @@ switch_bound_ratios() {
   done
 }
 # The curved worlds written for issue 15 (rotunda, ring-corridor, orchard,
-# in the order given) as written, then their static twins against the
-# bound (the rotunda and the orchard at 1 cm), the data sets of
+# mine-gallery, in the order given) as written, then their static twins
+# against the bound (the rotunda and the orchard at 1 cm, the ring and the
+# mine at their Hokuyo's 1.5 cm), the data sets of
 # bench_extraction_scenes_and_the_rest, and switch_bound_ratios' table:
 # through the caller's `bench` (switch_bench).
 switch_curved_worlds_and_the_rest() { # worlds...
@@ -321,7 +322,7 @@ switch_curved_worlds_and_the_rest() { # worlds...
   echo
   HEADER=--header
   for w in "$@"; do
-    if [ "$w" = ring-corridor ]; then
+    if [ "$w" = ring-corridor ] || [ "$w" = mine-gallery ]; then
       switch_frozen_world "$w" "${w//-/ } frozen"
     else
       switch_frozen_world "$w" "$w frozen (1 cm)" --set Laser:range_noise=0.01
