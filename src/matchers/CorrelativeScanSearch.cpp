@@ -157,7 +157,8 @@ void CorrelativeScanSearch::Options::saveToConfigFile(
 		"[deg] solutions turned further apart than this are distinct");
 	write(c, s, "coarse_refine_rivals", refineRivals,
 		"the matcher's iterations also run from each rival: one they bring back to the estimate "
-		"(within coarse_distinct_*) is the estimate's own minimum, no ambiguity");
+		"(within coarse_distinct_*) is no ambiguity (off: on the real logs it unflagged wrong "
+		"matches too)");
 	write(c, s, "coarse_confirm_share", confirmShare,
 		"skip the search when the iterations from the guess succeed and put this "
 		"share of the current points within coarse_confirm_distance of the reference "

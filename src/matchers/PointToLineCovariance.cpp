@@ -218,7 +218,7 @@ bool PointToLineCovariance::compute(
 	double J = 0, sensitivity = 0;
 	std::vector<double> dedz;
 	Eigen::Matrix<double, 3, Eigen::Dynamic> mixed;
-	// Each pair's score u_i = de_i^2/dx (residualSpan), kept per thread.
+	// Each pair's score u_i = d(e_i^2)/dx (residualSpan), kept per thread.
 	thread_local std::vector<std::pair<uint32_t, Eigen::Vector3d>> scores;
 	scores.clear();
 	const double c = std::cos(x.phi), s = std::sin(x.phi);

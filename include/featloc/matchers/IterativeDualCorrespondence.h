@@ -172,9 +172,10 @@ class IterativeDualCorrespondence
 		 * pairs within this arc of each other counted together, bounds
 		 * Censi's from below (PointToLineCovariance::compute's
 		 * residualSpan; 0 = off, Censi's alone, as until 2026-12-04).
-		 * 0.5 m, about a local line's reach at a few metres, was picked
-		 * before the held-out runs; covariance_inflation was then set
-		 * again on the calibration scenes (doc/benchmarks.md, "Issue 15,
+		 * 0.5 m, about a local line's reach at a few metres, lies between
+		 * the 0.3 and 1 m first tried (alike on the office and three
+		 * held-out scenes); covariance_inflation was then set again on the
+		 * calibration scenes alone (doc/benchmarks.md, "Issue 15,
 		 * thirty-third session"). */
 		double covariance_residual_span = 0.5;
 		double max_translation_sigma = 0.1;	 //!< [m]

@@ -130,8 +130,9 @@ class PointToLineCovariance
 	static constexpr double kUnconstrainedVariance = 1e4;  //!< [m^2 or rad^2]
 	/** Pairs with round things (PointToLinePair::round) count alike: e =
 	 * |q - o| - r, the reference ranges acting through the circle's fit,
-	 * and the normal's variance through its centre's. */
-	/** residualSpan > 0 [m]: the modelled scatter of the gradient,
+	 * and the normal's variance through its centre's.
+	 *
+	 * residualSpan > 0 [m]: the modelled scatter of the gradient,
 	 * sum_k g_k g_k^T s^2 (S), is compared with what the residuals show,
 	 * S_r = sum_ij w_ij u_i u_j^T, u_i = 2 e_i de_i/dx, w_ij = max(0, 1 -
 	 * |s_i - s_j| / residualSpan), s the current points' arc position
