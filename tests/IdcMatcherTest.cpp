@@ -706,6 +706,72 @@ TEST(ReferencePolyline, LinesOnARoundWallKeepTheirBow)
 	EXPECT_LT(flatBowing, flatLines * 5 / 100) << flatBowing << " of " << flatLines;
 }
 
+// A round hall's wall seen from 7 m (the rotunda's SICK at 0.5 deg, 1 cm
+// noise): one local line of 13 points bows by a sagitta of about 1 cm, at
+// or under its own 3-sigma test, so most lines stay chords; yet they all
+// bow the same way, and their chords bias the motion together. With the
+// bow decided per segment (line_bow_per_segment, a switch, off) every line of the wall
+// keeps its bow, towards the centre and near the circle's 1 / 2R; the
+// office's straight walls, whose lines bow at random, keep none more.
+TEST(ReferencePolyline, ARoundWallsLinesBowTogetherWhereEachAloneDoesNot)
+{
+	SyntheticRoom round;
+	const double R = 7.0;
+	for (int k = 0; k < 360; k++)
+		round.add(R * std::cos(mrpt::DEG2RAD(k)), R * std::sin(mrpt::DEG2RAD(k)),
+			R * std::cos(mrpt::DEG2RAD(k + 1)), R * std::sin(mrpt::DEG2RAD(k + 1)));
+	mrpt::random::CRandomGenerator rng(9);
+	const ScanPoints pts =
+		ScanPoints::fromScan(*noisy(round.scan(CPose2D(0.8, -0.4, 0.3), CPose2D(), 361), rng, 0.01));
+	std::vector<ScanSegment> segments;
+	AdaptiveBreakpointSegmenter::Parameters seg;
+	seg.sigmaFromScan = true;
+	AdaptiveBreakpointSegmenter(seg).segment(pts, segments);
+	ReferencePolyline alone, together;
+	alone.build(pts, segments, 6, 0, 3.0, 0, 1.0, false);
+	together.build(pts, segments, 6, 0, 3.0, 0, 1.0, true);
+	size_t lines = 0, bowingAlone = 0, bowingTogether = 0, towardCentre = 0;
+	double sumBow = 0;
+	for (uint32_t a = 0; a + 1 < together.size(); a++)
+	{
+		const auto& L = together.localLine(a);
+		if (!together.joined(a) || L.hi - L.lo + 1 < ReferencePolyline::kLeastBowPoints) continue;
+		lines++;
+		if (alone.localLine(a).bow != 0) bowingAlone++;
+		if (L.bow == 0) continue;
+		bowingTogether++;
+		// The bow's pull towards the centre (the normal's sign is the line's).
+		const double pull = -(L.nx * L.cx + L.ny * L.cy) > 0 ? L.bow : -L.bow;
+		sumBow += pull;
+		if (pull > 0) towardCentre++;
+	}
+	ASSERT_GT(lines, 300u);
+	EXPECT_LT(bowingAlone, lines / 2) << bowingAlone << " of " << lines << " alone";
+	EXPECT_GT(bowingTogether, lines * 95 / 100) << bowingTogether << " of " << lines;
+	EXPECT_GT(towardCentre, bowingTogether * 3 / 4);
+	// One line of 13 points knows its bow to about +-0.1 / m here: their
+	// mean, not each, is near the circle's.
+	EXPECT_NEAR(sumBow / static_cast<double>(bowingTogether), 1 / (2 * R), 0.4 / (2 * R));
+
+	const ScanPoints office = ScanPoints::fromScan(
+		*noisy(SyntheticRoom::office().scan(CPose2D(0.1, 0.2, 0.3)), rng, 0.01));
+	AdaptiveBreakpointSegmenter().segment(office, segments);
+	ReferencePolyline flatAlone, flatTogether;
+	flatAlone.build(office, segments, 6, 0, 3.0, 0, 1.0, false);
+	flatTogether.build(office, segments, 6, 0, 3.0, 0, 1.0, true);
+	size_t flatAloneBowing = 0, flatTogetherBowing = 0, flatLines = 0;
+	for (uint32_t a = 0; a + 1 < flatTogether.size(); a++)
+	{
+		if (!flatTogether.joined(a) || flatTogether.localLine(a).hi - flatTogether.localLine(a).lo < 4)
+			continue;
+		flatLines++;
+		flatAloneBowing += flatAlone.localLine(a).bow != 0;
+		flatTogetherBowing += flatTogether.localLine(a).bow != 0;
+	}
+	ASSERT_GT(flatLines, 200u);
+	EXPECT_EQ(flatTogetherBowing, flatAloneBowing);
+}
+
 // On a bowed line the current point's range derivative and its mixed term
 // (the residual's gradient moved by the range) are exact; the reference
 // ranges' are the line's (the bow's own dependence on them is left out).
@@ -965,6 +1031,13 @@ TEST(CfIdcMatcher, ParametersRoundTripAndBadValuesNameTheKey)
 	roundTripsAndRefusesNegative("circle_fit_sigmas", p.idc.circle_fit_sigmas, 2.5, back.idc.circle_fit_sigmas);
 	roundTripsAndRefusesNegative(
 		"covariance_residual_span", p.idc.covariance_residual_span, 0.8, back.idc.covariance_residual_span);
+	p.idc.line_bow_per_segment = true;
+	mrpt::config::CConfigFileMemory bows;
+	p.saveToConfigFile(bows, "S");
+	TrackedConfig withBows;
+	withBows.loadText(bows.getContent(), "saved.ini");
+	back.loadFromConfigFile(withBows, "S");
+	EXPECT_TRUE(back.idc.line_bow_per_segment);
 }
 
 // The curvature stage itself (CF-SMA2), in the paper's configuration (no

@@ -211,7 +211,7 @@ void CfIdcMatcher::buildReference(const ScanPoints& reference)
 		if (s.kept) m_segments.push_back(s.segment);
 	m_polyline.build(reference, m_segments, params.idc.line_half_window,
 		lineGrowthTargetFor(params.idc.lineTargetDirectionSigma()), params.idc.line_bow_sigmas,
-		params.idc.circle_fit_sigmas, params.idc.face_segment_extent);
+		params.idc.circle_fit_sigmas, params.idc.face_segment_extent, params.idc.line_bow_per_segment);
 }
 
 void CfIdcMatcher::collectKeptCurrent(const ScanPoints& current)

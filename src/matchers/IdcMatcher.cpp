@@ -40,19 +40,22 @@ void IdcMatcher::buildReference(const ScanPoints& reference)
 	if (m_built && m_builtSegmentation == segmentation &&
 		m_builtLineHalfWindow == params.idc.line_half_window && m_builtLineTarget == lineTarget &&
 		m_builtBowSigmas == params.idc.line_bow_sigmas &&
+		m_builtBowPerSegment == params.idc.line_bow_per_segment &&
 		m_builtCircleSigmas == params.idc.circle_fit_sigmas &&
 		m_builtRoundExtent == params.idc.face_segment_extent &&
 		m_builtReference.samePointsAs(reference))
 		return;
 	AdaptiveBreakpointSegmenter(segmentation).segment(reference, m_segments);
 	m_polyline.build(reference, m_segments, params.idc.line_half_window, lineTarget,
-		params.idc.line_bow_sigmas, params.idc.circle_fit_sigmas, params.idc.face_segment_extent);
+		params.idc.line_bow_sigmas, params.idc.circle_fit_sigmas, params.idc.face_segment_extent,
+		params.idc.line_bow_per_segment);
 	m_built = true;
 	m_builtReference = reference;
 	m_builtSegmentation = segmentation;
 	m_builtLineHalfWindow = params.idc.line_half_window;
 	m_builtLineTarget = lineTarget;
 	m_builtBowSigmas = params.idc.line_bow_sigmas;
+	m_builtBowPerSegment = params.idc.line_bow_per_segment;
 	m_builtCircleSigmas = params.idc.circle_fit_sigmas;
 	m_builtRoundExtent = params.idc.face_segment_extent;
 }

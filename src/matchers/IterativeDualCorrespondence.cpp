@@ -37,6 +37,7 @@ void IterativeDualCorrespondence::Parameters::loadFromConfigFile(
 	read(c, s, "face_segment_extent", face_segment_extent);
 	read(c, s, "grow_lines_to_direction_sigma", grow_lines_to_direction_sigma);
 	read(c, s, "line_bow_sigmas", line_bow_sigmas);
+	read(c, s, "line_bow_per_segment", line_bow_per_segment);
 	read(c, s, "circle_fit_sigmas", circle_fit_sigmas);
 	read(c, s, "guess_gate_chi2", guess_gate_chi2);
 	read(c, s, "covariance_inflation", covariance_inflation);
@@ -104,6 +105,8 @@ void IterativeDualCorrespondence::Parameters::saveToConfigFile(
 		"point_to_line phase: a local line whose direction is still known worse than max_line_direction_sigma_DEG after line_half_window grows on until it is not (up to 8x as many points), instead of being left out: dense noisy scans (false: as until 2026-12-01)");
 	write(c, s, "line_bow_sigmas", line_bow_sigmas,
 		"point_to_line phase: a local line whose points bow away from it by more than this many standard errors of the quadratic term keeps the bow (a local parabola): on curved walls a chord biases the heading (0 = off: straight lines only, as until 2026-12-03)");
+	write(c, s, "line_bow_per_segment", line_bow_per_segment,
+		"point_to_line phase, with line_bow_sigmas: a segment whose lines, one window apart, bow one way (their median t beyond line_bow_sigmas) keeps every line's bow: a round wall's chords bias the motion together (a switch, off: it broke the rotunda's whole matcher-chain runs)");
 	write(c, s, "circle_fit_sigmas", circle_fit_sigmas,
 		"point_to_line phase: a segment shorter than face_segment_extent that a circle fits better than a line by more than this many sigmas (and within its noise) is a small round thing: its points pair with the circle (a trunk's few points give lines of unknown direction; 0 = off: lines only, as until 2026-12-04)");
 	write(c, s, "guess_gate_chi2", guess_gate_chi2,

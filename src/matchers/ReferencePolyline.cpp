@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace featloc
@@ -32,7 +33,7 @@ ReferencePolyline::Query::Query(double qx, double qy)
 
 void ReferencePolyline::build(const ScanPoints& s, const std::vector<ScanSegment>& segments,
 	unsigned int lineHalfWindow, double targetDirectionSigma, double bowSigmas,
-	double circleSigmas, double roundExtent)
+	double circleSigmas, double roundExtent, bool bowPerSegment)
 {
 	m_points.clear();
 	m_joined.clear();
@@ -157,6 +158,8 @@ void ReferencePolyline::build(const ScanPoints& s, const std::vector<ScanSegment
 			L.hi = hi;
 			if (bowSigmas > 0 && hi - lo + 1 >= kLeastBowPoints) fitBow(L, noise, bowSigmas);
 		}
+	if (bowSigmas > 0 && bowPerSegment)
+		for (const auto& seg : m_segments) keepSegmentsBow(seg, std::max(1e-3, m_rangeNoise), bowSigmas);
 	m_round.clear();
 	m_roundOf.assign(m_points.size(), -1);
 	if (circleSigmas > 0)
@@ -165,6 +168,16 @@ void ReferencePolyline::build(const ScanPoints& s, const std::vector<ScanSegment
 }
 
 void ReferencePolyline::fitBow(LocalLine& L, double rangeNoise, double bowSigmas) const
+{
+	double bow = 0, tilt = 0, meanAlong2 = 0, t = 0;
+	if (!bowOf(L, rangeNoise, bow, tilt, meanAlong2, t) || std::abs(t) <= bowSigmas) return;
+	L.bow = bow;
+	L.tilt = tilt;
+	L.meanAlong2 = meanAlong2;
+}
+
+bool ReferencePolyline::bowOf(const LocalLine& L, double rangeNoise, double& bow, double& tilt,
+	double& meanAlong2, double& t) const
 {
 	// Least squares of the offsets h across the line on s and on q = s^2 -
 	// mean s^2 (h and s have zero mean about the centroid): h = c s + b q.
@@ -200,12 +213,48 @@ void ReferencePolyline::fitBow(LocalLine& L, double rangeNoise, double bowSigmas
 		hq += h * q;
 	}
 	const double det = ss * qq - sq * sq;
-	if (!(det > 1e-12 * ss * qq)) return;
-	const double b = (ss * hq - sq * hs) / det;
-	if (b * b * det <= bowSigmas * bowSigmas * noise2 * ss) return;
-	L.bow = b;
-	L.tilt = (qq * hs - sq * hq) / det;
-	L.meanAlong2 = mean;
+	if (!(det > 1e-12 * ss * qq)) return false;
+	bow = (ss * hq - sq * hs) / det;
+	tilt = (qq * hs - sq * hq) / det;
+	meanAlong2 = mean;
+	// A line's normal may point either way: the sign is taken with it
+	// turned away from the sensor.
+	const double away = L.nx * L.cx + L.ny * L.cy >= 0 ? 1.0 : -1.0;
+	t = noise2 * ss > 0 ? away * bow * std::sqrt(det / (noise2 * ss))
+						: (bow == 0 ? 0.0 : std::copysign(std::numeric_limits<double>::infinity(), away * bow));
+	return true;
+}
+
+void ReferencePolyline::keepSegmentsBow(const ScanSegment& seg, double rangeNoise, double bowSigmas)
+{
+	// The lines one window apart (their points disjoint, so their bows'
+	// errors are independent); the median of their t, robust to a corner's
+	// few lines, has a standard error of 1.2533 / sqrt(count).
+	thread_local std::vector<double> ts;
+	ts.clear();
+	bool any = false;
+	uint32_t after = 0;
+	for (uint32_t a = seg.first; a < seg.last; a++)
+	{
+		const LocalLine& L = m_lines[a];
+		if (L.hi - L.lo + 1 < kLeastBowPoints || (any && L.lo <= after)) continue;
+		double bow = 0, tilt = 0, meanAlong2 = 0, t = 0;
+		if (!bowOf(L, rangeNoise, bow, tilt, meanAlong2, t)) continue;
+		ts.push_back(t);
+		after = L.hi;
+		any = true;
+	}
+	if (ts.size() < 3) return;
+	std::nth_element(ts.begin(), ts.begin() + static_cast<std::ptrdiff_t>(ts.size() / 2), ts.end());
+	const double median = ts[ts.size() / 2];
+	if (std::abs(median) * std::sqrt(static_cast<double>(ts.size())) / 1.2533 <= bowSigmas) return;
+	for (uint32_t a = seg.first; a < seg.last; a++)
+	{
+		LocalLine& L = m_lines[a];
+		if (L.hi - L.lo + 1 < kLeastBowPoints || L.bow != 0) continue;
+		double t = 0;
+		bowOf(L, rangeNoise, L.bow, L.tilt, L.meanAlong2, t);
+	}
 }
 
 double ReferencePolyline::directionSigma(uint32_t i) const

@@ -76,6 +76,7 @@ class IdcMatcher : public ScanMatcher
 	unsigned int m_builtLineHalfWindow = 0;
 	double m_builtLineTarget = -1;
 	double m_builtBowSigmas = -1;
+	bool m_builtBowPerSegment = false;
 	double m_builtCircleSigmas = -1, m_builtRoundExtent = -1;
 };
 }  // namespace featloc

@@ -149,6 +149,15 @@ class IterativeDualCorrespondence
 		 * bowSigmas): on a curved wall a chord biases the heading; 0 = off
 		 * (straight lines only, as until 2026-12-03). */
 		double line_bow_sigmas = 3.0;
+		/** point_to_line, with line_bow_sigmas: a segment whose lines, one
+		 * window apart, bow one way (their median t beyond
+		 * line_bow_sigmas) keeps every line's bow (ReferencePolyline::build's
+		 * bowPerSegment): on a round wall each bow alone stays under the
+		 * threshold, yet their chords bias the motion together. Off by
+		 * default: it helps the rotunda's and the ring's pairs, but the
+		 * rotunda's whole matcher-chain runs went from 68 to 1052 mm ATE
+		 * (doc/benchmarks.md, "Issue 15, thirty-third session"). */
+		bool line_bow_per_segment = false;
 		/** point_to_line: a segment shorter than face_segment_extent whose
 		 * points a circle fits better than a line by more than this many
 		 * sigmas of their noise (and within it) is a small round thing (a

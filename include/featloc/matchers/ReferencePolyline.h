@@ -83,7 +83,14 @@ class ReferencePolyline
 	 * line is a chord, offset from the arc by a sagitta that depends on
 	 * where along it a point lies; points paired with chords biased the
 	 * heading, with residuals too small to show it (doc/benchmarks.md,
-	 * "Issue 15, thirtieth session").
+	 * "Issue 15, thirtieth session"). With bowPerSegment, a segment whose
+	 * lines, taken one window apart, bow one way (the median of their bows'
+	 * signed t statistics, times sqrt(count) / 1.2533, the median's
+	 * efficiency, beyond bowSigmas) keeps every line's bow: on a round wall
+	 * each line's bow alone stays under bowSigmas, yet all bow the same way
+	 * and their chords biased the motion together; on a straight wall the
+	 * signs are random (doc/benchmarks.md, "Issue 15, thirty-third
+	 * session").
 	 *
 	 * With circleSigmas > 0 a segment shorter than roundExtent (first to
 	 * last point) of kLeastCirclePoints or more is a small round thing
@@ -100,7 +107,7 @@ class ReferencePolyline
 	 * twenty-ninth session", the orchard). */
 	void build(const ScanPoints& points, const std::vector<ScanSegment>& segments,
 		unsigned int lineHalfWindow = 6, double targetDirectionSigma = 0, double bowSigmas = 0,
-		double circleSigmas = 0, double roundExtent = 1.0);
+		double circleSigmas = 0, double roundExtent = 1.0, bool bowPerSegment = false);
 	static constexpr unsigned int kLongestLineFactor = 8;
 	/** The bow of fewer points is not fitted (a quadratic term of four
 	 * points is mostly their noise). */
@@ -171,6 +178,14 @@ class ReferencePolyline
 	/** LocalLine::tilt and bow of L where its points bow (build's
 	 * bowSigmas), against their noise across it from rangeNoise. */
 	void fitBow(LocalLine& L, double rangeNoise, double bowSigmas) const;
+	/** The least-squares bow of L's points and its t statistic, signed so
+	 * that every line of a wall bowing one way has the same sign (its
+	 * normal turned away from the sensor); false where it cannot be fitted. */
+	bool bowOf(const LocalLine& L, double rangeNoise, double& bow, double& tilt, double& meanAlong2,
+		double& t) const;
+	/** bowPerSegment: every line of `seg` keeps its bow where its lines,
+	 * one window apart, bow one way beyond bowSigmas. */
+	void keepSegmentsBow(const ScanSegment& seg, double rangeNoise, double bowSigmas);
 	/** The RoundThing of segment `seg` when it is one (build's
 	 * circleSigmas), kept in m_round and named by its edges in m_roundOf. */
 	void fitRound(const ScanSegment& seg, double rangeNoise, double circleSigmas, double roundExtent);
