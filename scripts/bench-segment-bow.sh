@@ -24,7 +24,7 @@
 #  - Whole runs (featloc-run as config.ini has it) in the rotunda, the
 #    ring corridor, the corridor with people (seed 1) and the bundled log,
 #    each featloc matcher as the matcher chain and in the EKF.
-# Usage: scripts/bench-segment-bow.sh [OUTDIR]   (about 25 min on 2 cores)
+# Usage: scripts/bench-segment-bow.sh [OUTDIR]   (about 17 min on 2 cores, as measured)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
 bench_init bench-segment-bow "$@"
